@@ -1,0 +1,23 @@
+#include "engine/core/error.h"
+
+#include <atomic>
+#include <cstdio>
+
+namespace iblkit {
+
+namespace {
+void printWarning(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
+std::atomic<WarningSink> gSink{printWarning};
+}  // namespace
+
+void fail(const std::filesystem::path& file, const std::string& problem) {
+  throw Error(file.string() + ": " + problem);
+}
+
+void setWarningSink(WarningSink sink) { gSink.store(sink ? sink : printWarning); }
+
+void warn(const std::filesystem::path& file, const std::string& what) {
+  gSink.load()(file.string() + ": warning: " + what);
+}
+
+}  // namespace iblkit

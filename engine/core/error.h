@@ -1,0 +1,26 @@
+#pragma once
+// Errors for bad input: every loader throws iblkit::Error with a one-line message that names the
+// file and the problem ("scene.glb: accessor 3 reads past the end of buffer 0"). Programs catch
+// it in main, print it on one line and exit non-zero.
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace iblkit {
+
+class Error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws Error("<file>: <problem>").
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& problem);
+
+// Non-fatal repairs (NaN pixels set to 0, normals generated) are reported through this hook, one
+// line each, "<file>: warning: <what was repaired>". The default prints to stderr; tests capture.
+using WarningSink = void (*)(const std::string& line);
+void setWarningSink(WarningSink sink);
+void warn(const std::filesystem::path& file, const std::string& what);
+
+}  // namespace iblkit

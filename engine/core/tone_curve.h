@@ -1,0 +1,28 @@
+#pragma once
+// The one tone curve every program uses: the reference's PNG preview, the engine's display
+// output and the scorer's LDR images all go through these functions (the GLSL twin in
+// shaders/ is tested against them).
+//   display = sRGB_OETF( curve( radiance * 2^exposure ) )
+
+#include <glm/glm.hpp>
+
+namespace iblkit {
+
+enum class ToneCurve {
+  Clamp,       // identity, clamped to [0,1]
+  AcesFitted,  // Narkowicz 2015, "ACES Filmic Tone Mapping Curve" (the common ALU fit)
+  Reinhard,    // x / (1 + x), per channel
+};
+
+struct ToneMapping {
+  float exposure = 0.0f;  // stops
+  ToneCurve curve = ToneCurve::AcesFitted;
+};
+
+float applyToneCurve(float x, ToneCurve curve);
+float srgbEncode(float linear);  // IEC 61966-2-1 OETF, input clamped to [0,1]
+float srgbDecode(float encoded);
+// Linear radiance -> display-referred sRGB in [0,1].
+glm::vec3 toneMap(const glm::vec3& radiance, const ToneMapping& toneMapping);
+
+}  // namespace iblkit

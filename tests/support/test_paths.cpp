@@ -1,0 +1,46 @@
+#include "support/test_paths.h"
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+namespace iblkit::test {
+
+namespace {
+std::filesystem::path fromEnv(const char* name, const char* fallback) {
+  const char* value = std::getenv(name);
+  return value ? std::filesystem::path(value) : std::filesystem::path(fallback);
+}
+}  // namespace
+
+std::filesystem::path dataDir() { return fromEnv("IBLKIT_TEST_DATA", "tests/data"); }
+std::filesystem::path assetsDir() { return fromEnv("IBLKIT_ASSETS", "assets"); }
+std::filesystem::path binDir() { return fromEnv("IBLKIT_BIN", "build/bin"); }
+
+std::filesystem::path scratchDir() {
+  const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = "iblkit-test";
+  if (info) name += std::string("-") + info->test_suite_name() + "-" + info->name();
+  for (char& c : name)
+    if (c == '/') c = '_';
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+int runCommand(const std::string& command, std::string* output) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buffer{};
+  std::string text;
+  while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) text += buffer.data();
+  const int status = pclose(pipe);
+  if (output) *output = text;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace iblkit::test

@@ -1,0 +1,19 @@
+#pragma once
+// Where tests find committed data (tests/data), the fetched assets and the built programs; CTest
+// sets the variables, and a test run by hand falls back to paths relative to the source tree.
+
+#include <filesystem>
+#include <string>
+
+namespace iblkit::test {
+
+std::filesystem::path dataDir();    // tests/data
+std::filesystem::path assetsDir();  // assets (hdri/, models/, scenes/)
+std::filesystem::path binDir();     // build/bin
+// A fresh, empty folder under the system temp dir, unique to the running test.
+std::filesystem::path scratchDir();
+
+// Runs a shell command, returns its exit status, captures stdout+stderr into *output.
+int runCommand(const std::string& command, std::string* output);
+
+}  // namespace iblkit::test
