@@ -4,7 +4,12 @@
 // Loaders check what they read: NaN, Inf and negative pixels are repaired (set to 0) with a
 // warning naming the file and the count; anything unreadable throws Error("<file>: <problem>").
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/core/image.h"
@@ -19,25 +24,31 @@ enum class PixelType { Half, Float };
 
 struct ExrWriteOptions {
   PixelType pixelType = PixelType::Half;
-  bool writeAlpha = false;           // RGBA instead of RGB
+  bool writeAlpha = false;  // RGBA instead of RGB
   EnvmapLayout envmap = EnvmapLayout::None;
-  // Extra string attributes written to the header (e.g. "iblkit:roughnessPerLevel").
-  std::vector<std::pair<std::string, std::string>> stringAttributes;
+  // Extra string attributes written to the header (e.g. "iblkit:roughnessPerLevel"). The `{}`
+  // lets callers write designated initializers ({.envmap = ...}) without -Wmissing-field-initializers.
+  std::vector<std::pair<std::string, std::string>> stringAttributes{};
 };
 
 struct ExrInfo {
-  int width = 0, height = 0;
+  int width = 0, height = 0;  // of level 0's data window
   EnvmapLayout envmap = EnvmapLayout::None;
   int levels = 1;  // mip levels in the file (1 for scanline or single-level tiled files)
+  // Every string attribute, sorted by name, except the multi-part structure's "name" and "type".
   std::vector<std::pair<std::string, std::string>> stringAttributes;
 };
 
 // Reads level 0 (or `level`) of an OpenEXR file. Missing channels: Y becomes grey, missing A is 1.
+// The image is the data window, wherever its origin (the pixels the file stores; ImfEnvmap.h also
+// maps directions onto the data window). Deep, ripmapped and luminance/chroma files are refused.
 Image readExr(const std::filesystem::path& file, ExrInfo* info = nullptr, int level = 0);
 // Reads every mip level of a tiled, mip-mapped OpenEXR (a scanline file gives one level).
 std::vector<Image> readExrLevels(const std::filesystem::path& file, ExrInfo* info = nullptr);
 // Writes one image (scanline, ZIP), or a mip chain (tiled, MIPMAP_LEVELS, ROUND_DOWN) when
 // levels.size() > 1. Writes to a temporary name and renames, so no partial file is left.
+// Refuses NaN/Inf pixels, chains whose sizes are not floor(size / 2^level), and cube maps not
+// W x 6W; values beyond the largest half (65504) are clamped with a warning when writing half.
 void writeExr(const std::filesystem::path& file, const Image& image, const ExrWriteOptions& options = {});
 void writeExrLevels(const std::filesystem::path& file, const std::vector<Image>& levels,
                     const ExrWriteOptions& options = {});
@@ -54,5 +65,22 @@ Image readPng(const std::filesystem::path& file);
 
 // Reads .exr, .hdr/.pic or .png by extension (case-insensitive).
 Image readImage(const std::filesystem::path& file);
+
+// Shared by the loaders above.
+
+// How many pixel components (R, G, B or A) repairPixels set to 0. -Inf counts as Inf, not negative.
+struct PixelRepairCounts {
+  std::size_t nan = 0, inf = 0, negative = 0;
+};
+// Sets every NaN, infinite or negative component to 0 and, if any was found, warns once for
+// `file` with the counts: "<file>: warning: 3 NaN, 1 Inf and 2 negative pixel values set to 0".
+// All mip levels of a file are passed together, so a file gets at most one warning.
+PixelRepairCounts repairPixels(const std::filesystem::path& file, std::span<Image> images);
+
+// The largest image a loader accepts: 2^28 pixels (16384 x 16384, 4 GiB as RGBA float). A header
+// claiming more is far more likely corrupt than real, and must not make us allocate it.
+inline constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 28;
+// Throws Error unless width and height are at least 1 and width * height <= kMaxImagePixels.
+void checkImageSize(const std::filesystem::path& file, std::int64_t width, std::int64_t height);
 
 }  // namespace iblkit

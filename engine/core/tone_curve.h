@@ -19,10 +19,13 @@ struct ToneMapping {
   ToneCurve curve = ToneCurve::AcesFitted;
 };
 
+// Maps one linear channel value (already exposed) to linear display light in [0,1]. Negative
+// values and NaN give 0, +Inf gives 1, so the result is always finite.
 float applyToneCurve(float x, ToneCurve curve);
-float srgbEncode(float linear);  // IEC 61966-2-1 OETF, input clamped to [0,1]
-float srgbDecode(float encoded);
-// Linear radiance -> display-referred sRGB in [0,1].
+float srgbEncode(float linear);   // IEC 61966-2-1 OETF, input clamped to [0,1]
+float srgbDecode(float encoded);  // its inverse (the EOTF), input clamped to [0,1]
+// Linear radiance -> display-referred sRGB in [0,1]: per channel, multiply by 2^exposure, apply
+// the curve, sRGB-encode.
 glm::vec3 toneMap(const glm::vec3& radiance, const ToneMapping& toneMapping);
 
 }  // namespace iblkit

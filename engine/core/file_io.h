@@ -1,0 +1,21 @@
+#pragma once
+// Whole-file input and output with the project's error conventions: a file that cannot be read
+// throws Error("<file>: cannot open: <system reason>"), and writers never leave a partial file
+// under the final name (they write "<file>.tmp" and rename it, which POSIX makes atomic).
+
+#include <filesystem>
+#include <functional>
+#include <vector>
+
+namespace iblkit {
+
+// Every byte of `file`. Throws Error for a file that cannot be opened or read, and for an empty
+// (0-byte) file, which no format we read accepts.
+std::vector<char> readFileBytes(const std::filesystem::path& file);
+
+// Calls write(temporary) with temporary = "<file>.tmp", then renames it to `file`. If `write`
+// throws, the temporary is removed and the exception propagates; `file` is left untouched.
+void writeAtomically(const std::filesystem::path& file,
+                     const std::function<void(const std::filesystem::path& temporary)>& write);
+
+}  // namespace iblkit

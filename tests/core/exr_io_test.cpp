@@ -1,0 +1,219 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "engine/core/image_io.h"
+#include "support/error_capture.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+// A w x h image whose every component differs: value = 1000 * level + 100 * c + 10 * y + x, scaled.
+Image numberedImage(int width, int height, float scale = 1.0f, int level = 0) {
+  Image image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 4; ++c) image.at(x, y)[c] = scale * float(1000 * level + 100 * c + 10 * y + x);
+  return image;
+}
+
+TEST(Exr, FloatRgbaRoundTripIsExact) {
+  const std::filesystem::path file = test::scratchDir() / "float.exr";
+  Image image = numberedImage(5, 3, 0.37f);
+  image.at(4, 2) = glm::vec4(1e9f, 1e-9f, 0.0f, 0.5f);  // beyond half's range and precision
+  writeExr(file, image, {.pixelType = PixelType::Float, .writeAlpha = true});
+  const Image read = readExr(file);
+  ASSERT_EQ(read.width(), 5);
+  ASSERT_EQ(read.height(), 3);
+  EXPECT_EQ(read.pixels(), image.pixels());
+  EXPECT_FALSE(std::filesystem::exists(file.string() + ".tmp"));
+}
+
+TEST(Exr, HalfRgbRoundTripKeepsHalfPrecisionAndReadsAlphaAsOne) {
+  const std::filesystem::path file = test::scratchDir() / "half.exr";
+  const Image image = numberedImage(7, 4, 0.013f);
+  writeExr(file, image);  // defaults: half, RGB
+  const Image read = readExr(file);
+  ASSERT_EQ(read.width(), 7);
+  ASSERT_EQ(read.height(), 4);
+  for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+    for (int c = 0; c < 3; ++c)  // half has an 11-bit significand: relative error <= 2^-11
+      EXPECT_NEAR(read.pixels()[i][c], image.pixels()[i][c], image.pixels()[i][c] * 0x1p-11f) << i;
+    EXPECT_EQ(read.pixels()[i].a, 1.0f);
+  }
+}
+
+TEST(Exr, HalfClampsToTheLargestHalfInsteadOfInf) {
+  const std::filesystem::path file = test::scratchDir() / "bright.exr";
+  Image image(2, 1, glm::vec4(1.0f));
+  image.at(0, 0) = glm::vec4(1e6f, -1e6f, 65504.0f, 1.0f);
+  test::WarningCapture capture;
+  writeExr(file, image);
+  ASSERT_EQ(capture.warnings().size(), 1u);
+  EXPECT_EQ(capture.warnings()[0],
+            file.string() + ": warning: 2 pixel values beyond the largest half (65504) clamped");
+  const glm::vec4 read = readExr(file).at(0, 0);
+  EXPECT_EQ(read.r, 65504.0f);
+  EXPECT_EQ(read.g, 0.0f);  // -65504 in the file, then repaired as negative
+  EXPECT_EQ(read.b, 65504.0f);
+}
+
+TEST(Exr, EnvmapAndStringAttributesRoundTrip) {
+  const std::filesystem::path dir = test::scratchDir();
+  const ExrWriteOptions latLong{
+      .envmap = EnvmapLayout::LatLong,
+      .stringAttributes = {{"iblkit:roughnessPerLevel", "0 0.25 0.5"}, {"owner", "me"}}};
+  writeExr(dir / "latlong.exr", numberedImage(8, 4), latLong);
+  ExrInfo info;
+  readExr(dir / "latlong.exr", &info);
+  EXPECT_EQ(info.width, 8);
+  EXPECT_EQ(info.height, 4);
+  EXPECT_EQ(info.levels, 1);
+  EXPECT_EQ(info.envmap, EnvmapLayout::LatLong);
+  EXPECT_EQ(info.stringAttributes, latLong.stringAttributes);  // sorted by name, as written here
+
+  writeExr(dir / "cube.exr", numberedImage(2, 12), {.envmap = EnvmapLayout::Cube});
+  readExr(dir / "cube.exr", &info);
+  EXPECT_EQ(info.envmap, EnvmapLayout::Cube);
+  EXPECT_TRUE(info.stringAttributes.empty());
+
+  writeExr(dir / "plain.exr", numberedImage(2, 2));
+  readExr(dir / "plain.exr", &info);
+  EXPECT_EQ(info.envmap, EnvmapLayout::None);
+}
+
+TEST(Exr, MipChainRoundTripsAsTiledRoundDownLevels) {
+  const std::filesystem::path file = test::scratchDir() / "mips.exr";
+  const std::vector<Image> levels = {numberedImage(8, 4, 0.5f, 0), numberedImage(4, 2, 0.5f, 1),
+                                     numberedImage(2, 1, 0.5f, 2), numberedImage(1, 1, 0.5f, 3)};
+  writeExrLevels(file, levels, {.pixelType = PixelType::Float, .writeAlpha = true});
+  ExrInfo info;
+  const std::vector<Image> read = readExrLevels(file, &info);
+  EXPECT_EQ(info.levels, 4);
+  EXPECT_EQ(info.width, 8);
+  EXPECT_EQ(info.height, 4);
+  ASSERT_EQ(read.size(), 4u);
+  for (std::size_t l = 0; l < read.size(); ++l)
+    EXPECT_EQ(read[l].pixels(), levels[l].pixels()) << "level " << l;
+
+  const Image level2 = readExr(file, nullptr, 2);
+  EXPECT_EQ(level2.width(), 2);
+  EXPECT_EQ(level2.height(), 1);
+  EXPECT_EQ(level2.pixels(), levels[2].pixels());
+  EXPECT_EQ(test::errorMessage([&] { readExr(file, nullptr, 4); }),
+            file.string() + ": has no level 4 (levels 0 to 3)");
+}
+
+TEST(Exr, OddSizedMipChainRoundsDown) {
+  const std::filesystem::path file = test::scratchDir() / "odd.exr";
+  const std::vector<Image> levels = {numberedImage(5, 3), numberedImage(2, 1), numberedImage(1, 1)};
+  writeExrLevels(file, levels);
+  const std::vector<Image> read = readExrLevels(file);
+  ASSERT_EQ(read.size(), 3u);
+  EXPECT_EQ(read[1].width(), 2);
+  EXPECT_EQ(read[1].height(), 1);
+}
+
+TEST(Exr, SingleImageIsOneLevel) {
+  const std::filesystem::path file = test::scratchDir() / "single.exr";
+  writeExrLevels(file, {numberedImage(4, 4)});
+  ExrInfo info;
+  EXPECT_EQ(readExrLevels(file, &info).size(), 1u);
+  EXPECT_EQ(info.levels, 1);
+  EXPECT_EQ(test::errorMessage([&] { readExr(file, nullptr, 1); }),
+            file.string() + ": has no level 1 (levels 0 to 0)");
+}
+
+TEST(Exr, WriterRejectsWhatItCannotWriteFaithfully) {
+  const std::filesystem::path file = test::scratchDir() / "bad.exr";
+  EXPECT_EQ(test::errorMessage([&] { writeExr(file, Image()); }),
+            file.string() + ": cannot write an empty image");
+  EXPECT_EQ(test::errorMessage([&] {
+              writeExrLevels(file, {numberedImage(8, 4), numberedImage(4, 2)});
+            }),
+            file.string() + ": a 8 x 4 mip chain needs 4 levels, got 2");
+  EXPECT_EQ(test::errorMessage([&] {
+              writeExrLevels(file, {numberedImage(5, 3), numberedImage(3, 2), numberedImage(1, 1)});
+            }),
+            file.string() + ": mip level 1 is 3 x 2, expected 2 x 1 (ROUND_DOWN)");
+  EXPECT_EQ(test::errorMessage([&] { writeExr(file, numberedImage(4, 4), {.envmap = EnvmapLayout::Cube}); }),
+            file.string() + ": a cube envmap is six square faces stacked vertically (W x 6W), got 4 x 4");
+  Image withNaN = numberedImage(3, 2);
+  withNaN.at(2, 1).g = std::nanf("");
+  EXPECT_EQ(test::errorMessage([&] { writeExr(file, withNaN); }),
+            file.string() + ": cannot write NaN or Inf (level 0, pixel 2, 1)");
+  EXPECT_FALSE(std::filesystem::exists(file));
+  EXPECT_FALSE(std::filesystem::exists(file.string() + ".tmp"));
+}
+
+TEST(Exr, OpenExrErrorsBecomeOneLineErrors) {
+  const std::filesystem::path file = test::scratchDir() / "attribute.exr";
+  // "compression" is a standard attribute of another type: OpenEXR refuses, we report it.
+  EXPECT_EQ(test::errorMessage([&] {
+              writeExr(file, numberedImage(2, 2), {.stringAttributes = {{"compression", "x"}}});
+            }),
+            file.string() +
+                ": Cannot assign a value of type \"string\" to image attribute \"compression\" of type "
+                "\"compression\".");
+  const std::filesystem::path missingDir = test::scratchDir() / "no" / "such" / "dir.exr";
+  EXPECT_EQ(test::errorMessage([&] { writeExr(missingDir, numberedImage(2, 2)); }),
+            missingDir.string() + ": Cannot open image file \"" + missingDir.string() +
+                ".tmp\". No such file or directory.");
+}
+
+// Layouts our writer never makes are committed files in tests/data/exr, written once with
+// OpenEXR's general interface as uncompressed float channels; their pixel values are listed here.
+
+// luminance_only.exr: 3 x 2, one Y channel: 0.5, 1, 2 / 4, 8, 16.
+TEST(Exr, LuminanceOnlyFileReadsAsGrey) {
+  const Image read = readExr(test::dataDir() / "exr" / "luminance_only.exr");
+  ASSERT_EQ(read.width(), 3);
+  ASSERT_EQ(read.height(), 2);
+  const float y[] = {0.5f, 1.0f, 2.0f, 4.0f, 8.0f, 16.0f};
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(read.pixels()[i], glm::vec4(glm::vec3(y[i]), 1.0f)) << i;
+}
+
+// data_window_10_20.exr: display window (0, 0)-(31, 31), data window (10, 20)-(13, 21), RGB;
+// component i of the 4 x 2 x 3 interleaved data has the value i.
+TEST(Exr, DataWindowAwayFromTheOriginIsTheImage) {
+  ExrInfo info;
+  const Image read = readExr(test::dataDir() / "exr" / "data_window_10_20.exr", &info);
+  EXPECT_EQ(info.width, 4);
+  EXPECT_EQ(info.height, 2);
+  ASSERT_EQ(read.width(), 4);
+  ASSERT_EQ(read.height(), 2);
+  EXPECT_EQ(read.at(0, 0), glm::vec4(0, 1, 2, 1));
+  EXPECT_EQ(read.at(1, 0), glm::vec4(3, 4, 5, 1));
+  EXPECT_EQ(read.at(3, 1), glm::vec4(21, 22, 23, 1));  // pixel (13, 21) of the file
+}
+
+// depth_only.exr: 2 x 1, one Z channel.
+TEST(Exr, FileWithoutColourChannelsIsAnError) {
+  const std::filesystem::path file = test::dataDir() / "exr" / "depth_only.exr";
+  EXPECT_EQ(test::errorMessage([&] { readExr(file); }), file.string() + ": no R, G, B or Y channel");
+}
+
+// The fetched maps are DWAB-compressed half RGB lat-long maps, 512 x 256.
+TEST(Exr, EveryFetchedMapLoads) {
+  const std::filesystem::path hdri = test::assetsDir() / "hdri";
+  if (!std::filesystem::is_directory(hdri)) GTEST_SKIP() << "assets not fetched: " << hdri;
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(hdri)) {
+    if (entry.path().extension() != ".exr") continue;
+    ++count;
+    const Image map = readExr(entry.path());
+    EXPECT_EQ(map.width(), 512) << entry.path();
+    EXPECT_EQ(map.height(), 256) << entry.path();
+    const Image::Stats stats = map.stats();
+    EXPECT_TRUE(std::isfinite(stats.maxLuminance)) << entry.path();
+    EXPECT_GT(stats.maxLuminance, 0.0f) << entry.path();
+    EXPECT_GE(std::min({stats.min.x, stats.min.y, stats.min.z}), 0.0f) << entry.path();
+  }
+  EXPECT_EQ(count, 18);
+}
+
+}  // namespace
+}  // namespace iblkit
