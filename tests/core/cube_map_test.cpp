@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/error_capture.h"
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -38,15 +40,6 @@ CubeMap directionCube(int size) {
         cube.faces[face].at(x, y) = glm::vec4(cubeDirection(face, texelCentre(x, y, size)), 1.0f);
   }
   return cube;
-}
-
-std::string errorMessage(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "no Error thrown";
 }
 
 TEST(CubeMap, FaceAndCoordinatesFollowOpenGlTable) {
@@ -284,9 +277,9 @@ TEST(CubeMap, ExrStripRoundTripAndErrors) {
   const CubeMap back = cubeFromExrStrip(cubeToExrStrip(cube), "probe.exr");
   ASSERT_EQ(back.size, 6);
   for (int face = 0; face < 6; ++face) EXPECT_EQ(back.faces[face].pixels(), cube.faces[face].pixels());
-  EXPECT_EQ(errorMessage([] { cubeFromExrStrip(Image(4, 20), "probe.exr"); }),
+  EXPECT_EQ(test::errorMessage([] { cubeFromExrStrip(Image(4, 20), "probe.exr"); }),
             "probe.exr: cube map strip is 4x20, expected W x 6W");
-  EXPECT_EQ(errorMessage([] { cubeFromExrStrip(Image(), "empty.exr"); }),
+  EXPECT_EQ(test::errorMessage([] { cubeFromExrStrip(Image(), "empty.exr"); }),
             "empty.exr: cube map strip is 0x0, expected W x 6W");
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/error_capture.h"
+
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -22,15 +24,6 @@ void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolera
   EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
-std::string errorMessage(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "no Error thrown";
-}
-
 // A smooth, non-symmetric radiance pattern, as a 128 x 64 lat-long image and as a map.
 Image patternImage() {
   return latLongFromRadiance(128, 64, 1, [](const glm::vec3& d) {
@@ -40,18 +33,18 @@ Image patternImage() {
 EnvironmentMap patternMap() { return EnvironmentMap::fromImage(patternImage(), "pattern.exr"); }
 
 TEST(EnvironmentMap, FromImageChecksTheImage) {
-  EXPECT_EQ(errorMessage([] { EnvironmentMap::fromImage(Image(3, 2), "sky.exr"); }),
+  EXPECT_EQ(test::errorMessage([] { EnvironmentMap::fromImage(Image(3, 2), "sky.exr"); }),
             "sky.exr: lat-long map is 3x2, expected a 2:1 aspect ratio");
-  EXPECT_EQ(errorMessage([] { EnvironmentMap::fromImage(Image(4, 4), "sky.exr"); }),
+  EXPECT_EQ(test::errorMessage([] { EnvironmentMap::fromImage(Image(4, 4), "sky.exr"); }),
             "sky.exr: lat-long map is 4x4, expected a 2:1 aspect ratio");
-  EXPECT_EQ(errorMessage([] { EnvironmentMap::fromImage(Image(), "empty.exr"); }),
+  EXPECT_EQ(test::errorMessage([] { EnvironmentMap::fromImage(Image(), "empty.exr"); }),
             "empty.exr: lat-long map is 0x0, expected at least 2x1");
   Image bad(8, 4, glm::vec4(1.0f));
   bad.at(1, 1).g = NAN;
   bad.at(2, 3).b = -0.5f;
   bad.at(3, 0).r = INFINITY;
   bad.at(4, 0).a = NAN;  // alpha is not radiance
-  EXPECT_EQ(errorMessage([&] { EnvironmentMap::fromImage(bad, "bad.hdr"); }),
+  EXPECT_EQ(test::errorMessage([&] { EnvironmentMap::fromImage(bad, "bad.hdr"); }),
             "bad.hdr: lat-long map has 3 pixels that are NaN, infinite or negative");
   const EnvironmentMap smallest = EnvironmentMap::fromImage(Image(2, 1, glm::vec4(0.5f)), "tiny.exr");
   EXPECT_EQ(smallest.width(), 2);

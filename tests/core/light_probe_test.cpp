@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/error_capture.h"
+
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -20,15 +22,6 @@ void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolera
   EXPECT_NEAR(actual.x, expected.x, tolerance);
   EXPECT_NEAR(actual.y, expected.y, tolerance);
   EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
-
-std::string errorMessage(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "no Error thrown";
 }
 
 std::vector<glm::vec3> randomDirections(int count) {
@@ -172,9 +165,9 @@ TEST(LightProbe, AngularMapToLatLong) {
 }
 
 TEST(LightProbe, ProbesMustBeSquare) {
-  EXPECT_EQ(errorMessage([] { latLongFromMirrorBall(Image(30, 20), 64, 1, "ball.hdr"); }),
+  EXPECT_EQ(test::errorMessage([] { latLongFromMirrorBall(Image(30, 20), 64, 1, "ball.hdr"); }),
             "ball.hdr: mirror-ball probe is 30x20, expected a square image");
-  EXPECT_EQ(errorMessage([] { latLongFromAngularMap(Image(), 64, 1, "probe.exr"); }),
+  EXPECT_EQ(test::errorMessage([] { latLongFromAngularMap(Image(), 64, 1, "probe.exr"); }),
             "probe.exr: angular map is 0x0, expected a square image");
   EXPECT_THROW(latLongFromAngularMap(Image(8, 8), 63, 1, "probe.exr"), std::invalid_argument);
 }

@@ -16,9 +16,9 @@ std::filesystem::path fromEnv(const char* name, const char* fallback) {
 }
 }  // namespace
 
-std::filesystem::path dataDir() { return fromEnv("IBLKIT_TEST_DATA", "tests/data"); }
-std::filesystem::path assetsDir() { return fromEnv("IBLKIT_ASSETS", "assets"); }
-std::filesystem::path binDir() { return fromEnv("IBLKIT_BIN", "build/bin"); }
+std::filesystem::path dataDir() { return fromEnv("IBLKIT_TEST_DATA", IBLKIT_TEST_DATA_DEFAULT); }
+std::filesystem::path assetsDir() { return fromEnv("IBLKIT_ASSETS", IBLKIT_ASSETS_DEFAULT); }
+std::filesystem::path binDir() { return fromEnv("IBLKIT_BIN", IBLKIT_BIN_DEFAULT); }
 
 std::filesystem::path scratchDir() {
   const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();

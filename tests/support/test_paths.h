@@ -1,6 +1,7 @@
 #pragma once
-// Where tests find committed data (tests/data), the fetched assets and the built programs; CTest
-// sets the variables, and a test run by hand falls back to paths relative to the source tree.
+// Where tests find committed data (tests/data), the fetched assets and the built programs: the
+// paths of the build tree that compiled the tests, or the environment variables IBLKIT_TEST_DATA,
+// IBLKIT_ASSETS and IBLKIT_BIN when set.
 
 #include <filesystem>
 #include <string>
