@@ -1,0 +1,82 @@
+#include "engine/core/low_discrepancy.h"
+
+#include <algorithm>
+
+#include "engine/core/rng.h"
+
+namespace iblkit {
+
+namespace {
+
+std::uint32_t reverseBits(std::uint32_t v) {
+  v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+  v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+  v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+  v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+  return (v >> 16) | (v << 16);
+}
+
+// A seeded bijection in which bit k of the result is bit k of x flipped by a function of bits
+// 0..k-1 only: adding the seed, multiplying by an odd number, and xor-ing x with x times an even
+// number all carry information upwards only. On bit-reversed fractions that is exactly a nested
+// uniform scramble. Constants from Vegdahl 2021.
+std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed) {
+  x ^= x * 0x3d20adeau;
+  x += seed;
+  x *= (seed >> 16) | 1u;
+  x ^= x * 0x05526c56u;
+  x ^= x * 0x53a22864u;
+  return x;
+}
+
+// The scrambling seed of one dimension: MurmurHash3's 64-bit finaliser (Appleby) of (seed,
+// dimension) together, so that consecutive seeds and the two dimensions get unrelated scrambles
+// (the permutation above passes low seed bits to the output's top digits almost unmixed).
+std::uint32_t dimensionSeed(std::uint32_t seed, std::uint32_t dimension) {
+  std::uint64_t h = (static_cast<std::uint64_t>(seed) << 32) | dimension;
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdull;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ull;
+  h ^= h >> 33;
+  return static_cast<std::uint32_t>(h >> 32);
+}
+
+// Sobol's second dimension as a 32-bit binary fraction: the xor of the direction numbers selected
+// by the bits of index, with v_1 = 0.1b and v_(k+1) = v_k xor (v_k >> 1) (Pascal's triangle mod 2).
+std::uint32_t sobolSecondDimensionBits(std::uint32_t index) {
+  std::uint32_t result = 0;
+  for (std::uint32_t v = 0x80000000u; index != 0; index >>= 1, v ^= v >> 1) {
+    if (index & 1u) result ^= v;
+  }
+  return result;
+}
+
+}  // namespace
+
+float radicalInverseBase2(std::uint32_t index) { return unitFloatFromBits(reverseBits(index)); }
+
+std::uint32_t owenScramble(std::uint32_t fractionBits, std::uint32_t seed) {
+  return reverseBits(laineKarrasPermutation(reverseBits(fractionBits), seed));
+}
+
+float owenScrambledRadicalInverseBase2(std::uint32_t index, std::uint32_t seed) {
+  return unitFloatFromBits(owenScramble(reverseBits(index), dimensionSeed(seed, 0)));
+}
+
+glm::vec2 sobol02(std::uint32_t index) {
+  return {radicalInverseBase2(index), unitFloatFromBits(sobolSecondDimensionBits(index))};
+}
+
+glm::vec2 owenScrambledSobol02(std::uint32_t index, std::uint32_t seed) {
+  return {unitFloatFromBits(owenScramble(reverseBits(index), dimensionSeed(seed, 0))),
+          unitFloatFromBits(owenScramble(sobolSecondDimensionBits(index), dimensionSeed(seed, 1)))};
+}
+
+glm::vec2 hammersley(std::uint32_t index, std::uint32_t count) {
+  // index / count in double, then rounded down below 1 (float(2^25 - 1) would round up to 2^25).
+  const double x = static_cast<double>(index) / static_cast<double>(count);
+  return {std::min(static_cast<float>(x), 0x1.fffffep-1f), radicalInverseBase2(index)};
+}
+
+}  // namespace iblkit

@@ -1,0 +1,130 @@
+#include "engine/core/low_discrepancy.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <vector>
+
+#include "support/chi2.h"
+
+namespace iblkit {
+namespace {
+
+constexpr int kChi2Tests = 2;  // chi-square runs in this file, for the Sidak correction
+
+// True when the 2^m points form a (0,m,2)-net in base 2: for every split m = j + (m - j), each
+// elementary interval of 2^-j by 2^-(m-j) holds exactly one point.
+::testing::AssertionResult isZeroMTwoNet(const std::vector<glm::vec2>& points, int m) {
+  const std::size_t count = std::size_t{1} << m;
+  if (points.size() != count) return ::testing::AssertionFailure() << "expected " << count << " points";
+  for (int j = 0; j <= m; ++j) {
+    const int columns = 1 << j, rows = 1 << (m - j);
+    std::vector<int> hits(count, 0);
+    for (const glm::vec2& p : points) {
+      if (!(p.x >= 0.0f && p.x < 1.0f && p.y >= 0.0f && p.y < 1.0f)) {
+        return ::testing::AssertionFailure() << "point (" << p.x << ", " << p.y << ") outside [0,1)^2";
+      }
+      const int cx = static_cast<int>(p.x * static_cast<float>(columns));
+      const int cy = static_cast<int>(p.y * static_cast<float>(rows));
+      if (++hits[static_cast<std::size_t>(cy * columns + cx)] > 1) {
+        return ::testing::AssertionFailure()
+               << "two points in interval (" << cx << ", " << cy << ") of " << columns << " x " << rows;
+      }
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+std::vector<glm::vec2> points(std::uint32_t first, int m,
+                              const std::function<glm::vec2(std::uint32_t)>& point) {
+  std::vector<glm::vec2> result;
+  for (std::uint32_t i = 0; i < (1u << m); ++i) result.push_back(point(first + i));
+  return result;
+}
+
+TEST(RadicalInverse, MirrorsTheBits) {
+  EXPECT_EQ(radicalInverseBase2(0), 0.0f);
+  EXPECT_EQ(radicalInverseBase2(1), 0.5f);
+  EXPECT_EQ(radicalInverseBase2(2), 0.25f);
+  EXPECT_EQ(radicalInverseBase2(3), 0.75f);
+  EXPECT_EQ(radicalInverseBase2(4), 0.125f);
+  EXPECT_EQ(radicalInverseBase2(6), 0.375f);
+  EXPECT_LT(radicalInverseBase2(0xffffffffu), 1.0f);
+}
+
+TEST(Sobol02, FirstPoints) {
+  // Second dimension: direction numbers 1/2, 3/4, 5/8, 15/16 (Pascal's triangle mod 2).
+  const glm::vec2 expected[] = {{0.0f, 0.0f},     {0.5f, 0.5f},     {0.25f, 0.75f},
+                                {0.75f, 0.25f},   {0.125f, 0.625f}, {0.625f, 0.125f},
+                                {0.375f, 0.375f}, {0.875f, 0.875f}, {0.0625f, 0.9375f}};
+  for (std::uint32_t i = 0; i < std::size(expected); ++i) EXPECT_EQ(sobol02(i), expected[i]) << "index " << i;
+}
+
+TEST(Sobol02, EveryAlignedBlockIsANet) {
+  for (int m = 1; m <= 10; ++m) {
+    for (std::uint32_t block = 0; block < 3; ++block) {
+      EXPECT_TRUE(isZeroMTwoNet(points(block << m, m, [](std::uint32_t i) { return sobol02(i); }), m))
+          << "m = " << m << ", block " << block;
+    }
+  }
+}
+
+TEST(Sobol02, OwenScramblingKeepsTheNetsAndIsSeeded) {
+  for (const std::uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
+    for (int m = 1; m <= 10; ++m) {
+      EXPECT_TRUE(isZeroMTwoNet(
+          points(std::uint32_t{5} << m, m, [=](std::uint32_t i) { return owenScrambledSobol02(i, seed); }),
+          m))
+          << "seed " << seed << ", m = " << m;
+    }
+  }
+  // Reproducible for a seed, different across seeds, and not the unscrambled points.
+  EXPECT_EQ(owenScrambledSobol02(17, 4), owenScrambledSobol02(17, 4));
+  EXPECT_NE(owenScrambledSobol02(17, 4), owenScrambledSobol02(17, 5));
+  EXPECT_NE(owenScrambledSobol02(17, 4), sobol02(17));
+}
+
+TEST(Sobol02, AScrambledPointIsUniformOverSeeds) {
+  // Owen scrambling makes every point of the set uniformly distributed over [0,1)^2, with
+  // independent coordinates: check one point over consecutive seeds (as per-pixel seeds are) and
+  // another over random seeds.
+  test::Chi2Options options;
+  options.testCount = kChi2Tests;
+  options.name = "owen_sobol_index0_consecutive_seeds";
+  std::uint32_t seed = 0;
+  const test::Chi2Result consecutive =
+      test::chi2TestSquare([&](PCG32&) { return std::optional(owenScrambledSobol02(0, seed++)); },
+                           [](const glm::vec2&) { return 1.0; }, options);
+  EXPECT_TRUE(consecutive.passed) << consecutive.message;
+  options.name = "owen_sobol_index37_random_seeds";
+  const test::Chi2Result random = test::chi2TestSquare(
+      [](PCG32& rng) { return std::optional(owenScrambledSobol02(37, rng.nextUInt32())); },
+      [](const glm::vec2&) { return 1.0; }, options);
+  EXPECT_TRUE(random.passed) << random.message;
+  EXPECT_EQ(owenScrambledRadicalInverseBase2(37, 5), owenScrambledSobol02(37, 5).x);
+}
+
+TEST(OwenScramble, FlipsEachBitByTheBitsAboveItOnly) {
+  // Fractions that share their top k bits still share them after scrambling (the nested
+  // property that keeps elementary intervals together).
+  PCG32 rng(11u);
+  for (int i = 0; i < 10000; ++i) {
+    const std::uint32_t a = rng.nextUInt32(), seed = rng.nextUInt32();
+    const int k = static_cast<int>(rng.nextUInt32() % 32u);
+    const std::uint32_t topMask = k == 0 ? 0u : ~0u << (32 - k);
+    const std::uint32_t b = (a & topMask) | (rng.nextUInt32() & ~topMask);
+    ASSERT_EQ(owenScramble(a, seed) & topMask, owenScramble(b, seed) & topMask) << "k = " << k;
+  }
+}
+
+TEST(Hammersley, IsANetForPowersOfTwo) {
+  for (int m = 1; m <= 10; ++m) {
+    const std::uint32_t count = 1u << m;
+    EXPECT_TRUE(isZeroMTwoNet(points(0, m, [=](std::uint32_t i) { return hammersley(i, count); }), m)) << m;
+  }
+  EXPECT_EQ(hammersley(3, 8), glm::vec2(0.375f, 0.75f));
+  EXPECT_LT(hammersley((1u << 25) - 1u, 1u << 25).x, 1.0f);
+}
+
+}  // namespace
+}  // namespace iblkit
