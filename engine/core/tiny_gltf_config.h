@@ -1,0 +1,14 @@
+#pragma once
+// Private: the one way iblkit includes tinygltf (Debian's libtinygltf-dev 2.7.0 header; its shared
+// library is not linked, tiny_gltf_impl.cpp compiles the implementation). Include this from .cpp
+// files only, never from a public header: the header is large and its types stay internal.
+//
+// We only need geometry, materials and cameras, so tinygltf's image codecs and external image
+// loading are compiled out. Draco is deliberately NOT enabled here (no TINYGLTF_ENABLE_DRACO):
+// tinygltf 2.7.0 decodes KHR_draco_mesh_compression without bounds checks on the indices it
+// follows and ignores decode failures, so gltf_model.cpp decodes Draco itself with full checks.
+
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>

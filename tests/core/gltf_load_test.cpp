@@ -1,0 +1,516 @@
+#include "engine/core/gltf_load.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <limits>
+
+#include "engine/core/error.h"
+#include "support/gltf_builder.h"
+#include "support/test_paths.h"
+#include "support/warning_capture.h"
+
+namespace iblkit {
+namespace {
+
+using nlohmann::json;
+using test::GltfBuilder;
+
+const std::vector<glm::vec3> kTriangle = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+
+void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
+  EXPECT_NEAR(actual.x, expected.x, tolerance);
+  EXPECT_NEAR(actual.y, expected.y, tolerance);
+  EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+// Writes the builder's document to the test's scratch folder and loads it.
+GltfContents load(const GltfBuilder& builder, GltfBuilder::Storage storage = GltfBuilder::Storage::BinFile) {
+  const std::filesystem::path path =
+      test::scratchDir() / (storage == GltfBuilder::Storage::Glb ? "model.glb" : "model.gltf");
+  builder.write(path, storage);
+  return loadGltf(path);
+}
+
+// The message loadGltf throws for the builder's document.
+std::string loadError(const GltfBuilder& builder) {
+  try {
+    load(builder);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// Warnings are captured (and checked where they matter) rather than printed.
+class GltfLoad : public ::testing::Test {
+protected:
+  test::WarningCapture warnings;
+};
+
+TEST_F(GltfLoad, SameGeometryFromBinFileDataUriAndGlb) {
+  GltfBuilder builder;
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}});
+  for (const auto storage :
+       {GltfBuilder::Storage::BinFile, GltfBuilder::Storage::DataUri, GltfBuilder::Storage::Glb}) {
+    const GltfContents contents = load(builder, storage);
+    ASSERT_EQ(contents.meshes.size(), 1u);
+    EXPECT_EQ(contents.meshes[0].positions, kTriangle);
+    EXPECT_EQ(contents.meshes[0].indices, (std::vector<std::uint32_t>{0, 1, 2}));
+    EXPECT_FALSE(contents.camera.has_value());
+  }
+}
+
+TEST_F(GltfLoad, FlattensNodeTransforms) {
+  GltfBuilder builder;
+  const std::vector<glm::vec3> normals(3, glm::vec3(0, 0, 1));
+  const int mesh = builder.addMesh(json::array(
+      {{{"attributes",
+         {{"POSITION", builder.addFloats(kTriangle)}, {"NORMAL", builder.addFloats(normals)}}}}}));
+  // Child: translate (0, 2, 0), rotate 90 degrees about +Z, scale (2, 1, 1); parent: translate (10, 0, 0).
+  const float s = std::sqrt(0.5f);
+  const int child = builder.addNode(
+      {{"mesh", mesh}, {"translation", {0, 2, 0}}, {"rotation", {0, 0, s, s}}, {"scale", {2, 1, 1}}}, false);
+  builder.addNode({{"translation", {10, 0, 0}}, {"children", {child}}});
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 1u);
+  const Mesh& m = contents.meshes[0];
+  // (x, y, z) -> scale (2x, y, z) -> rotate (-y, 2x, z) -> translate (10 - y, 2 + 2x, z).
+  expectNear(m.positions[0], glm::vec3(10, 2, 0));
+  expectNear(m.positions[1], glm::vec3(10, 4, 0));
+  expectNear(m.positions[2], glm::vec3(9, 2, 0));
+  expectNear(m.normals[0], glm::vec3(0, 0, 1));
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_EQ(m.source.node, child);
+  EXPECT_EQ(m.source.mesh, mesh);
+}
+
+TEST_F(GltfLoad, MatrixTransformAndNegativeScaleFlipWinding) {
+  GltfBuilder builder;
+  const int mesh =
+      builder.addMesh(json::array({{{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}}}));
+  // Column-major matrix mirroring x and translating by (0, 0, 5).
+  builder.addNode({{"mesh", mesh}, {"matrix", {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1}}});
+  const GltfContents contents = load(builder);
+  const Mesh& m = contents.meshes[0];
+  expectNear(m.positions[1], glm::vec3(-1, 0, 5));
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 2, 1}));
+  // Generated normals face the same way as the (flipped) front face: +Z.
+  expectNear(m.normals[0], glm::vec3(0, 0, 1));
+}
+
+TEST_F(GltfLoad, InstancedMeshYieldsOneMeshPerNode) {
+  GltfBuilder builder;
+  const int mesh =
+      builder.addMesh(json::array({{{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}}}));
+  builder.addNode({{"mesh", mesh}});
+  builder.addNode({{"mesh", mesh}, {"translation", {0, 0, 3}}});
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 2u);
+  EXPECT_EQ(contents.meshes[0].source.node, 0);
+  EXPECT_EQ(contents.meshes[1].source.node, 1);
+  EXPECT_EQ(contents.meshes[1].source.mesh, mesh);
+  EXPECT_EQ(contents.meshes[1].positions[0], glm::vec3(0, 0, 3));
+}
+
+TEST_F(GltfLoad, StripsAndFansBecomeTriangleLists) {
+  // Five vertices on a zig-zag (strip) or around a centre (fan), all counter-clockwise.
+  const std::vector<glm::vec3> strip = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0),
+                                        glm::vec3(1, 1, 0), glm::vec3(0, 2, 0)};
+  const std::vector<glm::vec3> fan = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(1, 1, 0),
+                                      glm::vec3(0, 1, 0), glm::vec3(-1, 1, 0)};
+  GltfBuilder builder;
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(strip)}}}, {"mode", 5}});
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(fan)}}}, {"mode", 6}});
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 2u);
+  // glTF 2.0 section 3.7.2.1: strip {v_i, v_i+(1+i%2), v_i+(2-i%2)}, fan {v_i+1, v_i+2, v_0}.
+  EXPECT_EQ(contents.meshes[0].indices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2, 2, 3, 4}));
+  EXPECT_EQ(contents.meshes[1].indices, (std::vector<std::uint32_t>{1, 2, 0, 2, 3, 0, 3, 4, 0}));
+  for (const Mesh& m : contents.meshes)
+    for (const glm::vec3& n : m.normals) expectNear(n, glm::vec3(0, 0, 1));
+}
+
+TEST_F(GltfLoad, ReadsAllIndexTypes) {
+  const test::CubeGeometry cube = test::unitCube();
+  for (const int type : {test::kUnsignedByte, test::kUnsignedShort, test::kUnsignedInt}) {
+    GltfBuilder builder;
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(cube.positions)}}},
+                              {"indices", builder.addIndices(cube.indices, type)}});
+    const GltfContents contents = load(builder);
+    EXPECT_EQ(contents.meshes[0].indices, cube.indices) << "component type " << type;
+  }
+}
+
+TEST_F(GltfLoad, NonIndexedPrimitiveUsesVerticesInOrder) {
+  std::vector<glm::vec3> positions = kTriangle;
+  for (const glm::vec3& p : kTriangle) positions.push_back(p + glm::vec3(0, 0, 1));
+  GltfBuilder builder;
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(positions)}}}});
+  const GltfContents contents = load(builder);
+  EXPECT_EQ(contents.meshes[0].indices, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
+}
+
+TEST_F(GltfLoad, GeneratesMissingNormalsWithAWarning) {
+  const test::CubeGeometry cube = test::unitCube();
+  GltfBuilder builder;
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(cube.positions)}}},
+                            {"indices", builder.addIndices(cube.indices)}});
+  const GltfContents contents = load(builder);
+  const Mesh& m = contents.meshes[0];
+  ASSERT_EQ(m.normals.size(), 8u);
+  expectNear(m.normals[7], glm::normalize(glm::vec3(1, 1, 1)), 1e-6f);
+  expectNear(m.normals[0], glm::normalize(glm::vec3(-1, -1, -1)), 1e-6f);
+  ASSERT_EQ(warnings.lines().size(), 1u);
+  EXPECT_TRUE(warnings.contains(
+      "model.gltf: warning: mesh 0 primitive 0 has no normals; generated angle-weighted normals"));
+}
+
+TEST_F(GltfLoad, RepairsBadNormalsAndDropsZeroAreaTriangles) {
+  const std::vector<glm::vec3> positions = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0),
+                                            glm::vec3(2, 0, 0)};
+  const std::vector<glm::vec3> normals = {glm::vec3(0, 0, 1), glm::vec3(0.0f),
+                                          glm::vec3(std::numeric_limits<float>::quiet_NaN()),
+                                          glm::vec3(0, 0, 1)};
+  GltfBuilder builder;
+  builder.addPrimitiveNode(
+      {{"attributes", {{"POSITION", builder.addFloats(positions)}, {"NORMAL", builder.addFloats(normals)}}},
+       {"indices", builder.addIndices({0, 1, 2, 0, 1, 3, 2, 2, 1})}});
+  const GltfContents contents = load(builder);
+  const Mesh& m = contents.meshes[0];
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_EQ(m.positions.size(), 4u);  // vertices are never removed
+  expectNear(m.normals[1], glm::vec3(0, 0, 1));
+  expectNear(m.normals[2], glm::vec3(0, 0, 1));
+  EXPECT_TRUE(warnings.contains("model.gltf: warning: mesh 0 primitive 0: dropped 2 zero-area triangles"));
+  EXPECT_TRUE(
+      warnings.contains("model.gltf: warning: mesh 0 primitive 0: replaced 2 zero-length or NaN normals with "
+                        "angle-weighted normals"));
+}
+
+TEST_F(GltfLoad, InterleavedStrideAndQuantizedAttributes) {
+  // Interleaved position + normal (byteStride 24), then KHR_mesh_quantization-style integers:
+  // normalised unsigned byte texcoords, and plain short positions padded to an 8-byte stride.
+  struct Vertex {
+    glm::vec3 position, normal;
+  };
+  const std::vector<Vertex> vertices = {{kTriangle[0], glm::vec3(0, 0, 1)},
+                                        {kTriangle[1], glm::vec3(0, 0, 1)},
+                                        {kTriangle[2], glm::vec3(0, 0, 1)}};
+  GltfBuilder builder;
+  const int view = builder.addBufferView(vertices.data(), vertices.size() * sizeof(Vertex), sizeof(Vertex));
+  json& accessors = builder.document()["accessors"];
+  accessors.push_back(
+      {{"bufferView", view}, {"componentType", test::kFloat}, {"count", 3}, {"type", "VEC3"}});
+  accessors.push_back({{"bufferView", view},
+                       {"byteOffset", 12},
+                       {"componentType", test::kFloat},
+                       {"count", 3},
+                       {"type", "VEC3"}});
+  const std::uint8_t uv[] = {0, 255, 255, 0, 0, 0, 0, 0};
+  const int texcoords = builder.addAccessor(uv, 6, test::kUnsignedByte, 3, "VEC2", /*normalized=*/true);
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", texcoords}}}});
+
+  const std::int16_t shorts[] = {0, 0, 0, 0, 100, 0, 0, 0, 0, 0, 100, 0};  // padded to 4-byte elements
+  builder.addNode({{"mesh", builder.addMesh(json::array(
+                                {{{"attributes",
+                                   {{"POSITION", builder.addAccessor(shorts, sizeof(shorts), test::kShort, 3,
+                                                                     "VEC3", false, 8)}}}}}))}});
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 2u);
+  EXPECT_EQ(contents.meshes[0].positions, kTriangle);
+  EXPECT_EQ(contents.meshes[0].normals[2], glm::vec3(0, 0, 1));
+  EXPECT_EQ(contents.meshes[0].texcoords,
+            (std::vector<glm::vec2>{glm::vec2(0, 1), glm::vec2(1, 0), glm::vec2(0, 0)}));
+  EXPECT_EQ(contents.meshes[1].positions[1], glm::vec3(100, 0, 0));
+  EXPECT_EQ(contents.meshes[1].positions[2], glm::vec3(0, 0, 100));
+}
+
+TEST_F(GltfLoad, ReadsCustomAttributesInVertexOrder) {
+  GltfBuilder builder;
+  const std::vector<float> occlusion = {0.25f, 0.5f, 0.75f};
+  const std::vector<glm::vec3> bent = {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)};
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(kTriangle)},
+                              {"_AO", builder.addFloats(occlusion)},
+                              {"_BENT", builder.addFloats(bent)},
+                              {"COLOR_0", builder.addFloats(bent)}}}});
+  const GltfContents contents = load(builder);
+  const Mesh& m = contents.meshes[0];
+  ASSERT_EQ(m.attributes.size(), 2u);
+  EXPECT_EQ(m.attributes.at("_AO").componentCount, 1);
+  EXPECT_EQ(m.attributes.at("_AO").data, occlusion);
+  EXPECT_EQ(m.attributes.at("_BENT").componentCount, 3);
+  EXPECT_EQ(m.attributes.at("_BENT").data, (std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+}
+
+TEST_F(GltfLoad, ConvertsMaterialsAndWarnsOnceAboutTextures) {
+  GltfBuilder builder;
+  json& materials = builder.document()["materials"];
+  materials.push_back(
+      {{"name", "gold"},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.9, 0.6, 0.2, 1.0}},
+         {"metallicFactor", 1.0},
+         {"roughnessFactor", 0.3},
+         {"baseColorTexture", {{"index", 0}}}}},
+       {"emissiveFactor", {0.5, 0.25, 0.0}},
+       {"extensions",
+        {{"KHR_materials_specular", {{"specularFactor", 0.4}, {"specularColorFactor", {1.0, 0.5, 0.25}}}},
+         {"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}});
+  materials.push_back({{"name", "plastic"},
+                       {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+                       {"normalTexture", {{"index", 0}}}});
+  const int positions = builder.addFloats(kTriangle);
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}, {"material", 0}});
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}, {"material", 1}});
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}});
+  const GltfContents contents = load(builder);
+
+  ASSERT_EQ(contents.materials.size(), 3u);  // two from the file, the default last
+  const Material& gold = contents.materials[0];
+  EXPECT_EQ(gold.name, "gold");
+  EXPECT_EQ(gold.baseColor, glm::vec3(0.9f, 0.6f, 0.2f));
+  EXPECT_EQ(gold.metallic, 1.0f);
+  EXPECT_EQ(gold.roughness, 0.3f);
+  EXPECT_EQ(gold.specular, 0.4f);
+  EXPECT_EQ(gold.specularColor, glm::vec3(1.0f, 0.5f, 0.25f));
+  EXPECT_EQ(gold.emissive, glm::vec3(2.0f, 1.0f, 0.0f));
+  const Material& plastic = contents.materials[1];
+  EXPECT_EQ(plastic.baseColor, glm::vec3(1.0f));
+  EXPECT_EQ(plastic.metallic, 0.0f);
+  EXPECT_EQ(plastic.roughness, 1.0f);
+  EXPECT_EQ(plastic.specular, 1.0f);
+  EXPECT_EQ(contents.materials[2].name, "default");
+  EXPECT_EQ(contents.meshes[0].material, 0);
+  EXPECT_EQ(contents.meshes[1].material, 1);
+  EXPECT_EQ(contents.meshes[2].material, 2);
+  ASSERT_EQ(warnings.lines().size(), 4u);  // textures once, normals generated for 3 meshes
+  EXPECT_TRUE(
+      warnings.contains("model.gltf: warning: textures are ignored; materials use their constant factors"));
+}
+
+TEST_F(GltfLoad, FirstPerspectiveCameraWithItsNodeTransform) {
+  GltfBuilder builder;
+  json& cameras = builder.document()["cameras"];
+  cameras.push_back(
+      {{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}});
+  cameras.push_back(
+      {{"type", "perspective"},
+       {"perspective", {{"yfov", 0.8}, {"aspectRatio", 1.5}, {"znear", 0.05}, {"zfar", 50.0}}}});
+  cameras.push_back({{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}});
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}});
+  builder.addNode({{"camera", 0}});
+  // Turned 90 degrees about +Y (looks down -X), standing at (5, 1, 0).
+  const float s = std::sqrt(0.5f);
+  builder.addNode({{"camera", 1}, {"translation", {5, 1, 0}}, {"rotation", {0, s, 0, s}}});
+  builder.addNode({{"camera", 2}});
+  const GltfContents contents = load(builder);
+  ASSERT_TRUE(contents.camera.has_value());
+  const Camera& camera = *contents.camera;
+  expectNear(camera.position, glm::vec3(5, 1, 0));
+  expectNear(camera.forward, glm::vec3(-1, 0, 0));
+  expectNear(camera.up, glm::vec3(0, 1, 0));
+  EXPECT_FLOAT_EQ(camera.yfovRadians, 0.8f);
+  EXPECT_FLOAT_EQ(camera.znear, 0.05f);
+  EXPECT_FLOAT_EQ(camera.zfar, 50.0f);
+  EXPECT_TRUE(warnings.contains("model.gltf: warning: camera 0 is not a perspective camera; ignored"));
+}
+
+TEST_F(GltfLoad, CameraWithoutZfarGetsOneFromTheBounds) {
+  GltfBuilder builder;
+  builder.document()["cameras"].push_back(
+      {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}});
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}});
+  builder.addNode({{"camera", 0}, {"translation", {0.5f, 0.5f, 10.0f}}});
+  const GltfContents contents = load(builder);
+  ASSERT_TRUE(contents.camera.has_value());
+  Bounds bounds;
+  for (const glm::vec3& p : kTriangle) bounds.extend(p);
+  EXPECT_FLOAT_EQ(contents.camera->zfar, clipPlanesFor(contents.camera->position, bounds).zfar);
+  EXPECT_FLOAT_EQ(contents.camera->znear, 0.1f);
+}
+
+TEST_F(GltfLoad, ScenesDecideWhatIsLoaded) {
+  GltfBuilder builder;
+  const int mesh =
+      builder.addMesh(json::array({{{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}}}));
+  builder.addNode({{"mesh", mesh}});                                     // node 0, in scene 0
+  builder.addNode({{"mesh", mesh}, {"translation", {0, 0, 7}}}, false);  // node 1, in scene 1
+  builder.document()["scenes"].push_back({{"nodes", {1}}});
+  builder.document()["scene"] = 1;
+  EXPECT_EQ(load(builder).meshes.at(0).source.node, 1);
+  builder.document().erase("scene");  // no default scene: scene 0
+  EXPECT_EQ(load(builder).meshes.at(0).source.node, 0);
+  builder.document().erase("scenes");  // no scenes: all root nodes
+  EXPECT_EQ(load(builder).meshes.size(), 2u);
+}
+
+TEST_F(GltfLoad, SkipsPointsAndLinesWithAWarning) {
+  GltfBuilder builder;
+  const int positions = builder.addFloats(kTriangle);
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}});
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 1u);
+  EXPECT_EQ(contents.meshes[0].source.mesh, 1);
+  EXPECT_TRUE(
+      warnings.contains("model.gltf: warning: mesh 0 primitive 0 is points or lines (mode 1); skipped"));
+}
+
+TEST_F(GltfLoad, RejectsBadReferencesWithClearMessages) {
+  {
+    GltfBuilder builder;
+    builder.addPrimitiveNode({{"attributes", {{"NORMAL", builder.addFloats(kTriangle)}}}});
+    EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0 has no POSITION attribute"),
+              std::string::npos);
+  }
+  {
+    GltfBuilder builder;
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", 7}}}});
+    EXPECT_NE(loadError(builder).find("model.gltf: accessor 7 (POSITION) does not exist"), std::string::npos);
+  }
+  {
+    GltfBuilder builder;
+    const int positions = builder.addFloats(kTriangle);
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", positions}}}});
+    EXPECT_NE(loadError(builder).find(
+                  "model.gltf: accessor 0 (TEXCOORD_0) has 3 components per element, expected 2"),
+              std::string::npos);
+  }
+  {
+    GltfBuilder builder;
+    const int positions = builder.addFloats(kTriangle);
+    const int normals = builder.addFloats(std::vector<glm::vec3>(2, glm::vec3(0, 0, 1)));
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}});
+    EXPECT_NE(
+        loadError(builder).find("model.gltf: mesh 0 primitive 0: NORMAL has 2 elements but POSITION has 3"),
+        std::string::npos);
+  }
+  {
+    GltfBuilder builder;
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}},
+                              {"indices", builder.addIndices({0, 1, 2, 0})}});
+    EXPECT_NE(
+        loadError(builder).find("model.gltf: mesh 0 primitive 0: 4 indices do not make whole triangles"),
+        std::string::npos);
+  }
+  {
+    GltfBuilder builder;
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}, {"material", 3}});
+    EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: material 3 does not exist"),
+              std::string::npos);
+  }
+  {
+    GltfBuilder builder;
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}});
+    builder.document()["scenes"][0]["nodes"].push_back(9);
+    EXPECT_NE(loadError(builder).find("model.gltf: node 9 does not exist"), std::string::npos);
+  }
+  {
+    GltfBuilder builder;
+    const std::vector<glm::vec3> huge = {glm::vec3(0), glm::vec3(3e38f, 0, 0), glm::vec3(0, 1, 0)};
+    const int mesh =
+        builder.addMesh(json::array({{{"attributes", {{"POSITION", builder.addFloats(huge)}}}}}));
+    builder.addNode({{"mesh", mesh}, {"scale", {10, 1, 1}}});  // overflows to infinity in world space
+    EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: non-finite vertex position"),
+              std::string::npos);
+  }
+}
+
+// The committed bad-input corpus (tests/data/bad, generated by make_bad_gltf.py).
+struct BadFile {
+  const char* name;
+  const char* message;  // the whole message after "<path>: "
+};
+
+const BadFile kBadFiles[] = {
+    {"truncated.glb", "Invalid glTF binary."},
+    {"accessor_past_buffer.gltf", "accessor 0 (POSITION) reads past the end of buffer view 0"},
+    {"buffer_view_past_buffer.gltf", "buffer view 0 reads past the end of buffer 0"},
+    {"index_out_of_range.gltf", "mesh 0 primitive 0: index 57 out of range (3 vertices)"},
+    {"uri_outside_folder.gltf", "buffer 0 uri '../secret.bin' points outside the scene folder"},
+    {"nan_position.gltf", "mesh 0 primitive 0: non-finite vertex position"},
+    {"points_only.gltf", "no triangle meshes"},
+    {"node_cycle.gltf", "node 0 is reached twice in the scene graph (a cycle or two parents)"},
+    {"unsupported_extension.gltf", "requires unsupported extension EXT_meshopt_compression"},
+};
+
+TEST_F(GltfLoad, BadFilesGiveExactMessages) {
+  for (const BadFile& bad : kBadFiles) {
+    const std::filesystem::path path = test::dataDir() / "bad" / bad.name;
+    try {
+      loadGltf(path);
+      ADD_FAILURE() << bad.name << " loaded";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), path.string() + ": " + bad.message);
+    }
+  }
+}
+
+TEST_F(GltfLoad, BadFilesWhoseMessagesComeFromLibraries) {
+  const std::filesystem::path bad = test::dataDir() / "bad";
+  const auto message = [](const std::filesystem::path& path) -> std::string {
+    try {
+      loadGltf(path);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  // tinygltf's JSON parser (nlohmann) and file lookup, Draco's decoder: one line each.
+  const std::string garbage = message(bad / "garbage.gltf");
+  EXPECT_EQ(garbage.rfind((bad / "garbage.gltf").string() + ": ", 0), 0u) << garbage;
+  EXPECT_NE(garbage.find("parse error"), std::string::npos) << garbage;
+  const std::string missing = message(bad / "missing_bin.gltf");
+  EXPECT_NE(missing.find("File not found : missing.bin"), std::string::npos) << missing;
+  const std::string draco = message(bad / "bad_draco.glb");
+  EXPECT_NE(draco.find("bad_draco.glb: mesh 0 primitive 0: Draco stream does not decode ("),
+            std::string::npos)
+      << draco;
+  for (const std::string& text : {garbage, missing, draco})
+    EXPECT_EQ(text.find('\n'), std::string::npos) << text;
+}
+
+TEST_F(GltfLoad, EveryFileInTheBadCorpusIsRejected) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::dataDir() / "bad")) {
+    const std::string extension = entry.path().extension().string();
+    if (extension != ".gltf" && extension != ".glb") continue;
+    ++files;
+    EXPECT_THROW(loadGltf(entry.path()), Error) << entry.path();
+  }
+  EXPECT_GE(files, 12);
+}
+
+TEST_F(GltfLoad, RealDracoAssets) {
+  const std::filesystem::path models = test::assetsDir() / "models";
+  if (!std::filesystem::exists(models / "bunny.glb")) GTEST_SKIP() << "assets not fetched: " << models;
+  struct Expected {
+    const char* name;
+    std::size_t vertices, triangles;
+  };
+  for (const Expected& expected : {Expected{"bunny.glb", 2826, 5648}, Expected{"suzi.glb", 7503, 14842}}) {
+    const GltfContents contents = loadGltf(models / expected.name);
+    ASSERT_EQ(contents.meshes.size(), 1u) << expected.name;
+    const Mesh& m = contents.meshes[0];
+    EXPECT_EQ(m.vertexCount(), expected.vertices) << expected.name;
+    EXPECT_EQ(m.triangleCount(), expected.triangles) << expected.name;
+    EXPECT_EQ(m.normals.size(), m.vertexCount());
+    const Bounds b = m.bounds();
+    EXPECT_GT(b.radius(), 0.5f) << expected.name;  // both models span about [-0.93, 0.94]
+    EXPECT_LT(b.radius(), 2.0f) << expected.name;
+    for (const glm::vec3& n : m.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-4f);
+  }
+  const GltfContents bunny = loadGltf(models / "bunny.glb");
+  EXPECT_EQ(bunny.materials.at(0).baseColor, glm::vec3(0.8f));
+  EXPECT_EQ(bunny.materials.at(0).metallic, 0.0f);
+  EXPECT_EQ(bunny.materials.at(0).roughness, 0.5f);
+  // The accessor min/max of the file bound the decoded positions.
+  expectNear(bunny.meshes[0].bounds().min, glm::vec3(-0.9137708f, -0.8910416f, -0.6963724f), 1e-4f);
+  expectNear(bunny.meshes[0].bounds().max, glm::vec3(0.9172143f, 0.9398829f, 0.6988643f), 1e-4f);
+}
+
+}  // namespace
+}  // namespace iblkit

@@ -1,0 +1,234 @@
+#include "engine/core/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/core/error.h"
+#include "support/gltf_builder.h"
+#include "support/test_paths.h"
+#include "support/warning_capture.h"
+
+namespace iblkit {
+namespace {
+
+using nlohmann::json;
+
+void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
+  EXPECT_NEAR(actual.x, expected.x, tolerance);
+  EXPECT_NEAR(actual.y, expected.y, tolerance);
+  EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+// A scene folder: models/cube.gltf (the unit cube, one material), hdri/sky.exr (a stand-in file:
+// scenes only check that it exists) and scenes/, where each test writes its .json.
+class SceneFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::filesystem::create_directories(root / "models");
+    std::filesystem::create_directories(root / "hdri");
+    std::filesystem::create_directories(root / "scenes");
+    test::GltfBuilder builder;
+    const test::CubeGeometry cube = test::unitCube();
+    builder.document()["materials"] = {
+        {{"name", "white"}, {"pbrMetallicRoughness", {{"roughnessFactor", 0.25}}}}};
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(cube.positions)}}},
+                              {"indices", builder.addIndices(cube.indices)},
+                              {"material", 0}});
+    builder.write(root / "models" / "cube.gltf", test::GltfBuilder::Storage::BinFile);
+    std::ofstream(root / "hdri" / "sky.exr") << "stand-in";
+  }
+
+  Scene load(const json& document) {
+    const std::filesystem::path path = root / "scenes" / "scene.json";
+    std::ofstream(path) << document.dump(2);
+    return loadSceneFile(path);
+  }
+
+  // The message after "<scene.json path>: ".
+  std::string error(const json& document) {
+    try {
+      load(document);
+    } catch (const Error& e) {
+      const std::string prefix = (root / "scenes" / "scene.json").string() + ": ";
+      const std::string message = e.what();
+      return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+    }
+    return "(no error)";
+  }
+
+  static json cubeModel() { return {{"file", "../models/cube.gltf"}}; }
+
+  test::WarningCapture warnings;  // the cube has no normals: generated with a warning
+  std::filesystem::path root = test::scratchDir();
+};
+
+TEST_F(SceneFile, FullSceneDescription) {
+  const float s = std::sqrt(0.5f);
+  const Scene scene =
+      load({{"models",
+             {{{"file", "../models/cube.gltf"},
+               {"translation", {10, 0, 0}},
+               {"rotation", {0, s, 0, s}},
+               {"scale", 2},
+               {"material", {{"baseColor", {0.5, 0.25, 1}}, {"metallic", 1}, {"specular", 0.5}}}},
+              {{"file", "../models/cube.gltf"}, {"scale", {1, 3, 1}}}}},
+            {"ground", {{"material", {{"roughness", 0.75}}}}},
+            {"environment", {{"file", "../hdri/sky.exr"}, {"rotation", 90}, {"intensity", 2}}},
+            {"camera", {{"position", {0, 1, 10}}, {"target", {0, 1, 0}}, {"yfov", 30}}},
+            {"width", 320},
+            {"height", 200}});
+  ASSERT_EQ(scene.meshes.size(), 3u);  // two cubes and the ground
+  ASSERT_EQ(scene.modelFiles.size(), 2u);
+  EXPECT_EQ(scene.modelFiles[0], (root / "models" / "cube.gltf").lexically_normal());
+
+  // First cube: scale 2, then 90 degrees about +Y ((x, y, z) -> (z, y, -x)), then +10 in x.
+  const Mesh& first = scene.meshes[0];
+  expectNear(first.positions[7], glm::vec3(12, 2, -2));  // corner (1, 1, 1)
+  expectNear(first.normals[7], glm::normalize(glm::vec3(1, 1, -1)));
+  EXPECT_EQ(first.source.model, 0);
+  EXPECT_EQ(scene.meshes[1].source.model, 1);
+  expectNear(scene.meshes[1].positions[7], glm::vec3(1, 3, 1));
+
+  // Each model gets its own copy of its materials, with the overrides applied.
+  ASSERT_EQ(scene.materials.size(), 3u);
+  const Material& overridden = scene.materials[first.material];
+  EXPECT_EQ(overridden.baseColor, glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(overridden.metallic, 1.0f);
+  EXPECT_EQ(overridden.roughness, 0.25f);  // from the file
+  EXPECT_EQ(overridden.specular, 0.5f);
+  EXPECT_EQ(scene.materials[scene.meshes[1].material].baseColor, glm::vec3(1.0f));
+
+  // The ground: under the objects (default height = lowest point), 10 bounding radii wide.
+  expectNear(scene.bounds.min, glm::vec3(0, 0, -2));
+  expectNear(scene.bounds.max, glm::vec3(12, 3, 1));
+  const Mesh& ground = scene.meshes[2];
+  EXPECT_TRUE(ground.isGround);
+  EXPECT_EQ(ground.source.model, -1);
+  const Bounds groundBounds = ground.bounds();
+  EXPECT_FLOAT_EQ(groundBounds.min.y, 0.0f);
+  EXPECT_FLOAT_EQ(groundBounds.max.y, 0.0f);
+  EXPECT_FLOAT_EQ(groundBounds.max.x - groundBounds.min.x, 10.0f * scene.bounds.radius());
+  expectNear(groundBounds.center(), glm::vec3(6, 0, -0.5f));
+  for (std::size_t t = 0; t < ground.triangleCount(); ++t) {
+    const glm::vec3& a = ground.positions[ground.indices[3 * t]];
+    const glm::vec3 n = glm::cross(ground.positions[ground.indices[3 * t + 1]] - a,
+                                   ground.positions[ground.indices[3 * t + 2]] - a);
+    EXPECT_GT(n.y, 0.0f);  // front face up
+  }
+  const Material& groundMaterial = scene.materials.at(ground.material);
+  EXPECT_EQ(groundMaterial.baseColor, glm::vec3(0.5f));
+  EXPECT_EQ(groundMaterial.metallic, 0.0f);
+  EXPECT_EQ(groundMaterial.roughness, 0.75f);
+
+  EXPECT_EQ(scene.environment.file, (root / "hdri" / "sky.exr").lexically_normal());
+  EXPECT_EQ(scene.environment.rotationDegrees, 90.0f);
+  EXPECT_EQ(scene.environment.intensity, 2.0f);
+  ASSERT_TRUE(scene.camera.has_value());
+  expectNear(scene.camera->forward, glm::vec3(0, 0, -1));
+  EXPECT_FLOAT_EQ(scene.camera->yfovRadians, glm::radians(30.0f));
+  const ClipPlanes clip = clipPlanesFor(glm::vec3(0, 1, 10), scene.bounds);
+  EXPECT_FLOAT_EQ(scene.camera->znear, clip.znear);
+  EXPECT_FLOAT_EQ(scene.camera->zfar, clip.zfar);
+  EXPECT_EQ(scene.width, 320);
+  EXPECT_EQ(scene.height, 200);
+}
+
+TEST_F(SceneFile, Defaults) {
+  const Scene scene = load({{"models", {cubeModel()}}});
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_FALSE(scene.camera.has_value());
+  EXPECT_TRUE(scene.environment.file.empty());
+  EXPECT_EQ(scene.environment.intensity, 1.0f);
+  EXPECT_EQ(scene.width, kDefaultImageWidth);
+  EXPECT_EQ(scene.height, kDefaultImageHeight);
+  EXPECT_EQ(scene.meshes[0].positions[7], glm::vec3(1, 1, 1));
+
+  const Scene withGround = load({{"models", {cubeModel()}}, {"ground", {{"height", -1}, {"size", 4}}}});
+  const Bounds ground = withGround.meshes.at(1).bounds();
+  EXPECT_EQ(ground.min, glm::vec3(-1.5f, -1.0f, -1.5f));
+  EXPECT_EQ(ground.max, glm::vec3(2.5f, -1.0f, 2.5f));
+  EXPECT_EQ(load({{"models", {cubeModel()}}, {"ground", {{"enabled", false}}}}).meshes.size(), 1u);
+}
+
+TEST_F(SceneFile, NegativeScaleMirrorsWithOutwardNormals) {
+  const Scene scene = load({{"models", {{{"file", "../models/cube.gltf"}, {"scale", {-1, 1, 1}}}}}});
+  const Mesh& m = scene.meshes.at(0);
+  expectNear(m.normals[7], glm::normalize(glm::vec3(-1, 1, 1)));  // corner (1, 1, 1) -> (-1, 1, 1)
+  for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+    const glm::vec3& a = m.positions[m.indices[3 * t]];
+    const glm::vec3 n =
+        glm::cross(m.positions[m.indices[3 * t + 1]] - a, m.positions[m.indices[3 * t + 2]] - a);
+    const glm::vec3 outward =
+        (a + m.positions[m.indices[3 * t + 1]] + m.positions[m.indices[3 * t + 2]]) / 3.0f -
+        glm::vec3(-0.5f, 0.5f, 0.5f);
+    EXPECT_GT(glm::dot(n, outward), 0.0f) << "triangle " << t;
+  }
+}
+
+TEST_F(SceneFile, UnknownKeysAndWrongTypesNameTheKeyPath) {
+  const json model = cubeModel();
+  EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"scael", 2}}}}}),
+            "models[0].scael: unknown key (expected one of: file, translation, rotation, scale, material)");
+  EXPECT_EQ(error({{"models", {model}}, {"camrea", {}}}),
+            "camrea: unknown key (expected one of: models, ground, environment, camera, width, height)");
+  EXPECT_EQ(error({{"models", {model}}, {"ground", {{"material", {{"colour", {1, 1, 1}}}}}}}),
+            "ground.material.colour: unknown key (expected one of: baseColor, metallic, roughness, specular, "
+            "specularColor, emissive)");
+  EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"scale", "big"}}}}}),
+            "models[0].scale: expected a nonzero number or an array of 3 nonzero numbers");
+  EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"scale", {1, 0, 1}}}}}}),
+            "models[0].scale: expected a nonzero number or an array of 3 nonzero numbers");
+  EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"translation", {1, 2}}}}}}),
+            "models[0].translation: expected an array of 3 numbers");
+  EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"rotation", {0, 0, 0, 0}}}}}}),
+            "models[0].rotation: expected a quaternion [x, y, z, w] (not all zero)");
+  EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"material", {{"roughness", 2}}}}}}}),
+            "models[0].material.roughness: expected a number in [0, 1]");
+  EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"material", {{"baseColor", {1, 1}}}}}}}}),
+            "models[0].material.baseColor: expected an array of 3 numbers in [0, 1]");
+  EXPECT_EQ(error({{"models", {{{"translation", {0, 0, 0}}}}}}), "models[0]: missing required key 'file'");
+  EXPECT_EQ(error({{"models", json::array()}}), "models: expected a non-empty array of models");
+  EXPECT_EQ(error(json::object()), "the document: missing required key 'models'");
+  EXPECT_EQ(error(json::array()), "the document: expected an object");
+  EXPECT_EQ(error({{"models", {model}}, {"width", 0}}), "width: expected an integer in [1, 16384]");
+  EXPECT_EQ(error({{"models", {model}}, {"height", 1.5}}), "height: expected an integer in [1, 16384]");
+  EXPECT_EQ(error({{"models", {model}}, {"ground", {{"enabled", 1}}}}),
+            "ground.enabled: expected true or false");
+  EXPECT_EQ(error({{"models", {model}}, {"environment", {{"file", "../hdri/missing.exr"}}}}),
+            "environment.file: '../hdri/missing.exr' does not exist");
+  EXPECT_EQ(error({{"models", {model}}, {"environment", {{"file", "../hdri/sky.exr"}, {"intensity", -1}}}}),
+            "environment.intensity: expected a number >= 0");
+  EXPECT_EQ(error({{"models", {model}}, {"camera", {{"position", {0, 0, 5}}}}}),
+            "camera: missing required key 'target'");
+  EXPECT_EQ(error({{"models", {model}}, {"camera", {{"position", {0, 5, 0}}, {"target", {0, 0, 0}}}}}),
+            "camera.up: expected a direction not parallel to the view direction");
+  EXPECT_EQ(error({{"models", {model}},
+                   {"camera", {{"position", {0, 0, 5}}, {"target", {0, 0, 0}}, {"yfov", 180}}}}),
+            "camera.yfov: expected degrees in (0, 180)");
+}
+
+TEST_F(SceneFile, BrokenFilesAreErrors) {
+  const std::filesystem::path path = root / "scenes" / "broken.json";
+  std::ofstream(path) << "{\"models\": [";
+  try {
+    loadSceneFile(path);
+    FAIL() << "loaded";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path.string() + ": invalid JSON: [json.exception.parse_error", 0),
+              0u)
+        << e.what();
+  }
+  // A model that fails to load names the model file.
+  try {
+    load({{"models", {{{"file", "../models/missing.gltf"}}}}});
+    FAIL() << "loaded";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), (root / "models" / "missing.gltf").string() + ": cannot read file");
+  }
+}
+
+}  // namespace
+}  // namespace iblkit

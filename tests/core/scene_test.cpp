@@ -1,0 +1,92 @@
+#include "engine/core/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "engine/core/error.h"
+#include "support/gltf_builder.h"
+#include "support/test_paths.h"
+#include "support/warning_capture.h"
+
+namespace iblkit {
+namespace {
+
+class SceneLoad : public ::testing::Test {
+ protected:
+  // A triangle glTF under `name`, with or without a camera.
+  std::filesystem::path writeTriangle(const std::string& name, bool camera) {
+    test::GltfBuilder builder;
+    const std::vector<glm::vec3> triangle = {glm::vec3(0, 0, 0), glm::vec3(2, 0, 0), glm::vec3(0, 2, 0)};
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(triangle)}}}});
+    if (camera) {
+      builder.document()["cameras"] = {
+          {{"type", "perspective"}, {"perspective", {{"yfov", 0.6}, {"znear", 0.1}, {"zfar", 100}}}}};
+      builder.addNode({{"camera", 0}, {"translation", {0, 0, 9}}});
+    }
+    const std::filesystem::path path = scratch / name;
+    builder.write(path, name.ends_with(".gltf") ? test::GltfBuilder::Storage::DataUri
+                                                : test::GltfBuilder::Storage::Glb);
+    return path;
+  }
+
+  test::WarningCapture warnings;
+  std::filesystem::path scratch = test::scratchDir();
+};
+
+TEST_F(SceneLoad, GltfFilesAreScenesOfTheirOwn) {
+  const Scene scene = loadScene(writeTriangle("MODEL.GLB", true));
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  ASSERT_EQ(scene.modelFiles.size(), 1u);
+  EXPECT_EQ(scene.modelFiles[0], scratch / "MODEL.GLB");
+  EXPECT_EQ(scene.bounds.min, glm::vec3(0, 0, 0));
+  EXPECT_EQ(scene.bounds.max, glm::vec3(2, 2, 0));
+  EXPECT_TRUE(scene.environment.file.empty());
+  EXPECT_EQ(scene.width, kDefaultImageWidth);
+  ASSERT_TRUE(scene.camera.has_value());
+  EXPECT_EQ(sceneCamera(scene, 2.0f).position, glm::vec3(0, 0, 9));
+}
+
+TEST_F(SceneLoad, SceneCameraFramesScenesWithoutOne) {
+  const Scene scene = loadScene(writeTriangle("model.gltf", false));
+  EXPECT_FALSE(scene.camera.has_value());
+  const Camera framed = frameBounds(scene.bounds, 1.5f);
+  const Camera camera = sceneCamera(scene, 1.5f);
+  EXPECT_EQ(camera.position, framed.position);
+  EXPECT_EQ(camera.forward, framed.forward);
+  EXPECT_EQ(camera.zfar, framed.zfar);
+}
+
+TEST_F(SceneLoad, UnknownExtensionIsAnError) {
+  const std::filesystem::path path = scratch / "model.obj";
+  std::ofstream(path) << "v 0 0 0\n";
+  try {
+    loadScene(path);
+    FAIL() << "loaded";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path.string() + ": unknown scene type '.obj' (expected .json, .gltf or .glb)");
+  }
+}
+
+TEST(ObjectBounds, ExcludeTheGround) {
+  Mesh object, ground;
+  object.positions = {glm::vec3(1, 2, 3), glm::vec3(4, 5, 6)};
+  ground.positions = {glm::vec3(-100, 0, -100), glm::vec3(100, 0, 100)};
+  ground.isGround = true;
+  const Bounds b = objectBounds({object, ground});
+  EXPECT_EQ(b.min, glm::vec3(1, 2, 3));
+  EXPECT_EQ(b.max, glm::vec3(4, 5, 6));
+}
+
+TEST_F(SceneLoad, RealAssetIsFramed) {
+  const std::filesystem::path bunny = test::assetsDir() / "models" / "bunny.glb";
+  if (!std::filesystem::exists(bunny)) GTEST_SKIP() << "assets not fetched: " << bunny;
+  const Scene scene = loadScene(bunny);
+  EXPECT_FALSE(scene.camera.has_value());
+  const Camera camera = sceneCamera(scene, float(scene.width) / float(scene.height));
+  EXPECT_GT(glm::length(camera.position - scene.bounds.center()), scene.bounds.radius());
+}
+
+}  // namespace
+}  // namespace iblkit

@@ -1,0 +1,169 @@
+#include "support/gltf_builder.h"
+
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+namespace iblkit::test {
+
+namespace {
+
+std::string base64(const std::vector<unsigned char>& bytes) {
+  static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string text;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::uint32_t b0 = bytes[i];
+    const std::uint32_t b1 = i + 1 < bytes.size() ? bytes[i + 1] : 0;
+    const std::uint32_t b2 = i + 2 < bytes.size() ? bytes[i + 2] : 0;
+    const std::uint32_t triple = (b0 << 16) | (b1 << 8) | b2;
+    text += kAlphabet[(triple >> 18) & 63];
+    text += kAlphabet[(triple >> 12) & 63];
+    text += i + 1 < bytes.size() ? kAlphabet[(triple >> 6) & 63] : '=';
+    text += i + 2 < bytes.size() ? kAlphabet[triple & 63] : '=';
+  }
+  return text;
+}
+
+void writeBytes(const std::filesystem::path& path, const void* data, std::size_t size) {
+  std::ofstream stream(path, std::ios::binary);
+  stream.write(static_cast<const char*>(data), std::streamsize(size));
+  if (!stream) throw std::runtime_error("cannot write " + path.string());
+}
+
+void appendU32(std::vector<unsigned char>& out, std::uint32_t value) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
+  out.insert(out.end(), bytes, bytes + 4);
+}
+
+}  // namespace
+
+GltfBuilder::GltfBuilder() {
+  document_ = {
+      {"asset", {{"version", "2.0"}}}, {"scene", 0}, {"scenes", {{{"nodes", nlohmann::json::array()}}}}};
+}
+
+int GltfBuilder::addBufferView(const void* data, std::size_t size, int byteStride) {
+  buffer_.resize((buffer_.size() + 3) / 4 * 4, 0);
+  nlohmann::json view = {{"buffer", 0}, {"byteOffset", buffer_.size()}, {"byteLength", size}};
+  if (byteStride) view["byteStride"] = byteStride;
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  buffer_.insert(buffer_.end(), bytes, bytes + size);
+  document_["bufferViews"].push_back(view);
+  return int(document_["bufferViews"].size()) - 1;
+}
+
+int GltfBuilder::addAccessor(const void* data, std::size_t size, int componentType, std::size_t count,
+                             const std::string& type, bool normalized, int byteStride) {
+  nlohmann::json accessor = {{"bufferView", addBufferView(data, size, byteStride)},
+                             {"componentType", componentType},
+                             {"count", count},
+                             {"type", type}};
+  if (normalized) accessor["normalized"] = true;
+  document_["accessors"].push_back(accessor);
+  return int(document_["accessors"].size()) - 1;
+}
+
+int GltfBuilder::addFloats(const std::vector<glm::vec3>& values) {
+  const int index =
+      addAccessor(values.data(), values.size() * sizeof(glm::vec3), kFloat, values.size(), "VEC3");
+  if (!values.empty()) {
+    glm::vec3 lo = values[0], hi = values[0];
+    for (const glm::vec3& v : values) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    document_["accessors"][index]["min"] = {lo.x, lo.y, lo.z};
+    document_["accessors"][index]["max"] = {hi.x, hi.y, hi.z};
+  }
+  return index;
+}
+
+int GltfBuilder::addFloats(const std::vector<glm::vec2>& values) {
+  return addAccessor(values.data(), values.size() * sizeof(glm::vec2), kFloat, values.size(), "VEC2");
+}
+
+int GltfBuilder::addFloats(const std::vector<float>& values) {
+  return addAccessor(values.data(), values.size() * sizeof(float), kFloat, values.size(), "SCALAR");
+}
+
+int GltfBuilder::addIndices(const std::vector<std::uint32_t>& indices, int componentType) {
+  const std::size_t size = componentType == kUnsignedByte ? 1 : componentType == kUnsignedShort ? 2 : 4;
+  std::vector<unsigned char> bytes(indices.size() * size);
+  for (std::size_t i = 0; i < indices.size(); ++i)
+    std::memcpy(&bytes[i * size], &indices[i], size);  // little-endian
+  return addAccessor(bytes.data(), bytes.size(), componentType, indices.size(), "SCALAR");
+}
+
+int GltfBuilder::addMesh(const nlohmann::json& primitives) {
+  document_["meshes"].push_back({{"primitives", primitives}});
+  return int(document_["meshes"].size()) - 1;
+}
+
+int GltfBuilder::addNode(const nlohmann::json& node, bool root) {
+  document_["nodes"].push_back(node);
+  const int index = int(document_["nodes"].size()) - 1;
+  if (root) document_["scenes"][0]["nodes"].push_back(index);
+  return index;
+}
+
+int GltfBuilder::addPrimitiveNode(const nlohmann::json& primitive) {
+  return addNode({{"mesh", addMesh(nlohmann::json::array({primitive}))}});
+}
+
+void GltfBuilder::write(const std::filesystem::path& path, Storage storage) const {
+  nlohmann::json document = document_;
+  if (!buffer_.empty()) {
+    nlohmann::json buffer = {{"byteLength", buffer_.size()}};
+    if (storage == Storage::BinFile) {
+      const std::filesystem::path bin = std::filesystem::path(path).replace_extension(".bin");
+      writeBytes(bin, buffer_.data(), buffer_.size());
+      buffer["uri"] = bin.filename().string();
+    } else if (storage == Storage::DataUri) {
+      buffer["uri"] = "data:application/octet-stream;base64," + base64(buffer_);
+    }
+    document["buffers"] = {buffer};
+  }
+  std::string json = document.dump();
+  if (storage != Storage::Glb) {
+    writeBytes(path, json.data(), json.size());
+    return;
+  }
+  // GLB container (glTF 2.0 section 4.4): header, JSON chunk padded with spaces, BIN chunk
+  // padded with zeros.
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  std::vector<unsigned char> bin = buffer_;
+  bin.resize((bin.size() + 3) / 4 * 4, 0);
+  std::vector<unsigned char> glb;
+  const std::size_t total = 12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size());
+  glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
+  appendU32(glb, 2);
+  appendU32(glb, std::uint32_t(total));
+  appendU32(glb, std::uint32_t(json.size()));
+  appendU32(glb, 0x4E4F534Au);
+  glb.insert(glb.end(), json.begin(), json.end());
+  if (!bin.empty()) {
+    appendU32(glb, std::uint32_t(bin.size()));
+    appendU32(glb, 0x004E4942u);
+    glb.insert(glb.end(), bin.begin(), bin.end());
+  }
+  writeBytes(path, glb.data(), glb.size());
+}
+
+CubeGeometry unitCube() {
+  CubeGeometry cube;
+  for (int i = 0; i < 8; ++i)
+    cube.positions.emplace_back(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
+  // Each face as a cycle of corners; ordered counter-clockwise seen from outside below.
+  const std::array<std::array<std::uint32_t, 4>, 6> faces = {
+      {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}}};
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    std::array<std::uint32_t, 4> q = faces[f];
+    glm::vec3 outward(0.0f);
+    outward[int(f / 2)] = (f % 2) ? 1.0f : -1.0f;
+    const glm::vec3& a = cube.positions[q[0]];
+    if (glm::dot(glm::cross(cube.positions[q[1]] - a, cube.positions[q[2]] - a), outward) < 0.0f)
+      std::swap(q[1], q[3]);
+    cube.indices.insert(cube.indices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+  }
+  return cube;
+}
+
+}  // namespace iblkit::test

@@ -1,0 +1,61 @@
+#pragma once
+// Builds small glTF 2.0 files in code for tests: accessors append to one binary buffer, and the
+// JSON document is open for the test to edit (nodes, materials, cameras, deliberate mistakes).
+// The same document can be written as .gltf with the buffer in a .bin file or a data URI, or
+// as .glb.
+
+#include <cstdint>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace iblkit::test {
+
+// glTF component types (glTF 2.0 section 3.6.2.2).
+inline constexpr int kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123, kUnsignedInt = 5125,
+                     kFloat = 5126;
+
+class GltfBuilder {
+ public:
+  enum class Storage { BinFile, DataUri, Glb };
+
+  GltfBuilder();
+
+  nlohmann::json& document() { return document_; }
+
+  // Appends bytes as a new buffer view (4-byte aligned); returns its index.
+  int addBufferView(const void* data, std::size_t size, int byteStride = 0);
+  // An accessor over a new buffer view holding `data`.
+  int addAccessor(const void* data, std::size_t size, int componentType, std::size_t count,
+                  const std::string& type, bool normalized = false, int byteStride = 0);
+  int addFloats(const std::vector<glm::vec3>& values);  // VEC3 float, with min and max
+  int addFloats(const std::vector<glm::vec2>& values);  // VEC2 float
+  int addFloats(const std::vector<float>& values);      // SCALAR float
+  // Indices stored with the given component type (unsigned byte, short or int).
+  int addIndices(const std::vector<std::uint32_t>& indices, int componentType = kUnsignedInt);
+
+  // A mesh of the given primitives; returns its index.
+  int addMesh(const nlohmann::json& primitives);
+  // A node; listed in scene 0 when `root`. Returns its index.
+  int addNode(const nlohmann::json& node, bool root = true);
+  // A mesh with one primitive on a root node: the common case.
+  int addPrimitiveNode(const nlohmann::json& primitive);
+
+  // Writes the document to `path`; Storage::BinFile puts the buffer in "<stem>.bin" beside it.
+  void write(const std::filesystem::path& path, Storage storage) const;
+
+ private:
+  nlohmann::json document_;
+  std::vector<unsigned char> buffer_;
+};
+
+// A unit cube, [0, 1]^3, 8 shared vertices and 12 counter-clockwise triangles, no normals.
+struct CubeGeometry {
+  std::vector<glm::vec3> positions;
+  std::vector<std::uint32_t> indices;
+};
+CubeGeometry unitCube();
+
+}  // namespace iblkit::test
