@@ -1,0 +1,200 @@
+#include "raytrace/ray_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.h"
+#include "raytrace/ray_offset.h"
+
+namespace iblkit {
+
+namespace {
+
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "Embree's FLOAT3 vertex buffer is read as glm::vec3");
+
+const char* errorName(RTCError code) {
+  switch (code) {
+    case RTC_ERROR_NONE:
+      return "RTC_ERROR_NONE";
+    case RTC_ERROR_UNKNOWN:
+      return "RTC_ERROR_UNKNOWN";
+    case RTC_ERROR_INVALID_ARGUMENT:
+      return "RTC_ERROR_INVALID_ARGUMENT";
+    case RTC_ERROR_INVALID_OPERATION:
+      return "RTC_ERROR_INVALID_OPERATION";
+    case RTC_ERROR_OUT_OF_MEMORY:
+      return "RTC_ERROR_OUT_OF_MEMORY";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+      return "RTC_ERROR_UNSUPPORTED_CPU";
+    case RTC_ERROR_CANCELLED:
+      return "RTC_ERROR_CANCELLED";
+  }
+  return "RTC_ERROR_?";
+}
+
+// Embree reports errors through a C callback, on the thread that made the failing API call.
+// Throwing from inside Embree's C interface would unwind through its frames, so the callback only
+// records the first message of the current call, and checkEmbree() throws it once the call has
+// returned. Thread-local, so concurrent scenes on other threads do not mix their errors.
+thread_local std::string tEmbreeError;
+
+void recordEmbreeError(void*, RTCError code, const char* message) {
+  if (tEmbreeError.empty()) tEmbreeError = std::string(errorName(code)) + ": " + (message ? message : "");
+}
+
+void clearEmbreeError() { tEmbreeError.clear(); }
+
+void checkEmbree() {
+  if (tEmbreeError.empty()) return;
+  const std::string message = std::move(tEmbreeError);
+  tEmbreeError.clear();
+  fail("Embree", message);
+}
+
+struct GeometryRelease {
+  void operator()(RTCGeometry geometry) const { rtcReleaseGeometry(geometry); }
+};
+
+}  // namespace
+
+RayScene::RayScene(const std::string& embreeConfig) {
+  device_.reset(rtcNewDevice(embreeConfig.empty() ? nullptr : embreeConfig.c_str()));
+  // The callback is not installed yet: the only information about a failed creation is the code.
+  if (!device_)
+    fail("Embree", std::string(errorName(rtcGetDeviceError(nullptr))) +
+                       ": cannot create a device with config \"" + embreeConfig + "\"");
+  rtcSetDeviceErrorFunction(device_.get(), recordEmbreeError, nullptr);
+  clearEmbreeError();
+  scene_.reset(rtcNewScene(device_.get()));
+  checkEmbree();
+  rtcSetSceneBuildQuality(scene_.get(), RTC_BUILD_QUALITY_HIGH);
+  rtcSetSceneFlags(scene_.get(), RTC_SCENE_FLAG_ROBUST);
+  checkEmbree();
+}
+
+unsigned RayScene::addTriangleMesh(std::span<const glm::vec3> positions, std::span<const uint32_t> indices) {
+  const auto id = static_cast<unsigned>(meshes_.size());
+  const std::string subject = "ray scene mesh " + std::to_string(id);
+  if (indices.empty()) fail(subject, "has no triangles");
+  if (indices.size() % 3 != 0)
+    fail(subject, std::to_string(indices.size()) + " indices do not make whole triangles");
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
+      fail(subject, "vertex " + std::to_string(i) + " has a non-finite position");
+  for (std::size_t i = 0; i < indices.size(); ++i)
+    if (indices[i] >= positions.size())
+      fail(subject, "triangle " + std::to_string(i / 3) + " uses vertex " + std::to_string(indices[i]) +
+                        " but the mesh has " + std::to_string(positions.size()) + " vertices");
+
+  clearEmbreeError();
+  const std::unique_ptr<RTCGeometryTy, GeometryRelease> geometry(
+      rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE));
+  checkEmbree();
+  // rtcSetNewGeometryBuffer pads the vertex buffer so Embree's 16-byte loads of the last vertex
+  // stay inside it, which a caller's array would not guarantee: hence the copy.
+  auto* vertices = static_cast<glm::vec3*>(rtcSetNewGeometryBuffer(
+      geometry.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(glm::vec3), positions.size()));
+  auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+      geometry.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), indices.size() / 3));
+  checkEmbree();
+  std::copy(positions.begin(), positions.end(), vertices);
+  std::copy(indices.begin(), indices.end(), triangles);
+  rtcCommitGeometry(geometry.get());
+  rtcAttachGeometryByID(scene_.get(), geometry.get(), id);
+  checkEmbree();
+
+  Bounds box{positions.front(), positions.front()};  // valid indices imply at least one vertex
+  for (const glm::vec3& p : positions) {
+    box.lower = glm::min(box.lower, p);
+    box.upper = glm::max(box.upper, p);
+  }
+  bounds_ =
+      meshes_.empty() ? box : Bounds{glm::min(bounds_.lower, box.lower), glm::max(bounds_.upper, box.upper)};
+  meshes_.push_back({vertices, triangles});
+  committed_ = false;
+  return id;
+}
+
+void RayScene::commit() {
+  clearEmbreeError();
+  rtcCommitScene(scene_.get());
+  checkEmbree();
+  committed_ = true;
+}
+
+void RayScene::requireCommitted(const char* query) const {
+  if (!committed_) fail("ray scene", std::string(query) + " called before commit()");
+}
+
+Hit RayScene::intersect(const Ray& ray, float tmin, float tmax) const {
+  requireCommitted("intersect");
+  // A context per call: it carries no shared state, which is what makes concurrent queries safe.
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit query{};
+  query.ray.org_x = ray.origin.x;
+  query.ray.org_y = ray.origin.y;
+  query.ray.org_z = ray.origin.z;
+  query.ray.dir_x = ray.direction.x;
+  query.ray.dir_y = ray.direction.y;
+  query.ray.dir_z = ray.direction.z;
+  query.ray.tnear = tmin;
+  query.ray.tfar = tmax;
+  query.ray.mask = ~0u;
+  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_.get(), &context, &query);
+
+  Hit hit;
+  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+  hit.hit = true;
+  hit.t = query.ray.tfar;
+  hit.geomId = query.hit.geomID;
+  hit.primId = query.hit.primID;
+  hit.barycentrics = glm::vec2(query.hit.u, query.hit.v);
+  // Embree's Ng is unnormalised (its length is twice the triangle's area, scaled by Embree's
+  // internal precision). Dividing by the largest component first keeps the tiny Ng of a minute
+  // triangle from underflowing when squared in the normalisation.
+  const glm::vec3 ng(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
+  const float largest = std::max({std::abs(ng.x), std::abs(ng.y), std::abs(ng.z)});
+  hit.geometricNormal = glm::normalize(ng / largest);
+  return hit;
+}
+
+bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float tmax) const {
+  requireCommitted("occluded");
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay query{};
+  query.org_x = origin.x;
+  query.org_y = origin.y;
+  query.org_z = origin.z;
+  query.dir_x = direction.x;
+  query.dir_y = direction.y;
+  query.dir_z = direction.z;
+  query.tnear = tmin;
+  query.tfar = tmax;
+  query.mask = ~0u;
+  rtcOccluded1(scene_.get(), &context, &query);
+  // Embree marks an occluded ray by setting tfar to -infinity.
+  return query.tfar == -std::numeric_limits<float>::infinity();
+}
+
+glm::vec3 RayScene::surfacePoint(const Hit& hit) const {
+  const MeshBuffers& mesh = meshes_.at(hit.geomId);
+  const uint32_t* corner = mesh.indices + 3 * std::size_t(hit.primId);
+  const float u = hit.barycentrics.x, v = hit.barycentrics.y;
+  return (1.0f - u - v) * mesh.positions[corner[0]] + u * mesh.positions[corner[1]] +
+         v * mesh.positions[corner[2]];
+}
+
+RayScene::Bounds RayScene::bounds() const { return bounds_; }
+
+float RayScene::scale() const { return glm::length(bounds_.upper - bounds_.lower); }
+
+float RayScene::rayEpsilon() const {
+  const glm::vec3 largest = glm::max(glm::abs(bounds_.lower), glm::abs(bounds_.upper));
+  return iblkit::rayEpsilon(std::max({largest.x, largest.y, largest.z}));
+}
+
+}  // namespace iblkit
