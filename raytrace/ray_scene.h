@@ -15,14 +15,9 @@
 #include <string>
 #include <vector>
 
-namespace iblkit {
+#include "engine/core/ray.h"
 
-// A ray origin + t * direction. The direction need not be unit length; t (and tmin/tmax) are then
-// in units of its length.
-struct Ray {
-  glm::vec3 origin{0.0f};
-  glm::vec3 direction{0.0f, 0.0f, 1.0f};
-};
+namespace iblkit {
 
 // The closest intersection found by RayScene::intersect.
 struct Hit {

@@ -12,13 +12,9 @@
 #include <glm/glm.hpp>
 
 #include "engine/core/mesh.h"
+#include "engine/core/ray.h"
 
 namespace iblkit {
-
-struct Ray {
-  glm::vec3 origin;
-  glm::vec3 direction;  // unit length
-};
 
 struct Camera {
   glm::vec3 position{0.0f};
@@ -39,7 +35,7 @@ struct Camera {
   // The ray from the camera position through raster position `rasterPos` (see the pixel
   // convention above) of a width x height image; consistent with projectionMatrix: every point of
   // the ray projects back to rasterPos. Pass (i + 0.5, j + 0.5) for the centre of pixel (i, j).
-  Ray primaryRay(const glm::vec2& rasterPos, int width, int height) const;
+  Ray primaryRay(const glm::vec2& rasterPos, int width, int height) const;  // unit direction
 };
 
 // Clip distances for a camera at `position` viewing `bounds`: with d the distance to the bounds'
