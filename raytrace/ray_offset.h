@@ -4,7 +4,7 @@
 // a ray leaving it can re-hit the same triangle at t ~ 0 (shadow acne, dark speckles in AO).
 //
 // Wächter and Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems
-// (2019), chapter 6, section 6.2: move the origin off the surface along the geometric normal by a
+// (2019), chapter 6: move the origin off the surface along the geometric normal by a
 // fixed number of units in the last place (ulps) of each coordinate, done as integer arithmetic on
 // the float's bits. The rounding error of a computed position grows with its magnitude exactly as
 // an ulp does, so one integer offset works at every scale with no scene-dependent epsilon, and
@@ -19,7 +19,7 @@
 
 namespace iblkit {
 
-// The chapter's constants (found empirically there, listing 6-1): coordinates with magnitude
+// The chapter's constants (chosen empirically there): coordinates with magnitude
 // below kOffsetOrigin move by kOffsetFloatScale * n; others by kOffsetIntScale * n ulps.
 inline constexpr float kOffsetOrigin = 1.0f / 32.0f;
 inline constexpr float kOffsetFloatScale = 1.0f / 65536.0f;
@@ -57,7 +57,7 @@ inline constexpr float kRayEpsilonRelative = 0x1p-16f;
 // q may lie just behind) does not count as an occluder. Also the tmin for an origin that is not a
 // surface point with a known normal. Not a substitute for offsetRayOrigin at a ray's start: a
 // grazing ray from a point just behind its surface stays behind it for far longer than any
-// epsilon (Wächter and Binder, section 6.1). `magnitude` is the largest absolute coordinate in
+// epsilon (as Wächter and Binder point out). `magnitude` is the largest absolute coordinate in
 // the scene (RayScene::rayEpsilon passes it); the result is a distance.
 inline float rayEpsilon(float magnitude) { return kRayEpsilonRelative * magnitude; }
 

@@ -78,7 +78,7 @@ class RayScene {
   bool occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float tmax) const;
 
   // The hit point recomputed from the triangle's corners and the barycentrics, which is more
-  // accurate than origin + t * direction (Wächter and Binder, Ray Tracing Gems chapter 6.2.1): the
+  // accurate than origin + t * direction (Wächter and Binder, Ray Tracing Gems chapter 6): the
   // point to pass to offsetRayOrigin. `hit` must be a hit of this scene.
   glm::vec3 surfacePoint(const Hit& hit) const;
 
