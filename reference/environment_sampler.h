@@ -1,0 +1,55 @@
+#pragma once
+// Importance sampling of a lat-long environment map (the reference path tracer's light sampler).
+//
+// Directions are drawn from a piecewise-constant density over the map's texels proportional to
+// luminance x sin(theta) (marginal over rows, conditional over columns: PiecewiseConstant2D), the
+// standard inverted-CDF construction (pbrt-v4 13.6 / Mitsuba 3 `envmap`). The density in (u, v)
+// becomes a density per steradian through the Jacobian of the lat-long map:
+//   pdf(w) = pdf_uv(u, v) / (2 pi^2 sin(theta)).
+// Lookups are bilinear, which spreads a texel's radiance into its neighbours; each texel's weight
+// is therefore the maximum luminance of its 3x3 neighbourhood (wrapped in longitude), so the pdf
+// is non-zero wherever the looked-up radiance is (no bias when used alone).
+//
+// MIS compensation (Karlik et al. 2019, "MIS Compensation: Optimizing Sampling Techniques in
+// Multiple Importance Sampling"; pbrt-v4's ImageInfiniteLight, Mitsuba 3's `mis_compensation`):
+// the mean weight is subtracted, keeping a floor of 0.1% of the mean, so directions that BRDF
+// sampling finds well are left to it. Only valid combined with BRDF sampling by MIS; it is skipped
+// for near-constant maps (max - min <= 1% of the mean), where it would leave almost nothing.
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "engine/core/distribution.h"
+#include "engine/core/environment_map.h"
+
+namespace iblkit {
+
+class EnvironmentSampler {
+ public:
+  // Keeps a reference to `map`, which must outlive the sampler.
+  explicit EnvironmentSampler(const EnvironmentMap& map, bool misCompensation = false);
+
+  struct Sample {
+    glm::vec3 direction{0.0f};  // world direction, unit length
+    glm::vec3 radiance{0.0f};   // map.radiance(direction)
+    float pdf = 0.0f;           // per steradian; 0 only at the exact poles
+  };
+  // Draws a direction from u in [0,1)^2.
+  Sample sample(glm::vec2 u) const;
+  // Density per steradian of sampling world direction w (any non-zero length).
+  float pdf(const glm::vec3& worldDirection) const;
+
+  // True when the map is black everywhere: the sampler then samples uniformly in (u, v).
+  bool isBlack() const { return black_; }
+  bool misCompensated() const { return compensated_; }
+
+ private:
+  static std::vector<float> texelWeights(const EnvironmentMap& map, bool misCompensation, bool* compensated);
+
+  const EnvironmentMap& map_;
+  bool compensated_ = false;
+  bool black_ = false;
+  PiecewiseConstant2D distribution_;
+};
+
+}  // namespace iblkit

@@ -1,0 +1,178 @@
+#include "reference/environment_sampler.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include "engine/core/environment_map_file.h"
+#include "engine/core/latlong.h"
+#include "support/chi2.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+constexpr int kChi2Tests = 5;  // Sidak correction over the suite
+
+test::Chi2Options chi2Options(const std::string& name) {
+  test::Chi2Options options;
+  options.name = name;
+  options.testCount = kChi2Tests;
+  // Bin in theta so the rows of a small map are resolved near the poles, and refine the
+  // quadrature: the pdf is a step function on the map's texels.
+  options.sphereBinning = test::SphereBinning::Theta;
+  options.integrationPanels = 8;
+  return options;
+}
+
+// The harness bins about +Z; the lat-long map's poles (where its density per steradian has the
+// integrable 1/sin(theta) of the parameterisation) are on +-Y. The cyclic permutation (x, y, z) ->
+// (z, x, y), a rotation, puts them on the harness's poles, where its sin(theta) Jacobian cancels it.
+glm::vec3 toHarness(const glm::vec3& d) { return glm::vec3(d.z, d.x, d.y); }
+glm::vec3 fromHarness(const glm::vec3& h) { return glm::vec3(h.y, h.z, h.x); }
+
+test::Chi2Result runChi2(const EnvironmentSampler& sampler, const std::string& name) {
+  return test::chi2TestSphere(
+      [&](PCG32& rng) { return std::optional(toHarness(sampler.sample(rng.uniform2D()).direction)); },
+      [&](const glm::vec3& h) { return double(sampler.pdf(fromHarness(h))); }, chi2Options(name));
+}
+
+// Integral of the map's (bilinear) radiance over the sphere by the midpoint rule in (theta, phi).
+glm::dvec3 radianceIntegral(const EnvironmentMap& map, int thetaSteps) {
+  glm::dvec3 sum(0.0);
+  const double pi = glm::pi<double>(), dPhi = pi / thetaSteps;
+  for (int i = 0; i < thetaSteps; ++i) {
+    const double t0 = pi * i / thetaSteps, t1 = pi * (i + 1) / thetaSteps, t = 0.5 * (t0 + t1);
+    for (int j = 0; j < 2 * thetaSteps; ++j) {
+      const double phi = (j + 0.5) * dPhi;
+      const glm::vec3 d(std::sin(t) * std::cos(phi), std::cos(t), std::sin(t) * std::sin(phi));
+      sum += glm::dvec3(map.radiance(d)) * (dPhi * (std::cos(t0) - std::cos(t1)));
+    }
+  }
+  return sum;
+}
+
+// A synthetic map with a bright soft spot and a dim gradient: smooth but far from constant.
+EnvironmentMap spotMap() {
+  const glm::vec3 spot = glm::normalize(glm::vec3(0.3f, 0.6f, -0.7f));
+  EnvironmentMap map = EnvironmentMap::fromImage(
+      latLongFromRadiance(64, 32, 2,
+                          [&](const glm::vec3& d) {
+                            const float c = std::max(0.0f, glm::dot(d, spot));
+                            return glm::vec3(0.2f + 0.1f * d.y) +
+                                   glm::vec3(40.0f, 30.0f, 20.0f) * std::pow(c, 64.0f);
+                          }),
+      "spot");
+  map.setRotationDegrees(35.0f);
+  map.setIntensity(2.0f);
+  return map;
+}
+
+TEST(EnvironmentSampler, OneHotPixelPassesChiSquare) {
+  const EnvironmentMap map = EnvironmentMap::hotPixel(32, 9, 5, glm::vec3(100.0f));
+  const EnvironmentSampler sampler(map);
+  const test::Chi2Result r = runChi2(sampler, "env_one_hot");
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(EnvironmentSampler, ConstantMapPassesChiSquareAndIsUniformOverSolidAngle) {
+  const EnvironmentMap map = EnvironmentMap::constant(glm::vec3(1.0f), 32);
+  const EnvironmentSampler sampler(map);
+  const test::Chi2Result r = runChi2(sampler, "env_constant");
+  EXPECT_TRUE(r.passed) << r.message;
+  // Every row's weight is sin(theta) at its centre: close to 1/(4 pi) away from the poles.
+  EXPECT_NEAR(sampler.pdf(glm::vec3(1, 0, 0)), 1.0f / (4.0f * glm::pi<float>()), 2e-3f);
+}
+
+TEST(EnvironmentSampler, RotatedScaledMapPassesChiSquareWithAndWithoutCompensation) {
+  const EnvironmentMap map = spotMap();
+  const EnvironmentSampler plain(map), compensated(map, true);
+  EXPECT_FALSE(plain.misCompensated());
+  EXPECT_TRUE(compensated.misCompensated());
+  const test::Chi2Result a = runChi2(plain, "env_spot");
+  EXPECT_TRUE(a.passed) << a.message;
+  const test::Chi2Result b = runChi2(compensated, "env_spot_compensated");
+  EXPECT_TRUE(b.passed) << b.message;
+}
+
+TEST(EnvironmentSampler, RealMapPassesChiSquare) {
+  const std::filesystem::path file = test::assetsDir() / "hdri" / "sky.exr";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "assets not fetched: " << file;
+  // Box-downsampled to 128x64 so the quadrature of the step-function pdf stays quick; the
+  // content (a sun and sky) is the real map's.
+  const EnvironmentMap full = loadEnvironmentMap(file);
+  EnvironmentMap map = EnvironmentMap::fromImage(downsample2x(downsample2x(full.image())), file);
+  map.setRotationDegrees(-60.0f);
+  const EnvironmentSampler sampler(map);
+  const test::Chi2Result r = runChi2(sampler, "env_sky");
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(EnvironmentSampler, SampledPdfMatchesPdfAndEstimatorIsUnbiased) {
+  const EnvironmentMap map = spotMap();
+  const EnvironmentSampler sampler(map);
+  PCG32 rng(3, 5);
+  glm::dvec3 estimate(0.0);
+  const int n = 200000;
+  int mismatches = 0;  // a sample a rounding step from a texel edge may look up the next texel
+  for (int i = 0; i < n; ++i) {
+    const EnvironmentSampler::Sample s = sampler.sample(rng.uniform2D());
+    ASSERT_GT(s.pdf, 0.0f);
+    ASSERT_NEAR(glm::length(s.direction), 1.0f, 1e-5f);
+    mismatches += std::abs(sampler.pdf(s.direction) - s.pdf) > 1e-3f * s.pdf ? 1 : 0;
+    estimate += glm::dvec3(s.radiance / s.pdf);
+  }
+  EXPECT_LE(mismatches, n / 10000);
+  estimate /= double(n);
+  const glm::dvec3 truth = radianceIntegral(map, 512);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(estimate[c], truth[c], 0.005 * truth[c]) << "channel " << c;
+}
+
+TEST(EnvironmentSampler, PdfIntegratesToOne) {
+  const EnvironmentMap map = spotMap();
+  for (const bool compensated : {false, true}) {
+    const EnvironmentSampler sampler(map, compensated);
+    double integral = 0.0;
+    const int steps = 512;
+    const double pi = glm::pi<double>(), dPhi = pi / steps;
+    for (int i = 0; i < steps; ++i) {
+      const double t0 = pi * i / steps, t1 = pi * (i + 1) / steps, t = 0.5 * (t0 + t1);
+      for (int j = 0; j < 2 * steps; ++j) {
+        const double phi = (j + 0.5) * dPhi;
+        const glm::vec3 d(std::sin(t) * std::cos(phi), std::cos(t), std::sin(t) * std::sin(phi));
+        integral += sampler.pdf(d) * dPhi * (std::cos(t0) - std::cos(t1));
+      }
+    }
+    EXPECT_NEAR(integral, 1.0, 2e-3) << (compensated ? "compensated" : "plain");
+  }
+}
+
+TEST(EnvironmentSampler, OneHotWeightIsBounded) {
+  // With the whole pdf on the hot texel and its neighbours, L/pdf never exceeds the texel's
+  // power by more than the bilinear spread allows: no fireflies from the sampler itself.
+  const glm::vec3 radiance(100.0f);
+  const EnvironmentMap map = EnvironmentMap::hotPixel(32, 9, 5, radiance);
+  const EnvironmentSampler sampler(map);
+  const float power = radiance.x * map.texelSolidAngle(5);
+  PCG32 rng(11, 1);
+  float maxWeight = 0.0f;
+  for (int i = 0; i < 100000; ++i) {
+    const EnvironmentSampler::Sample s = sampler.sample(rng.uniform2D());
+    maxWeight = std::max(maxWeight, s.radiance.x / s.pdf);
+  }
+  EXPECT_GT(maxWeight, 0.0f);
+  EXPECT_LT(maxWeight, 12.0f * power);
+}
+
+TEST(EnvironmentSampler, BlackMapSamplesUniformlyInUv) {
+  const EnvironmentMap map = EnvironmentMap::constant(glm::vec3(0.0f), 16);
+  const EnvironmentSampler sampler(map);
+  EXPECT_TRUE(sampler.isBlack());
+  const EnvironmentSampler::Sample s = sampler.sample(glm::vec2(0.3f, 0.5f));
+  EXPECT_TRUE(std::isfinite(s.pdf));
+  EXPECT_GT(s.pdf, 0.0f);
+  EXPECT_EQ(s.radiance, glm::vec3(0.0f));
+}
+
+}  // namespace
+}  // namespace iblkit
