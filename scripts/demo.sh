@@ -8,6 +8,11 @@ build=${1:-build}
 bin="$build/bin"
 out=out/demo
 mkdir -p "$out/maps"
+warnings="$out/warnings.log"
+: >"$warnings"
+
+# One number out of iblkit-info's one-line JSON.
+field() { sed -E "s/.*\"$2\":([^,}]*).*/\1/" <<<"$1"; }
 
 json="$out/report.json.tmp"
 echo '{"assets": [' >"$json"
@@ -15,19 +20,19 @@ first=1
 rows=""
 for map in assets/hdri/*.exr; do
   name=$(basename "$map" .exr)
-  "$bin/iblkit-info" "$map" --png "$out/maps/$name.png" >/dev/null
-  line=$("$bin/iblkit-info" --json "$map")
+  line=$("$bin/iblkit-info" --json --png "$out/maps/$name.png" "$map" 2>>"$warnings")
   [ $first -eq 1 ] || echo ',' >>"$json"
   first=0
   printf '%s' "$line" >>"$json"
-  rows+="<figure><img src=\"maps/$name.png\" width=\"256\" height=\"128\"><figcaption>$name<br><code>$("$bin/iblkit-info" "$map" | tail -n +2 | tr '\n' ' ')</code></figcaption></figure>"$'\n'
+  caption=$(printf 'max luminance %.4g, mean %.4g' "$(field "$line" maxLuminance)" "$(field "$line" meanLuminance)")
+  rows+="<figure><img src=\"maps/$name.png\" width=\"256\" height=\"128\"><figcaption><b>$name</b><br>$caption</figcaption></figure>"$'\n'
 done
 scene_rows=""
 for scene in assets/models/*.glb assets/scenes/*.json; do
-  line=$("$bin/iblkit-info" --json "$scene")
+  line=$("$bin/iblkit-info" --json "$scene" 2>>"$warnings")
   echo ',' >>"$json"
   printf '%s' "$line" >>"$json"
-  scene_rows+="<tr><td>$(basename "$scene")</td><td><code>$("$bin/iblkit-info" "$scene" | tail -n +2 | tr '\n' ' ')</code></td></tr>"$'\n'
+  scene_rows+="<tr><td>$(basename "$scene")</td><td>$(field "$line" meshes)</td><td>$(field "$line" vertices)</td><td>$(field "$line" triangles)</td><td>$(field "$line" camera)</td><td>$(field "$line" environment)</td></tr>"$'\n'
 done
 echo ']}' >>"$json"
 mv "$json" "$out/report.json"
@@ -44,8 +49,11 @@ Scoring of the real-time approximations against the path tracer will appear here
 <h2>Environment maps</h2>
 $rows
 <h2>Models and scenes</h2>
-<table>$scene_rows</table>
+<table><tr><th>file</th><th>meshes</th><th>vertices</th><th>triangles</th><th>camera</th><th>environment</th></tr>
+$scene_rows</table>
+<h2>Repairs</h2>
+<pre>$(cat "$warnings")</pre>
 </body></html>
 HTML
 mv "$out/report.html.tmp" "$out/report.html"
-echo "demo: wrote $out/report.html and $out/report.json"
+echo "demo: wrote $out/report.html and $out/report.json ($(wc -l <"$warnings") loader warnings in $warnings)"

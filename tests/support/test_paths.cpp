@@ -1,11 +1,11 @@
 #include "support/test_paths.h"
 
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
-#include <sys/wait.h>
-
-#include <gtest/gtest.h>
 
 namespace iblkit::test {
 
@@ -33,7 +33,8 @@ std::filesystem::path scratchDir() {
 }
 
 int runCommand(const std::string& command, std::string* output) {
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  // Grouped, so redirections inside `command` apply first and the rest of stderr joins stdout.
+  FILE* pipe = popen(("{ " + command + "; } 2>&1").c_str(), "r");
   if (!pipe) return -1;
   std::array<char, 4096> buffer{};
   std::string text;

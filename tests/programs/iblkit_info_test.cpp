@@ -1,0 +1,133 @@
+// End-to-end: the iblkit-info program on the whole broken-file corpus (tests/data/bad) and on
+// every fetched asset. Each broken file must give exactly one error line on stderr that names the
+// file (after any warnings about what was repaired on the way), and a non-zero exit status; files
+// the loaders repair (NaN pixels) give a warning and exit 0.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+std::string info(const std::string& arguments, int* status) {
+  std::string output;
+  *status = test::runCommand((test::binDir() / "iblkit-info").string() + " " + arguments, &output);
+  return output;
+}
+
+std::string quoted(const std::filesystem::path& p) {
+  std::string text = "'";
+  text += p.string();
+  text += "'";
+  return text;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream stream(text);
+  for (std::string line; std::getline(stream, line);) out.push_back(line);
+  return out;
+}
+
+// Files whose defects the loaders repair with a warning instead of refusing them.
+const std::set<std::string> kRepaired = {"nan_pixels.exr"};
+
+TEST(IblkitInfo, EveryBrokenFileGetsOneLineNamingItAndAFailingExit) {
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::dataDir() / "bad")) {
+    const std::filesystem::path file = entry.path();
+    const std::string name = file.filename().string();
+    if (file.extension() == ".py" || kRepaired.count(name)) continue;
+    int status = 0;
+    // stdout is discarded: the one line must be the error on stderr.
+    const std::string output = info(quoted(file) + " >/dev/null", &status);
+    EXPECT_EQ(status, 1) << name << ": " << output;
+    const std::vector<std::string> printed = lines(output);
+    ASSERT_FALSE(printed.empty()) << name;
+    EXPECT_EQ(printed.back().rfind("iblkit-info: " + file.string() + ": ", 0), 0u) << name << ": " << output;
+    for (std::size_t i = 0; i + 1 < printed.size(); ++i)
+      EXPECT_EQ(printed[i].rfind(file.string() + ": warning: ", 0), 0u) << name << ": " << output;
+    ++checked;
+  }
+  EXPECT_GE(checked, 19);
+}
+
+TEST(IblkitInfo, RepairedPixelsWarnAndSucceed) {
+  const std::filesystem::path file = test::dataDir() / "bad" / "nan_pixels.exr";
+  int status = 0;
+  const std::string output = info(quoted(file) + " >/dev/null", &status);
+  EXPECT_EQ(status, 0);
+  EXPECT_EQ(output, file.string() + ": warning: 3 NaN, 1 Inf and 2 negative pixel values set to 0\n");
+}
+
+TEST(IblkitInfo, GoodFilesStillPrintWhenABadOneFails) {
+  const std::filesystem::path good = test::dataDir() / "bad" / "nan_pixels.exr";
+  const std::filesystem::path bad = test::dataDir() / "bad" / "garbage.exr";
+  int status = 0;
+  const std::string output = info("--json " + quoted(bad) + " " + quoted(good) + " 2>/dev/null", &status);
+  EXPECT_EQ(status, 1);
+  const nlohmann::json d = nlohmann::json::parse(output);
+  EXPECT_EQ(d["file"], good.string());
+  EXPECT_EQ(d["kind"], "image");
+}
+
+TEST(IblkitInfo, AllEighteenEnvironmentMapsAndBothModelsLoad) {
+  const std::filesystem::path assets = test::assetsDir();
+  if (!std::filesystem::exists(assets / "hdri")) GTEST_SKIP() << "assets not fetched";
+  int maps = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(assets / "hdri")) {
+    int status = 0;
+    const nlohmann::json d =
+        nlohmann::json::parse(info("--json " + quoted(entry.path()) + " 2>/dev/null", &status));
+    EXPECT_EQ(status, 0);
+    EXPECT_EQ(d["width"], 512);
+    EXPECT_EQ(d["height"], 256);
+    EXPECT_GT(d["maxLuminance"].get<float>(), 1.0f) << entry.path();
+    EXPECT_GT(d["meanLuminance"].get<float>(), 0.0f) << entry.path();
+    ++maps;
+  }
+  EXPECT_EQ(maps, 18);
+  for (const auto& [model, vertices] : {std::pair{"bunny.glb", 2826}, std::pair{"suzi.glb", 7503}}) {
+    int status = 0;
+    const nlohmann::json d =
+        nlohmann::json::parse(info("--json " + quoted(assets / "models" / model), &status));
+    EXPECT_EQ(status, 0);
+    EXPECT_EQ(d["vertices"], vertices);
+  }
+}
+
+TEST(IblkitInfo, BundledScenesLoad) {
+  const std::filesystem::path scenes = test::assetsDir() / "scenes";
+  if (!std::filesystem::exists(test::assetsDir() / "models")) GTEST_SKIP() << "assets not fetched";
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(scenes)) {
+    int status = 0;
+    const std::string output = info("--json " + quoted(entry.path()) + " 2>/dev/null", &status);
+    ASSERT_EQ(status, 0) << entry.path() << ": " << output;
+    const nlohmann::json d = nlohmann::json::parse(output);
+    EXPECT_EQ(d["groundMeshes"], 1) << entry.path();
+    EXPECT_TRUE(std::filesystem::exists(scenes / d["environment"].get<std::string>()) ||
+                std::filesystem::exists(d["environment"].get<std::string>()))
+        << entry.path();
+    ++count;
+  }
+  EXPECT_GE(count, 2);
+}
+
+TEST(IblkitInfo, PngPreviewNeedsOneImage) {
+  int status = 0;
+  const std::string output = info("--png /tmp/x.png a.exr b.exr", &status);
+  EXPECT_EQ(status, 2);
+  EXPECT_EQ(output, "iblkit-info: --png needs exactly one image file\n");
+}
+
+}  // namespace
+}  // namespace iblkit
