@@ -22,7 +22,6 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <thread>
 
 #include "baker/baked_scene_gltf.h"
 #include "baker/output_directory.h"
