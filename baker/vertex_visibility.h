@@ -1,0 +1,78 @@
+#pragma once
+// Per-vertex visibility of the environment, baked with Embree rays (docs/baker.md): ambient
+// occlusion, the bent normal and the order-3 spherical-harmonic shadowed diffuse transfer vector,
+// all estimated from one set of cosine-distributed rays per vertex.
+//
+// Sampling: for each vertex, `rayCount` points of the Owen-scrambled Sobol (0,2)-sequence
+// (low_discrepancy.h), scrambled by a hash of (seed, mesh, vertex), are warped to the
+// cosine-weighted hemisphere about the vertex normal (Malley's method, sampling.h). Each ray
+// starts at the vertex moved off the surface by offsetRayOrigin (ray_offset.h) along the vertex
+// normal and is tested with rtcOccluded1 against every mesh (the ground included) up to
+// `maxDistance`. The result depends only on the scene, the seed and the ray count, not on the
+// number of threads.
+//
+// One-ring rejection: a direction below the plane of one of the triangles around the vertex
+// points into the surface the vertex lies on, and from an origin just off the vertex it could
+// slip past that triangle's edge. Such a direction is re-drawn as the same point of an
+// independently scrambled copy of the point set, up to kMaxRedraws times; a direction still
+// rejected then counts as occluded. Re-drawing (rather than counting as occluded) keeps a convex vertex at AO = 1: its
+// real hemisphere is open, only the tessellated one-ring clips the horizon.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "engine/core/mesh.h"
+#include "engine/core/spherical_harmonics.h"
+
+namespace iblkit {
+
+// How often a rejected direction is re-drawn before it counts as occluded.
+inline constexpr int kMaxRedraws = 8;
+
+struct VisibilitySettings {
+  int rayCount = 256;        // rays per vertex, >= 1 (a power of two keeps the Sobol points a net)
+  float maxDistance = 0.0f;  // an occluder farther than this (world units) is ignored; 0 = infinite
+  std::uint32_t seed = 0;    // scrambling seed: the same seed gives bit-identical results
+  // Called with (vertices done, total vertices) from the worker threads while the bake runs,
+  // possibly concurrently: it must be thread-safe. May be empty.
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+// The visibility of every vertex of one mesh, in the mesh's vertex order.
+struct MeshVisibility {
+  // Ambient occlusion: the fraction of cosine-weighted rays that escape, in [0, 1]; 1 = open sky.
+  std::vector<float> ambientOcclusion;
+  // Bent normal: the normalised mean of the escaping directions (the vertex normal when none
+  // escapes). Unit length, world space.
+  std::vector<glm::vec3> bentNormals;
+  // Length of that mean (sum of escaping directions / number of escaping rays), in [0, 1]: 2/3
+  // for an open cosine-weighted hemisphere, larger for a narrower visibility cone; 0 when no ray
+  // escapes.
+  std::vector<float> bentNormalLengths;
+  // Shadowed diffuse transfer (Sloan, Kautz and Snyder 2002, "Precomputed Radiance Transfer",
+  // section 5, eq. 7): t_k = integral of Y_k(w) V(w) max(0, n.w) dw, estimated with the cosine
+  // pdf cos/pi as (pi / N) * sum over escaping rays of Y_k(w) (shBasis9's basis and order).
+  // Lambert radiance under an environment with radiance coefficients L_k is
+  // rho / pi * sum_k t_k L_k; unshadowed, t_k = A_l Y_k(n) (Ramamoorthi and Hanrahan 2001).
+  std::vector<ShBasis9> transfer;
+};
+
+struct VisibilityStatistics {
+  std::size_t vertices = 0;
+  std::size_t rays = 0;      // occlusion rays traced
+  std::size_t rejected = 0;  // directions below the one-ring that were re-drawn or dropped
+};
+
+// Bakes every vertex of every mesh, all meshes occluding each other. Runs in parallel over the
+// vertices with TBB (the caller's task arena decides the thread count). Meshes must have one
+// unit normal per position (Scene loading guarantees it). Throws Error("vertex visibility: ...")
+// for a ray count below 1, a negative or non-finite maxDistance, or missing normals, and the
+// RayScene errors for bad geometry (no triangles, non-finite positions).
+std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes,
+                                                 const VisibilitySettings& settings,
+                                                 VisibilityStatistics* statistics = nullptr);
+
+}  // namespace iblkit

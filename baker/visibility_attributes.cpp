@@ -1,0 +1,56 @@
+#include "baker/visibility_attributes.h"
+
+#include <string>
+
+#include "engine/core/error.h"
+
+namespace iblkit {
+
+namespace {
+
+constexpr const char* kSubject = "vertex visibility attributes";
+
+}  // namespace
+
+void attachVisibilityAttributes(std::vector<Mesh>& meshes, const std::vector<MeshVisibility>& visibility) {
+  if (meshes.size() != visibility.size())
+    fail(kSubject,
+         std::to_string(visibility.size()) + " results for " + std::to_string(meshes.size()) + " meshes");
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    Mesh& mesh = meshes[m];
+    const MeshVisibility& v = visibility[m];
+    const std::size_t n = mesh.vertexCount();
+    if (v.ambientOcclusion.size() != n || v.bentNormals.size() != n || v.bentNormalLengths.size() != n ||
+        v.transfer.size() != n)
+      fail(kSubject, "mesh " + std::to_string(m) + " has " + std::to_string(n) +
+                         " vertices but its results have a different count");
+    VertexAttribute bent{3, std::vector<float>(3 * n)};
+    VertexAttribute transfer[3] = {
+        {3, std::vector<float>(3 * n)}, {3, std::vector<float>(3 * n)}, {3, std::vector<float>(3 * n)}};
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int c = 0; c < 3; ++c) bent.data[3 * i + c] = v.bentNormals[i][c];
+      for (int k = 0; k < kShCoefficients; ++k) transfer[k / 3].data[3 * i + k % 3] = v.transfer[i][k];
+    }
+    mesh.attributes[kAmbientOcclusionAttribute] = {1, v.ambientOcclusion};
+    mesh.attributes[kBentNormalAttribute] = std::move(bent);
+    mesh.attributes[kBentLengthAttribute] = {1, v.bentNormalLengths};
+    for (int a = 0; a < 3; ++a) mesh.attributes[kTransferAttributes[a]] = std::move(transfer[a]);
+  }
+}
+
+ShBasis9 transferFromAttributes(const Mesh& mesh, std::size_t vertex) {
+  ShBasis9 t{};
+  for (int a = 0; a < 3; ++a) {
+    const auto found = mesh.attributes.find(kTransferAttributes[a]);
+    if (found == mesh.attributes.end())
+      fail(kSubject, std::string("mesh '") + mesh.name + "' has no " + kTransferAttributes[a]);
+    const VertexAttribute& attribute = found->second;
+    if (attribute.componentCount != 3 || attribute.data.size() < 3 * (vertex + 1))
+      fail(kSubject, std::string(kTransferAttributes[a]) + " of mesh '" + mesh.name +
+                         "' is not VEC3 or has no vertex " + std::to_string(vertex));
+    for (int c = 0; c < 3; ++c) t[3 * a + c] = attribute.data[3 * vertex + c];
+  }
+  return t;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,152 @@
+// End-to-end tests of the iblkit-bake program: the built binary on scenes written to a scratch folder.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "baker/visibility_attributes.h"
+#include "engine/core/gltf_load.h"
+#include "engine/core/procedural_mesh.h"
+#include "support/gltf_builder.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+// models/ball.glb (a UV sphere of radius 0.5 around the origin) and scene.json placing it at
+// height 0.5 on the default ground.
+fs::path writeBallScene(const fs::path& root) {
+  const ProceduralMesh ball = uvSphere(glm::vec3(0.0f), 0.5f, 8, 16);
+  test::GltfBuilder builder;
+  builder.addPrimitiveNode(
+      {{"attributes",
+        {{"POSITION", builder.addFloats(ball.positions)}, {"NORMAL", builder.addFloats(ball.normals)}}},
+       {"indices", builder.addIndices(ball.indices)}});
+  fs::create_directories(root / "models");
+  builder.write(root / "models" / "ball.glb", test::GltfBuilder::Storage::Glb);
+  const fs::path scene = root / "scene.json";
+  std::ofstream(scene) << R"({"models": [{"file": "models/ball.glb", "translation": [0, 0.5, 0],
+    "material": {"baseColor": [0.8, 0.7, 0.6], "metallic": 0}}], "ground": {},
+    "camera": {"position": [0, 1, 4], "target": [0, 0.5, 0]}})";
+  return scene;
+}
+
+std::string bake(const std::string& arguments, int* status) {
+  std::string output;
+  *status = test::runCommand((test::binDir() / "iblkit-bake").string() + " " + arguments, &output);
+  return output;
+}
+
+// Entries of `folder` whose names contain ".tmp-" or ".old-": leftovers of an unfinished bake.
+int leftovers(const fs::path& folder) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    count += name.find(".tmp-") != std::string::npos || name.find(".old-") != std::string::npos;
+  }
+  return count;
+}
+
+TEST(IblkitBake, WritesTheBakedSceneAndTheReport) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out";
+  int status = 0;
+  const std::string log = bake(scene.string() + " -o " + out.string() + " --ao-rays 32 --seed 3", &status);
+  ASSERT_EQ(status, 0) << log;
+  EXPECT_EQ(leftovers(root), 0);
+
+  const GltfContents baked = loadGltf(out / "scene.glb");
+  ASSERT_EQ(baked.meshes.size(), 2u);  // the ball and the ground, in world space
+  EXPECT_EQ(baked.meshes[0].vertexCount(), 2u + 7u * 16u);
+  EXPECT_EQ(baked.meshes[0].bounds().min.y, 0.0f);
+  EXPECT_EQ(baked.meshes[1].name, "ground");
+  EXPECT_EQ(baked.materials[baked.meshes[0].material].baseColor, glm::vec3(0.8f, 0.7f, 0.6f));
+  ASSERT_TRUE(baked.camera.has_value());
+  EXPECT_EQ(baked.camera->position, glm::vec3(0.0f, 1.0f, 4.0f));
+  std::size_t vertices = 0;
+  for (const Mesh& mesh : baked.meshes) {
+    vertices += mesh.vertexCount();
+    ASSERT_EQ(mesh.attributes.size(), 6u) << mesh.name;
+    const auto& ao = mesh.attributes.at("_AO");
+    const auto& bent = mesh.attributes.at("_BENTNORMAL");
+    EXPECT_EQ(ao.componentCount, 1);
+    EXPECT_EQ(bent.componentCount, 3);
+    EXPECT_EQ(mesh.attributes.at("_BENTLENGTH").componentCount, 1);
+    ASSERT_EQ(ao.data.size(), mesh.vertexCount());
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+      EXPECT_GE(ao.data[v], 0.0f);
+      EXPECT_LE(ao.data[v], 1.0f);
+      EXPECT_NEAR(glm::length(glm::vec3(bent.data[3 * v], bent.data[3 * v + 1], bent.data[3 * v + 2])), 1.0f,
+                  1e-5f);
+      // t0 = Y0 * (pi/N) * escaping rays = Y0 * pi * AO.
+      EXPECT_NEAR(transferFromAttributes(mesh, v)[0], 0.282094792f * 3.14159265f * ao.data[v], 1e-5f);
+    }
+  }
+  // The ball's top pole is open sky, the ground under it is shadowed.
+  EXPECT_EQ(baked.meshes[0].attributes.at("_AO").data[0], 1.0f);
+
+  nlohmann::json report;
+  std::ifstream(out / "bake.json") >> report;
+  EXPECT_EQ(report["version"], "iblkit-bake 1");
+  EXPECT_EQ(report["inputs"]["scene"], scene.string());
+  EXPECT_TRUE(report["inputs"]["environment"].is_null());
+  EXPECT_EQ(report["parameters"]["ao_rays"], 32);
+  EXPECT_EQ(report["parameters"]["ao_distance"], 0.0);
+  EXPECT_EQ(report["parameters"]["seed"], 3);
+  EXPECT_EQ(report["counts"]["vertices"], vertices);
+  EXPECT_EQ(report["counts"]["rays"], 32 * vertices);
+  for (const char* stage : {"load_s", "visibility_s", "write_scene_s"})
+    EXPECT_GE(report["timings"][stage], 0.0) << stage;
+  EXPECT_GT(report["rays_per_second"], 0.0);
+}
+
+TEST(IblkitBake, ReplacesAnEarlierOutputOnlyAfterSuccess) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "stale.txt") << "from an earlier bake";
+  int status = 0;
+  std::string log = bake(scene.string() + " -o " + out.string() + " --ao-rays 4 --ao-distance 0.1", &status);
+  ASSERT_EQ(status, 0) << log;
+  EXPECT_FALSE(fs::exists(out / "stale.txt"));
+  EXPECT_TRUE(fs::exists(out / "scene.glb"));
+  EXPECT_EQ(leftovers(root), 0);
+
+  // A failing bake keeps the previous output as it was.
+  log = bake((root / "missing.json").string() + " -o " + out.string(), &status);
+  EXPECT_EQ(status, 1);
+  EXPECT_TRUE(fs::exists(out / "scene.glb"));
+  EXPECT_EQ(leftovers(root), 0);
+}
+
+TEST(IblkitBake, BadScenesGiveOneLineErrorsAndNoOutput) {
+  const fs::path root = test::scratchDir();
+  for (const char* model : {"nan_position.gltf", "points_only.gltf"})
+    fs::copy_file(test::dataDir() / "bad" / model, root / model);
+  const struct {
+    const char* model;
+    std::string error;
+  } cases[] = {
+      {"nan_position.gltf", "nan_position.gltf: mesh 0 primitive 0: non-finite vertex position"},
+      {"points_only.gltf", "points_only.gltf: no triangle meshes"},
+  };
+  for (const auto& c : cases) {
+    const fs::path scene = root / (std::string(c.model) + ".json");
+    std::ofstream(scene) << R"({"models": [{"file": ")" << c.model << R"("}], "ground": {}})";
+    int status = 0;
+    const std::string log = bake(scene.string() + " -o " + (root / "out").string(), &status);
+    EXPECT_EQ(status, 1);
+    // The error is the last line (the loader may warn before it: points_only.gltf's points).
+    EXPECT_TRUE(log.ends_with("\niblkit-bake: " + (root / c.error).string() + "\n") ||
+                log == "iblkit-bake: " + (root / c.error).string() + "\n")
+        << log;
+    EXPECT_FALSE(fs::exists(root / "out"));
+    EXPECT_EQ(leftovers(root), 0);
+  }
+}
+
+}  // namespace
+}  // namespace iblkit
