@@ -2,6 +2,7 @@
 // environment written to a scratch folder, rendered small.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "engine/core/image_io.h"
@@ -65,6 +66,25 @@ TEST_F(IblkitTrace, OverridesSizeAndEnvironment) {
   const Image beauty = readExr(dir_ / "out.exr");
   EXPECT_EQ(beauty.width(), 8);
   EXPECT_EQ(beauty.at(0, 0), glm::vec4(2.0f, 0.0f, 0.0f, 1.0f));
+}
+
+// A map with NaN pixels is repaired by the loader and a black one leaves only emission: both
+// render finite images, with a warning naming the file.
+TEST_F(IblkitTrace, BrokenAndBlackEnvironmentsRenderWithoutNaN) {
+  writeExr(dir_ / "black.exr", Image(16, 8, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)));
+  const std::pair<std::string, std::string> cases[] = {
+      {(test::dataDir() / "bad" / "nan_pixels.exr").string(),
+       "warning: 3 NaN, 1 Inf and 2 negative pixel values"},
+      {"black.exr", "black.exr: warning: environment is black everywhere: only emission will show"},
+  };
+  for (const auto& [environment, warning] : cases) {
+    std::string output;
+    ASSERT_EQ(trace("scene.json -o out.exr --spp 2 --env '" + environment + "'", &output), 0) << output;
+    EXPECT_NE(output.find(warning), std::string::npos) << output;
+    const Image image = readExr(dir_ / "out.exr");
+    for (const glm::vec4& pixel : image.pixels())
+      ASSERT_TRUE(std::isfinite(pixel.r) && std::isfinite(pixel.g) && std::isfinite(pixel.b)) << environment;
+  }
 }
 
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
