@@ -39,6 +39,7 @@ struct Options {
   std::uint32_t seed = 0;
   int threads = 0;
   float exposure = 0.0f;
+  std::optional<float> phongExponent;
 };
 
 // Fails early, before a long render, when an output cannot be written.
@@ -77,6 +78,11 @@ int run(const Options& options, const CLI::App& app) {
   integratorSettings.envSampling = parseEnvSampling(options.envSampling);
   integratorSettings.maxDepth = options.maxDepth;
   integratorSettings.aoDistance = options.aoDistance;
+  if (options.phongExponent) {
+    if (!std::isfinite(*options.phongExponent) || *options.phongExponent < 0.0f)
+      fail("--phong", "exponent must be finite and >= 0");
+    integratorSettings.phong = PhongLobe{*options.phongExponent};
+  }
   if (!options.bentNormal.empty() && integratorSettings.kind != IntegratorKind::AmbientOcclusion)
     fail("--bent-normal", "needs --integrator ao");
   for (const auto* file : {&options.output, &options.png, &options.albedo, &options.normal, &options.depth,
@@ -155,6 +161,8 @@ int main(int argc, char** argv) {
   app.add_flag("--mis-compensation", options.misCompensation, "MIS compensation in the environment sampler");
   app.add_option("--integrator", options.integrator, "path, direct or ao");
   app.add_option("--env-sampling", options.envSampling, "uniform, cosine, brdf, env or mis");
+  app.add_option("--phong", options.phongExponent,
+                 "every surface uses the modified Phong lobe of this exponent (sampling study)");
   app.add_option("--max-depth", options.maxDepth, "most scattering events of a path");
   app.add_option("--ao-distance", options.aoDistance, "ao: occluders farther away do not count");
   app.add_option("--spp", options.samplesPerPixel, "samples per pixel (per pass with --time)");

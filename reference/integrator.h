@@ -21,8 +21,10 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
+#include "engine/core/brdf.h"
 #include "engine/core/environment_map.h"
 #include "engine/core/ray.h"
 #include "reference/environment_sampler.h"
@@ -47,6 +49,10 @@ struct IntegratorSettings {
   EnvSampling envSampling = EnvSampling::Mis;
   int maxDepth = 16;  // scattering events of a path (path only; direct uses 1)
   float aoDistance = std::numeric_limits<float>::infinity();  // occluders farther away do not count
+  // Set: every surface reflects with the modified Phong lobe (brdf.h, Lafortune and Willems 1994)
+  // of this exponent, tinted by its base colour, instead of the glTF BRDF: the second material
+  // model of the sampling study (a lobe whose shape is known exactly).
+  std::optional<PhongLobe> phong;
 };
 
 // Everything one camera sample produces; the renderer averages these per pixel.
@@ -83,6 +89,13 @@ class Integrator {
   };
   // The environment strategy's direction at a point with shading normal n (not for brdf).
   LightSample sampleLight(const glm::vec3& n, glm::vec2 u) const;
+  // The surface reflection model: the glTF BRDF, or the Phong lobe when settings_.phong is set.
+  glm::vec3 evalReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+                           const glm::vec3& wi) const;
+  float pdfReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+                      const glm::vec3& wi) const;
+  BrdfSample sampleReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo, glm::vec2 u,
+                              float uLobe) const;
   void traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& result) const;
   void traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSample& result) const;
 

@@ -124,6 +124,25 @@ TEST(Integrator, PathCarriesLightBetweenSurfacesWhereDirectStops) {
   EXPECT_NEAR(path.beauty.stats().mean.g, 2.5f, 0.05f);
 }
 
+// The modified Phong lobe reflects all light at normal incidence (Lafortune and Willems 1994), so
+// the sphere's centre, seen head-on, is 1 under a uniform environment of 1; and every strategy
+// converges to the same image of a Phong sphere under the SH sky.
+TEST(Integrator, PhongLobeSphere) {
+  IntegratorSettings phong = integratorOf(IntegratorKind::Path);
+  phong.phong = PhongLobe{10.0f};
+  const RenderResult furnace =
+      renderWith(sphereScene(lambert(1.0f)), EnvironmentMap::constant(glm::vec3(1.0f)), phong, 32, 256);
+  for (int y = 15; y <= 16; ++y)
+    for (int x = 15; x <= 16; ++x) EXPECT_NEAR(furnace.beauty.at(x, y).g, 1.0f, 0.01f) << x << "," << y;
+  EXPECT_LT(furnace.beauty.at(16, 5).g, 0.95f);  // towards the rim the lobe dips below the horizon
+
+  const EnvironmentMap environment = shEnvironment(skySh());
+  const RenderResult mis = renderWith(sphereScene(lambert(0.8f)), environment, phong, 16, 256);
+  phong.envSampling = EnvSampling::Brdf;
+  const RenderResult brdf = renderWith(sphereScene(lambert(0.8f)), environment, phong, 16, 256);
+  EXPECT_NEAR(mis.beauty.stats().meanLuminance / brdf.beauty.stats().meanLuminance, 1.0, 0.01);
+}
+
 TEST(Integrator, AmbientOcclusionOfALoneSphereIsOne) {
   const RenderResult r = renderWith(sphereScene(lambert(0.5f)), EnvironmentMap::constant(glm::vec3(0.0f)),
                                     integratorOf(IntegratorKind::AmbientOcclusion), 16, 64);
