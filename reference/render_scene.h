@@ -1,7 +1,7 @@
 #pragma once
 // RenderScene: a core Scene (every mesh, the ground included) made traceable. The meshes go into
-// an Embree RayScene in scene order, so a hit's geometry id is the index of the mesh it hit, and
-// a hit is turned into the shading data the integrators need.
+// an Embree RayScene in scene order (meshes without triangles skipped), a table maps each
+// geometry id back to its mesh, and a hit is turned into the shading data the integrators need.
 
 #include <vector>
 
