@@ -1,0 +1,210 @@
+#include "reference/integrator.h"
+
+#include <algorithm>
+#include <glm/gtc/constants.hpp>
+
+#include "engine/core/brdf.h"
+#include "engine/core/error.h"
+#include "engine/core/frame.h"
+#include "engine/core/sampling.h"
+#include "raytrace/ray_offset.h"
+
+namespace iblkit {
+
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// Veach's power heuristic with beta = 2 for one sample of each of two strategies (Veach 1997,
+// eq. 9.13): the weight of the strategy whose density is pdfA.
+float powerHeuristic(float pdfA, float pdfB) {
+  const float a = pdfA * pdfA, b = pdfB * pdfB;
+  return a / (a + b);
+}
+
+float maxComponent(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+// The side of the surface a ray in direction `direction` leaves into.
+glm::vec3 sideFacing(const glm::vec3& geometricNormal, const glm::vec3& direction) {
+  return glm::dot(direction, geometricNormal) > 0.0f ? geometricNormal : -geometricNormal;
+}
+
+void recordFirstHit(const SurfacePoint& point, float distance, CameraSample& result) {
+  result.albedo = point.material->baseColor;
+  result.normal = point.shadingNormal;
+  result.distance = distance;
+  result.objectCoverage = point.isGround ? 0.0f : 1.0f;
+}
+
+}  // namespace
+
+IntegratorKind parseIntegratorKind(const std::string& name) {
+  if (name == "path") return IntegratorKind::Path;
+  if (name == "direct") return IntegratorKind::Direct;
+  if (name == "ao") return IntegratorKind::AmbientOcclusion;
+  fail("--integrator", "unknown integrator '" + name + "' (path, direct or ao)");
+}
+
+EnvSampling parseEnvSampling(const std::string& name) {
+  if (name == "uniform") return EnvSampling::Uniform;
+  if (name == "cosine") return EnvSampling::Cosine;
+  if (name == "brdf") return EnvSampling::Brdf;
+  if (name == "env") return EnvSampling::Env;
+  if (name == "mis") return EnvSampling::Mis;
+  fail("--env-sampling", "unknown strategy '" + name + "' (uniform, cosine, brdf, env or mis)");
+}
+
+Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environment,
+                       const EnvironmentSampler& environmentSampler, const IntegratorSettings& settings)
+    : scene_(scene),
+      environment_(environment),
+      environmentSampler_(environmentSampler),
+      settings_(settings) {}
+
+glm::vec3 Integrator::evalReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+                                     const glm::vec3& wi) const {
+  if (!settings_.phong) return evalBrdf(material, n, wo, wi);
+  return material.baseColor * evalPhongLobe(*settings_.phong, n, wo, wi);
+}
+
+float Integrator::pdfReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+                                const glm::vec3& wi) const {
+  return settings_.phong ? pdfPhongLobe(*settings_.phong, n, wo, wi) : pdfBrdf(material, n, wo, wi);
+}
+
+BrdfSample Integrator::sampleReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+                                        glm::vec2 u, float uLobe) const {
+  if (!settings_.phong) return sampleBrdf(material, n, wo, u, uLobe);
+  BrdfSample sample = samplePhongLobe(*settings_.phong, n, wo, u);
+  sample.weight *= material.baseColor;
+  return sample;
+}
+
+CameraSample Integrator::trace(const Ray& cameraRay, PixelSampler& sampler) const {
+  CameraSample result;
+  if (settings_.kind == IntegratorKind::AmbientOcclusion)
+    traceOcclusion(cameraRay, sampler, result);
+  else
+    traceRadiance(cameraRay, sampler, result);
+  return result;
+}
+
+Integrator::LightSample Integrator::sampleLight(const glm::vec3& n, glm::vec2 u) const {
+  LightSample sample;
+  switch (settings_.envSampling) {
+    case EnvSampling::Uniform:
+      sample.direction = sampleUniformSphere(u);
+      sample.pdf = uniformSpherePdf();
+      break;
+    case EnvSampling::Cosine: {
+      const glm::vec3 local = sampleCosineHemisphere(u);
+      sample.direction = Frame::fromZ(n).toWorld(local);
+      sample.pdf = cosineHemispherePdf(local.z);
+      break;
+    }
+    case EnvSampling::Env:
+    case EnvSampling::Mis: {
+      const EnvironmentSampler::Sample s = environmentSampler_.sample(u);
+      return {s.direction, s.radiance, s.pdf};
+    }
+    case EnvSampling::Brdf:
+      return sample;
+  }
+  sample.radiance = environment_.radiance(sample.direction);
+  return sample;
+}
+
+void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& result) const {
+  const EnvSampling strategy = settings_.envSampling;
+  const bool sampleLights = strategy != EnvSampling::Brdf;
+  const bool combine = strategy == EnvSampling::Mis;
+  const int maxDepth = settings_.kind == IntegratorKind::Direct ? 1 : settings_.maxDepth;
+  const RayScene& rays = scene_.rays();
+
+  glm::vec3 throughput(1.0f);
+  float previousPdf = 0.0f;   // BRDF pdf of the ray being traced
+  bool previousDelta = true;  // the camera ray, like a mirror ray, sees the environment directly
+  for (int depth = 0;; ++depth) {
+    const Hit hit = rays.intersect(ray, 0.0f, kInfinity);
+    ++result.rays;
+    if (!hit.hit) {
+      // The environment seen by a BRDF-sampled ray counts when BRDF sampling is a strategy of
+      // its own (brdf), MIS-weighted against the light strategy (mis), or fully after a delta
+      // bounce, which no light strategy can reach.
+      float weight = 0.0f;
+      if (previousDelta || strategy == EnvSampling::Brdf)
+        weight = 1.0f;
+      else if (combine)
+        weight = powerHeuristic(previousPdf, environmentSampler_.pdf(ray.direction));
+      if (weight > 0.0f) result.radiance += throughput * weight * environment_.radiance(ray.direction);
+      return;
+    }
+
+    const glm::vec3 wo = -ray.direction;
+    const SurfacePoint point = scene_.surfacePoint(hit, wo);
+    const Material& material = *point.material;
+    if (depth == 0) recordFirstHit(point, hit.t, result);
+    result.radiance += throughput * material.emissive;
+    if (depth == maxDepth) return;
+
+    // Every vertex draws the same numbers in the same order, used or not, so the dimensions of
+    // the sampler line up between samples (and the Sobol pairs go to the first vertex).
+    const glm::vec2 uLight = sampler.next2D();
+    const glm::vec2 uBrdf = sampler.next2D();
+    const float uLobe = sampler.next1D();
+    const float uRoulette = sampler.next1D();
+    const glm::vec3 n = point.shadingNormal, ng = point.geometricNormal;
+
+    if (sampleLights) {
+      const LightSample light = sampleLight(n, uLight);
+      const float cosTheta = glm::dot(n, light.direction);
+      // Directions below the triangle's plane are blocked by the surface itself.
+      if (light.pdf > 0.0f && cosTheta > 0.0f && glm::dot(light.direction, ng) > 0.0f &&
+          maxComponent(light.radiance) > 0.0f) {
+        const glm::vec3 f = evalReflection(material, n, wo, light.direction);
+        if (maxComponent(f) > 0.0f) {
+          ++result.rays;
+          if (!rays.occluded(offsetRayOrigin(point.position, ng), light.direction, 0.0f, kInfinity)) {
+            const float weight =
+                combine ? powerHeuristic(light.pdf, pdfReflection(material, n, wo, light.direction)) : 1.0f;
+            result.radiance += throughput * f * light.radiance * (cosTheta * weight / light.pdf);
+          }
+        }
+      }
+    }
+
+    const BrdfSample scattered = sampleReflection(material, n, wo, uBrdf, uLobe);
+    if (!scattered.valid()) return;
+    throughput *= scattered.weight;
+    previousPdf = scattered.pdf;
+    previousDelta = scattered.delta;
+    // Russian roulette (Arvo and Kirk 1990): continue with probability q, dividing by q.
+    if (depth + 1 >= kRussianRouletteDepth) {
+      const float q = std::min(0.95f, maxComponent(throughput));
+      if (uRoulette >= q) return;
+      throughput /= q;
+    }
+    ray = Ray{offsetRayOrigin(point.position, sideFacing(ng, scattered.wi)), scattered.wi};
+  }
+}
+
+void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSample& result) const {
+  const RayScene& rays = scene_.rays();
+  const Hit hit = rays.intersect(ray, 0.0f, kInfinity);
+  ++result.rays;
+  if (!hit.hit) {
+    result.radiance = glm::vec3(1.0f);
+    return;
+  }
+  const SurfacePoint point = scene_.surfacePoint(hit, -ray.direction);
+  recordFirstHit(point, hit.t, result);
+  const glm::vec3 direction =
+      Frame::fromZ(point.shadingNormal).toWorld(sampleCosineHemisphere(sampler.next2D()));
+  ++result.rays;
+  const glm::vec3 origin = offsetRayOrigin(point.position, sideFacing(point.geometricNormal, direction));
+  if (rays.occluded(origin, direction, 0.0f, settings_.aoDistance)) return;
+  result.radiance = glm::vec3(1.0f);
+  result.unoccludedDirection = direction;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,108 @@
+#pragma once
+// The integrators of the reference path tracer: what one camera ray sees.
+//
+//   path    unidirectional path tracing. At every non-delta vertex the environment is sampled
+//           directly (next-event estimation: a shadow ray, RayScene::occluded) and by the BRDF
+//           (sampleBrdf), the two combined with the power heuristic (Veach 1997, "Robust Monte
+//           Carlo Methods for Light Transport Simulation", chapter 9.2.4, beta = 2). A perfect
+//           mirror (delta lobe) has no NEE: the environment its reflected ray sees counts fully.
+//           Russian roulette on the throughput after kRussianRouletteDepth bounces; at most
+//           maxDepth scattering events.
+//   direct  the same estimator stopped after one scattering event: environment light reflected
+//           once, with visibility (plus emission of what the BRDF ray hits).
+//   ao      ambient occlusion: the fraction of cosine-weighted directions around the shading
+//           normal that no geometry within aoDistance blocks, as grey; 1 for rays that miss.
+//
+// --env-sampling selects which strategies estimate the environment at a vertex (the sampling
+// study): uniform (uniform sphere directions), cosine (cosine-weighted hemisphere about the
+// shading normal), env (environment importance sampling), brdf (BRDF sampling alone) each on its
+// own, or mis (env + brdf, power heuristic, the default). Whatever the strategy the path is
+// continued by BRDF sampling, so every choice converges to the same image.
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "engine/core/brdf.h"
+#include "engine/core/environment_map.h"
+#include "engine/core/ray.h"
+#include "reference/environment_sampler.h"
+#include "reference/pixel_sampler.h"
+#include "reference/render_scene.h"
+
+namespace iblkit {
+
+enum class IntegratorKind { Path, Direct, AmbientOcclusion };
+enum class EnvSampling { Uniform, Cosine, Brdf, Env, Mis };
+
+// Parse "path" | "direct" | "ao" and "uniform" | "cosine" | "brdf" | "env" | "mis"; anything else
+// throws Error("--integrator: unknown integrator 'x' (path, direct or ao)") and the like.
+IntegratorKind parseIntegratorKind(const std::string& name);
+EnvSampling parseEnvSampling(const std::string& name);
+
+// Bounces after which Russian roulette may end a path.
+inline constexpr int kRussianRouletteDepth = 3;
+
+struct IntegratorSettings {
+  IntegratorKind kind = IntegratorKind::Path;
+  EnvSampling envSampling = EnvSampling::Mis;
+  int maxDepth = 16;  // scattering events of a path (path only; direct uses 1)
+  float aoDistance = std::numeric_limits<float>::infinity();  // occluders farther away do not count
+  // Set: every surface reflects with the modified Phong lobe (brdf.h, Lafortune and Willems 1994)
+  // of this exponent, tinted by its base colour, instead of the glTF BRDF: the second material
+  // model of the sampling study (a lobe whose shape is known exactly).
+  std::optional<PhongLobe> phong;
+};
+
+// Everything one camera sample produces; the renderer averages these per pixel.
+struct CameraSample {
+  glm::vec3 radiance{0.0f};  // the estimate (ao: the visibility, grey)
+  // First-hit features (zero where the camera ray escapes): base colour, world shading normal,
+  // distance along the unit camera ray, and 1 for a non-ground object (the object mask).
+  glm::vec3 albedo{0.0f};
+  glm::vec3 normal{0.0f};
+  float distance = 0.0f;
+  float objectCoverage = 0.0f;
+  // ao only: the sampled direction if unoccluded, else zero (their mean is the bent normal).
+  glm::vec3 unoccludedDirection{0.0f};
+  std::uint32_t rays = 0;  // rays traced (closest-hit and shadow)
+};
+
+class Integrator {
+ public:
+  // `scene`, `environment` and `environmentSampler` must outlive the integrator.
+  // `environmentSampler` samples `environment` (used by the env and mis strategies).
+  Integrator(const RenderScene& scene, const EnvironmentMap& environment,
+             const EnvironmentSampler& environmentSampler, const IntegratorSettings& settings);
+
+  const IntegratorSettings& settings() const { return settings_; }
+
+  // What the camera ray (unit direction) sees, with random numbers from `sampler`.
+  CameraSample trace(const Ray& cameraRay, PixelSampler& sampler) const;
+
+ private:
+  struct LightSample {
+    glm::vec3 direction{0.0f};
+    glm::vec3 radiance{0.0f};
+    float pdf = 0.0f;  // per steradian; 0: no sample
+  };
+  // The environment strategy's direction at a point with shading normal n (not for brdf).
+  LightSample sampleLight(const glm::vec3& n, glm::vec2 u) const;
+  // The surface reflection model: the glTF BRDF, or the Phong lobe when settings_.phong is set.
+  glm::vec3 evalReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+                           const glm::vec3& wi) const;
+  float pdfReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+                      const glm::vec3& wi) const;
+  BrdfSample sampleReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo, glm::vec2 u,
+                              float uLobe) const;
+  void traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& result) const;
+  void traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSample& result) const;
+
+  const RenderScene& scene_;
+  const EnvironmentMap& environment_;
+  const EnvironmentSampler& environmentSampler_;
+  IntegratorSettings settings_;
+};
+
+}  // namespace iblkit

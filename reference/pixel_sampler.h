@@ -1,0 +1,43 @@
+#pragma once
+// PixelSampler: the random numbers of one camera sample, a pure function of (seed, pixel, sample
+// index). Nothing depends on which thread renders a pixel or in which order, so an image is the
+// same for a given seed whatever the thread count, and --time passes continue the sequence.
+//
+// The first kSobolPairs 2D draws (pixel position, then the first bounce's light and BRDF
+// directions, where stratification pays most) are points of the Owen-scrambled Sobol (0,2)
+// sequence (low_discrepancy.h), scrambled and index-shuffled per pixel and per draw. Everything else
+// comes from a PCG32 stream keyed by the pixel and the sample index.
+
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "engine/core/rng.h"
+
+namespace iblkit {
+
+// Mixes two 32-bit values into a well-distributed 32-bit hash ("lowbias32" finaliser by Chris
+// Wellons, "Prospecting for Hash Functions", 2018, applied to a ^ mixed(b)). Used to derive
+// per-pixel and per-dimension seeds.
+std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b);
+
+class PixelSampler {
+ public:
+  // Number of leading 2D draws taken from the scrambled Sobol sequence.
+  static constexpr int kSobolPairs = 3;
+
+  PixelSampler(std::uint32_t seed, std::uint32_t pixelIndex, std::uint32_t sampleIndex);
+
+  // The next point in [0,1)^2.
+  glm::vec2 next2D();
+  // The next number in [0,1) (always from PCG32: 1D choices such as lobe selection and Russian
+  // roulette gain little from stratification).
+  float next1D() { return rng_.uniformFloat(); }
+
+ private:
+  std::uint32_t pixelSeed_;
+  std::uint32_t sampleIndex_;
+  int pair_ = 0;
+  PCG32 rng_;
+};
+
+}  // namespace iblkit

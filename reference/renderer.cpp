@@ -1,0 +1,140 @@
+#include "reference/renderer.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.h"
+
+namespace iblkit {
+
+namespace {
+
+// Running sums of one pixel over its samples (double: millions of samples add up exactly enough).
+struct PixelSums {
+  glm::dvec3 radiance{0.0}, radianceSquared{0.0};
+  glm::dvec3 albedo{0.0}, normal{0.0}, unoccluded{0.0};
+  double distance = 0.0, coverage = 0.0;
+};
+
+void checkSettings(const RenderSettings& settings) {
+  const auto inRange = [](long long value, long long lo, long long hi) { return value >= lo && value <= hi; };
+  if (!inRange(settings.width, 1, kMaxImageSide) || !inRange(settings.height, 1, kMaxImageSide))
+    fail("render", "image size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                       " is outside 1.." + std::to_string(kMaxImageSide));
+  if (!inRange(settings.samplesPerPixel, 1, kMaxSamplesPerPixel))
+    fail("render", "samples per pixel " + std::to_string(settings.samplesPerPixel) + " is outside 1.." +
+                       std::to_string(kMaxSamplesPerPixel));
+  if (settings.threads < 0)
+    fail("render", "thread count " + std::to_string(settings.threads) + " is negative");
+}
+
+glm::vec4 grey(double value) { return glm::vec4(glm::vec3(static_cast<float>(value)), 1.0f); }
+glm::vec4 opaque(const glm::dvec3& rgb) { return glm::vec4(glm::vec3(rgb), 1.0f); }
+
+RenderResult resolve(const std::vector<PixelSums>& sums, const RenderSettings& settings, int samples) {
+  const int w = settings.width, h = settings.height;
+  RenderResult result;
+  for (Image* image : {&result.beauty, &result.albedo, &result.normal, &result.depth, &result.mask,
+                       &result.variance, &result.bentNormal})
+    *image = Image(w, h);
+  const double n = samples;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const PixelSums& s =
+          sums[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
+      const glm::dvec3 mean = s.radiance / n;
+      result.beauty.at(x, y) = opaque(mean);
+      // Unbiased sample variance, divided by n: the variance of the pixel's mean.
+      const glm::dvec3 sampleVariance =
+          samples > 1 ? glm::max(s.radianceSquared - n * mean * mean, glm::dvec3(0.0)) / (n - 1.0)
+                      : glm::dvec3(0.0);
+      result.variance.at(x, y) = opaque(sampleVariance / n);
+      result.albedo.at(x, y) = opaque(s.albedo / n);
+      const double normalLength = glm::length(s.normal);
+      result.normal.at(x, y) = opaque(normalLength > 0.0 ? s.normal / normalLength : glm::dvec3(0.0));
+      const double bentLength = glm::length(s.unoccluded);
+      result.bentNormal.at(x, y) = opaque(bentLength > 0.0 ? s.unoccluded / bentLength : glm::dvec3(0.0));
+      result.depth.at(x, y) = grey(s.distance / n);
+      result.mask.at(x, y) = grey(s.coverage / n);
+    }
+  result.samplesPerPixel = samples;
+  return result;
+}
+
+}  // namespace
+
+RenderResult render(const Integrator& integrator, const Camera& camera, const RenderSettings& settings,
+                    const RenderProgress& progress) {
+  checkSettings(settings);
+  const int w = settings.width, h = settings.height;
+  std::vector<PixelSums> sums(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  std::atomic<std::uint64_t> rays{0};
+  std::mutex progressMutex;
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
+  const double tileCount = static_cast<double>(tilesX) * tilesY;
+
+  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  int samples = 0;
+  do {
+    const int first = samples, last = std::min(samples + settings.samplesPerPixel, kMaxSamplesPerPixel);
+    std::atomic<int> tilesDone{0};
+    arena.execute([&] {
+      tbb::parallel_for(
+          tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), [&](const tbb::blocked_range2d<int>& r) {
+            for (int ty = r.rows().begin(); ty < r.rows().end(); ++ty)
+              for (int tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
+                std::uint64_t tileRays = 0;
+                for (int y = ty * kTileSize; y < std::min(h, (ty + 1) * kTileSize); ++y)
+                  for (int x = tx * kTileSize; x < std::min(w, (tx + 1) * kTileSize); ++x) {
+                    const auto pixel = static_cast<std::uint32_t>(y * w + x);
+                    PixelSums& s = sums[pixel];
+                    for (int i = first; i < last; ++i) {
+                      PixelSampler sampler(settings.seed, pixel, static_cast<std::uint32_t>(i));
+                      const glm::vec2 raster = glm::vec2(x, y) + sampler.next2D();
+                      const CameraSample c = integrator.trace(camera.primaryRay(raster, w, h), sampler);
+                      const glm::dvec3 radiance(c.radiance);
+                      s.radiance += radiance;
+                      s.radianceSquared += radiance * radiance;
+                      s.albedo += glm::dvec3(c.albedo);
+                      s.normal += glm::dvec3(c.normal);
+                      s.unoccluded += glm::dvec3(c.unoccludedDirection);
+                      s.distance += c.distance;
+                      s.coverage += c.objectCoverage;
+                      tileRays += c.rays;
+                    }
+                  }
+                rays += tileRays;
+                const int done = ++tilesDone;
+                if (progress) {
+                  const std::lock_guard lock(progressMutex);
+                  const double seconds = elapsed();
+                  const double fraction = settings.timeSeconds > 0.0
+                                              ? std::min(1.0, seconds / settings.timeSeconds)
+                                              : done / tileCount;
+                  progress(fraction, seconds);
+                }
+              }
+          });
+    });
+    samples = last;
+  } while (settings.timeSeconds > 0.0 && elapsed() < settings.timeSeconds && samples < kMaxSamplesPerPixel);
+
+  RenderResult result = resolve(sums, settings, samples);
+  result.seconds = elapsed();
+  result.rays = rays;
+  return result;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,53 @@
+#pragma once
+// The tile renderer: camera samples per pixel, averaged with a box filter, over TBB-parallel
+// 16 x 16 tiles. Each sample's random numbers depend only on (seed, pixel, sample index)
+// (PixelSampler), and each pixel is summed by one task in sample order, so the images are
+// identical for a given seed whatever the thread count.
+
+#include <cstdint>
+#include <functional>
+
+#include "engine/core/camera.h"
+#include "engine/core/image.h"
+#include "reference/integrator.h"
+
+namespace iblkit {
+
+inline constexpr int kTileSize = 16;
+// Largest accepted image side and sample count per pixel (Sobol indices stay exact in floats).
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr int kMaxSamplesPerPixel = 1 << 24;
+
+struct RenderSettings {
+  int width = 0, height = 0;
+  // Samples per pixel; with timeSeconds > 0, the size of each pass.
+  int samplesPerPixel = 64;
+  // > 0: render passes of samplesPerPixel until this many seconds have passed (at least one).
+  double timeSeconds = 0.0;
+  std::uint32_t seed = 0;
+  int threads = 0;  // 0: all hardware threads
+};
+
+struct RenderResult {
+  Image beauty;             // mean radiance, alpha 1
+  Image albedo, normal;     // mean first-hit base colour and shading normal (0 where nothing is hit)
+  Image depth;              // mean distance to the first hit, metres, grey (0 where nothing is hit)
+  Image mask;               // coverage of non-ground objects, grey in [0, 1]
+  Image variance;           // per channel variance of the beauty pixel's mean (sample variance / n)
+  Image bentNormal;         // ao: normalised mean unoccluded direction (0 where none)
+  int samplesPerPixel = 0;  // samples actually taken
+  double seconds = 0.0;
+  std::uint64_t rays = 0;  // closest-hit and shadow rays traced
+};
+
+// Called after each tile from whichever thread finished it, serialised: the fraction done
+// (of the samples, or of the time budget) and the seconds elapsed.
+using RenderProgress = std::function<void(double fraction, double seconds)>;
+
+// Renders through `camera`; pixel (i, j) averages primary rays through raster positions
+// (i, j) + u, u uniform in the pixel (a box filter). Throws Error("render: ...") for sizes outside
+// 1..kMaxImageSide, sample counts outside 1..kMaxSamplesPerPixel or a negative thread count.
+RenderResult render(const Integrator& integrator, const Camera& camera, const RenderSettings& settings,
+                    const RenderProgress& progress = {});
+
+}  // namespace iblkit

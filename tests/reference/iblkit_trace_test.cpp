@@ -1,0 +1,113 @@
+// End-to-end tests of the iblkit-trace program: a .json scene with a glTF cube and an OpenEXR
+// environment written to a scratch folder, rendered small.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "engine/core/image_io.h"
+#include "support/gltf_builder.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+class IblkitTrace : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::scratchDir();
+    test::GltfBuilder gltf;
+    const test::CubeGeometry cube = test::unitCube();
+    std::vector<glm::vec3> normals;
+    for (const glm::vec3& p : cube.positions) normals.push_back(glm::normalize(p - glm::vec3(0.5f)));
+    gltf.addPrimitiveNode(
+        {{"attributes", {{"POSITION", gltf.addFloats(cube.positions)}, {"NORMAL", gltf.addFloats(normals)}}},
+         {"indices", gltf.addIndices(cube.indices)}});
+    gltf.write(dir_ / "cube.glb", test::GltfBuilder::Storage::Glb);
+    writeExr(dir_ / "env.exr", Image(16, 8, glm::vec4(0.5f, 0.625f, 0.75f, 1.0f)));
+    std::ofstream(dir_ / "scene.json") << R"({"models": [{"file": "cube.glb"}], "ground": {},
+        "environment": {"file": "env.exr"}, "width": 24, "height": 16})";
+  }
+
+  // Runs iblkit-trace with `arguments` in the scratch folder; returns the exit status.
+  int trace(const std::string& arguments, std::string* output) const {
+    return test::runCommand(
+        "cd '" + dir_.string() + "' && '" + (test::binDir() / "iblkit-trace").string() + "' " + arguments,
+        output);
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(IblkitTrace, WritesTheBeautyLayersAndPreview) {
+  std::string output;
+  ASSERT_EQ(trace("scene.json -o out.exr --png out.png --mask mask.exr --depth depth.exr --spp 4 --threads 2",
+                  &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("24x16, 4 spp, "), std::string::npos) << output;
+  EXPECT_NE(output.find(" Mrays/s"), std::string::npos) << output;
+  const Image beauty = readExr(dir_ / "out.exr");
+  EXPECT_EQ(beauty.width(), 24);
+  EXPECT_EQ(beauty.height(), 16);
+  // The top-left corner sees the environment itself.
+  EXPECT_EQ(beauty.at(0, 0), glm::vec4(0.5f, 0.625f, 0.75f, 1.0f));
+  EXPECT_EQ(readPng(dir_ / "out.png").width(), 24);
+  EXPECT_GT(readExr(dir_ / "mask.exr").stats().max.r, 0.9f);
+  EXPECT_GT(readExr(dir_ / "depth.exr").stats().max.r, 0.0f);
+}
+
+TEST_F(IblkitTrace, OverridesSizeAndEnvironment) {
+  writeExr(dir_ / "red.exr", Image(16, 8, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f)));
+  std::string output;
+  ASSERT_EQ(
+      trace("scene.json -o out.exr --width 8 --height 4 --spp 1 --env red.exr --env-intensity 2", &output), 0)
+      << output;
+  const Image beauty = readExr(dir_ / "out.exr");
+  EXPECT_EQ(beauty.width(), 8);
+  EXPECT_EQ(beauty.at(0, 0), glm::vec4(2.0f, 0.0f, 0.0f, 1.0f));
+}
+
+// A map with NaN pixels is repaired by the loader and a black one leaves only emission: both
+// render finite images, with a warning naming the file.
+TEST_F(IblkitTrace, BrokenAndBlackEnvironmentsRenderWithoutNaN) {
+  writeExr(dir_ / "black.exr", Image(16, 8, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)));
+  const std::pair<std::string, std::string> cases[] = {
+      {(test::dataDir() / "bad" / "nan_pixels.exr").string(),
+       "warning: 3 NaN, 1 Inf and 2 negative pixel values"},
+      {"black.exr", "black.exr: warning: environment is black everywhere: only emission will show"},
+  };
+  for (const auto& [environment, warning] : cases) {
+    std::string output;
+    ASSERT_EQ(trace("scene.json -o out.exr --spp 2 --env '" + environment + "'", &output), 0) << output;
+    EXPECT_NE(output.find(warning), std::string::npos) << output;
+    const Image image = readExr(dir_ / "out.exr");
+    for (const glm::vec4& pixel : image.pixels())
+      ASSERT_TRUE(std::isfinite(pixel.r) && std::isfinite(pixel.g) && std::isfinite(pixel.b)) << environment;
+  }
+}
+
+TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"scene.json -o out.exr --spp 0", "iblkit-trace: render: samples per pixel 0 is outside 1..16777216\n"},
+      {"scene.json -o out.exr --width 20000",
+       "iblkit-trace: render: image size 20000x16 is outside 1..16384\n"},
+      {"scene.json -o out.exr --height -4", "iblkit-trace: render: image size 24x-4 is outside 1..16384\n"},
+      {"scene.json -o out.exr --integrator bidir",
+       "iblkit-trace: --integrator: unknown integrator 'bidir' (path, direct or ao)\n"},
+      {"scene.json -o out.exr --env missing.exr",
+       "iblkit-trace: missing.exr: cannot open: No such file or directory\n"},
+      {"scene.json -o nowhere/out.exr", "iblkit-trace: nowhere/out.exr: folder does not exist\n"},
+      {"scene.json -o out.exr --bent-normal b.exr", "iblkit-trace: --bent-normal: needs --integrator ao\n"},
+      {"scene.json", "iblkit-trace: --output is required\n"},
+  };
+  for (const auto& [arguments, expected] : cases) {
+    std::string output;
+    EXPECT_EQ(trace(arguments, &output), 1) << arguments;
+    EXPECT_EQ(output, expected) << arguments;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "out.exr"));
+}
+
+}  // namespace
+}  // namespace iblkit

@@ -1,0 +1,74 @@
+#pragma once
+// Scenes built in code for the reference tracer's tests: procedural meshes with known geometry
+// under analytic environments, rendered small so each test program stays fast.
+
+#include <glm/gtc/constants.hpp>
+#include <utility>
+
+#include "engine/core/environment_map.h"
+#include "engine/core/procedural_mesh.h"
+#include "engine/core/scene.h"
+#include "reference/environment_sampler.h"
+#include "reference/integrator.h"
+#include "reference/render_scene.h"
+#include "reference/renderer.h"
+
+namespace iblkit::test {
+
+// A Lambert material (specular 0, metallic 0) of the given grey albedo.
+inline Material lambert(float albedo) {
+  Material material;
+  material.baseColor = glm::vec3(albedo);
+  material.metallic = 0.0f;
+  material.specular = 0.0f;
+  material.roughness = 1.0f;
+  return material;
+}
+
+inline Mesh meshFrom(const ProceduralMesh& procedural, int material, bool isGround = false) {
+  Mesh mesh;
+  mesh.name = isGround ? "ground" : "object";
+  mesh.positions = procedural.positions;
+  mesh.normals = procedural.normals;
+  mesh.indices = procedural.indices;
+  mesh.material = material;
+  mesh.isGround = isGround;
+  return mesh;
+}
+
+// The finely tessellated unit sphere at the origin, seen from +Z at distance 4 (40 degree field
+// of view: the sphere fills about 70% of the image's height).
+inline Scene sphereScene(const Material& material) {
+  Scene scene;
+  scene.materials = {material};
+  scene.meshes = {meshFrom(uvSphere(glm::vec3(0.0f), 1.0f, 64, 128), 0)};
+  scene.bounds = objectBounds(scene.meshes);
+  scene.camera = Camera::lookAt(glm::vec3(0.0f, 0.0f, 4.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f),
+                                glm::radians(40.0f), 0.1f, 100.0f);
+  return scene;
+}
+
+// Renders `scene` under `environment` at width x height, spp samples per pixel.
+inline RenderResult renderWith(Scene scene, const EnvironmentMap& environment,
+                               const IntegratorSettings& integratorSettings, int size, int spp,
+                               std::uint32_t seed = 1, int threads = 2) {
+  const Camera camera = sceneCamera(scene, 1.0f);
+  const RenderScene renderScene(std::move(scene));
+  const EnvironmentSampler sampler(environment);
+  const Integrator integrator(renderScene, environment, sampler, integratorSettings);
+  RenderSettings settings;
+  settings.width = settings.height = size;
+  settings.samplesPerPixel = spp;
+  settings.seed = seed;
+  settings.threads = threads;
+  return render(integrator, camera, settings);
+}
+
+inline IntegratorSettings integratorOf(IntegratorKind kind, EnvSampling envSampling = EnvSampling::Mis) {
+  IntegratorSettings settings;
+  settings.kind = kind;
+  settings.envSampling = envSampling;
+  return settings;
+}
+
+}  // namespace iblkit::test
