@@ -61,15 +61,18 @@ float automaticShWindowCutoff(const SphericalHarmonics9& sh) {
   if (minimumIrradiance(windowSh9(sh, high), directions) >= 0.0f) return high;
   for (int step = 0; step < 16; ++step) {
     const float middle = 0.5f * (low + high);
-    (minimumIrradiance(windowSh9(sh, middle), directions) >= 0.0f ? low : high) = middle;
+    if (minimumIrradiance(windowSh9(sh, middle), directions) >= 0.0f)
+      low = middle;
+    else
+      high = middle;
   }
   return low;
 }
 
 namespace {
 
-// Shortest decimal text that reads back as the same float (JSON has no NaN/Inf; callers pass
-// finite values).
+// Decimal text with 9 significant digits, enough to read back the same float (JSON has no
+// NaN/Inf; the writer refuses them first).
 std::string number(float value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
