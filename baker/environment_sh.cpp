@@ -1,0 +1,169 @@
+#include "baker/environment_sh.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "engine/core/error.h"
+#include "engine/core/file_io.h"
+
+namespace iblkit {
+
+SphericalHarmonics9 projectEnvironmentSh9(const EnvironmentMap& environment) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<int>(0, environment.height()), SphericalHarmonics9{},
+      [&](const tbb::blocked_range<int>& rows, SphericalHarmonics9 sum) {
+        for (int y = rows.begin(); y != rows.end(); ++y) {
+          const float solidAngle = environment.texelSolidAngle(y);
+          for (int x = 0; x < environment.width(); ++x)
+            sum.accumulate(environment.texelDirection(x, y), environment.texelRadiance(x, y), solidAngle);
+        }
+        return sum;
+      },
+      [](SphericalHarmonics9 a, const SphericalHarmonics9& b) { return a += b; });
+}
+
+float minimumIrradiance(const SphericalHarmonics9& sh, std::span<const glm::vec3> directions) {
+  float minimum = INFINITY;
+  for (const glm::vec3& n : directions) {
+    const glm::vec3 e = sh.irradiance(n);
+    minimum = std::min({minimum, e.r, e.g, e.b});
+  }
+  return minimum;
+}
+
+std::vector<glm::vec3> fibonacciSphere(int count) {
+  // Point i at z = 1 - (2i + 1)/count (equal-area bands) and longitude i times the golden angle.
+  const float goldenAngle = glm::pi<float>() * (3.0f - std::sqrt(5.0f));
+  std::vector<glm::vec3> directions;
+  directions.reserve(static_cast<std::size_t>(std::max(count, 0)));
+  for (int i = 0; i < count; ++i) {
+    const float z = 1.0f - (2.0f * static_cast<float>(i) + 1.0f) / static_cast<float>(count);
+    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    const float phi = goldenAngle * static_cast<float>(i);
+    directions.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+  }
+  return directions;
+}
+
+float automaticShWindowCutoff(const SphericalHarmonics9& sh) {
+  const std::vector<glm::vec3> directions = fibonacciSphere(4096);
+  if (minimumIrradiance(sh, directions) >= 0.0f) return 0.0f;
+  // Invariant: cutoff `low` gives irradiance >= 0 (band 0 alone is pi L_0 Y_0 >= 0), `high` not.
+  float low = 1.0f, high = 64.0f;
+  if (minimumIrradiance(windowSh9(sh, high), directions) >= 0.0f) return high;
+  for (int step = 0; step < 16; ++step) {
+    const float middle = 0.5f * (low + high);
+    if (minimumIrradiance(windowSh9(sh, middle), directions) >= 0.0f)
+      low = middle;
+    else
+      high = middle;
+  }
+  return low;
+}
+
+namespace {
+
+// Decimal text with 9 significant digits, enough to read back the same float (JSON has no
+// NaN/Inf; the writer refuses them first).
+std::string number(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+  return text;
+}
+
+}  // namespace
+
+void writeSh9Json(const std::filesystem::path& path, const SphericalHarmonics9& sh, float windowCutoff) {
+  for (const glm::vec3& c : sh.coefficients)
+    if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
+      fail(path, "cannot write non-finite SH coefficients");
+  std::string json = "{\n";
+  json += "  \"basis\": \"real orthonormal SH, Sloan 2008 A1\",\n";
+  json += "  \"order\": \"k = l(l+1)+m: Y00, Y1-1, Y10, Y11, Y2-2, Y2-1, Y20, Y21, Y22\",\n";
+  json += "  \"coefficients\": \"L_k = integral L(w) Y_k(w) dw\",\n";
+  json += "  \"irradiance\": \"E(n) = sum A_l L_k Y_k(n)\",\n";
+  json += "  \"A_l\": [" + number(shCosineLobeBand(0)) + ", " + number(shCosineLobeBand(1)) + ", " +
+          number(shCosineLobeBand(2)) + "],\n";
+  json +=
+      "  \"window\": \"sinc^4, w_l = (sin(x)/x)^4 with x = pi l / cutoff, applied to L_k; cutoff 0: "
+      "none\",\n";
+  json += "  \"windowCutoff\": " + number(windowCutoff) + ",\n";
+  json += "  \"L\": [\n";
+  for (int k = 0; k < kShCoefficients; ++k) {
+    const glm::vec3& c = sh.coefficients[static_cast<std::size_t>(k)];
+    json += "    [" + number(c.r) + ", " + number(c.g) + ", " + number(c.b) + "]";
+    json += k + 1 < kShCoefficients ? ",\n" : "\n";
+  }
+  json += "  ]\n}\n";
+  writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    std::ofstream out(temporary, std::ios::binary);
+    out << json;
+    out.close();
+    if (!out) fail(path, "cannot write " + temporary.string());
+  });
+}
+
+namespace {
+
+// Every texel as a light: its world direction and radiance times solid angle.
+struct TexelLight {
+  glm::vec3 direction;
+  glm::vec3 power;
+};
+
+std::vector<TexelLight> texelLights(const EnvironmentMap& environment) {
+  std::vector<TexelLight> lights;
+  lights.reserve(static_cast<std::size_t>(environment.width()) *
+                 static_cast<std::size_t>(environment.height()));
+  for (int y = 0; y < environment.height(); ++y)
+    for (int x = 0; x < environment.width(); ++x)
+      lights.push_back({environment.texelDirection(x, y),
+                        environment.texelRadiance(x, y) * environment.texelSolidAngle(y)});
+  return lights;
+}
+
+glm::vec3 irradianceFrom(std::span<const TexelLight> lights, const glm::vec3& n) {
+  glm::dvec3 sum(0.0);
+  for (const TexelLight& light : lights)
+    sum += glm::dvec3(light.power * std::max(0.0f, glm::dot(n, light.direction)));
+  return glm::vec3(sum);
+}
+
+}  // namespace
+
+std::vector<glm::vec3> bruteForceIrradiance(const EnvironmentMap& environment,
+                                            std::span<const glm::vec3> normals) {
+  const std::vector<TexelLight> lights = texelLights(environment);
+  std::vector<glm::vec3> irradiance(normals.size());
+  tbb::parallel_for(std::size_t{0}, normals.size(),
+                    [&](std::size_t i) { irradiance[i] = irradianceFrom(lights, normals[i]); });
+  return irradiance;
+}
+
+CubeMap bruteForceIrradianceCube(const EnvironmentMap& environment, int size) {
+  if (size < 1) throw std::invalid_argument("bruteForceIrradianceCube: size must be >= 1");
+  std::vector<glm::vec3> normals;
+  for (int face = 0; face < 6; ++face)
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x)
+        normals.push_back(cubeDirection(face, (glm::vec2(x, y) + 0.5f) / static_cast<float>(size)));
+  const std::vector<glm::vec3> irradiance = bruteForceIrradiance(environment, normals);
+  CubeMap cube{size, {}};
+  std::size_t i = 0;
+  for (Image& face : cube.faces) {
+    face = Image(size, size);
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) face.at(x, y) = glm::vec4(irradiance[i++], 1.0f);
+  }
+  return cube;
+}
+
+}  // namespace iblkit

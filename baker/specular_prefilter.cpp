@@ -1,0 +1,166 @@
+#include "baker/specular_prefilter.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <glm/gtc/constants.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "engine/core/error.h"
+#include "engine/core/frame.h"
+#include "engine/core/image_io.h"
+#include "engine/core/low_discrepancy.h"
+#include "engine/core/microfacet.h"
+
+namespace iblkit {
+
+namespace {
+
+// One GGX sample around n = +z: the reflected direction, its cosine and the source mip to read.
+struct LobeSample {
+  glm::vec3 direction;
+  float NoL;
+  float lod;
+};
+
+std::vector<LobeSample> lobeSamples(float roughness, std::uint32_t count, int sourceSize, int sourceLevels) {
+  const float alpha = roughness * roughness;
+  const float a2 = alpha * alpha;
+  const float pi = glm::pi<float>();
+  const float texelSolidAngle = 4.0f * pi / (6.0f * static_cast<float>(sourceSize * sourceSize));
+  std::vector<LobeSample> samples;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    // Inverse CDF of D(h) cos(theta_h) (Walter et al. 2007, eq. 35-36).
+    const glm::vec2 u = hammersley(i, count);
+    const float cosThetaH = std::sqrt((1.0f - u.x) / (1.0f + (a2 - 1.0f) * u.x));
+    const float sinThetaH = std::sqrt(std::max(0.0f, 1.0f - cosThetaH * cosThetaH));
+    const float phi = 2.0f * pi * u.y;
+    const glm::vec3 h(sinThetaH * std::cos(phi), sinThetaH * std::sin(phi), cosThetaH);
+    const glm::vec3 l = 2.0f * cosThetaH * h - glm::vec3(0.0f, 0.0f, 1.0f);
+    if (l.z <= 0.0f) continue;
+    // pdf(l) = D(h) cos(theta_h) / (4 V.H), and V.H = cos(theta_h) when V = N.
+    const float pdf = ggxD(h, alpha) / 4.0f;
+    const float sampleSolidAngle = 1.0f / (static_cast<float>(count) * pdf);
+    const float lod = 0.5f * std::log2(sampleSolidAngle / texelSolidAngle) + 1.0f;
+    samples.push_back({l, l.z, std::clamp(lod, 0.0f, static_cast<float>(sourceLevels - 1))});
+  }
+  return samples;
+}
+
+// Trilinear lookup in a cube mip chain: seamless bilinear in the two levels around lod, blended.
+glm::vec3 sampleCubeTrilinear(const CubeMapLevels& chain, const glm::vec3& direction, float lod) {
+  const int lower = static_cast<int>(lod);
+  const float t = lod - static_cast<float>(lower);
+  const glm::vec3 a = sampleCubeBilinear(chain[static_cast<std::size_t>(lower)], direction);
+  if (t == 0.0f) return a;
+  return glm::mix(a, sampleCubeBilinear(chain[static_cast<std::size_t>(lower + 1)], direction), t);
+}
+
+}  // namespace
+
+std::uint32_t specularSampleCount(float roughness, std::uint32_t maxSamples) {
+  const auto scaled = static_cast<std::uint32_t>(std::lround(static_cast<float>(maxSamples) * roughness));
+  return std::clamp(scaled, std::min(128u, maxSamples), maxSamples);
+}
+
+CubeMapLevels specularSourceChain(const EnvironmentMap& environment, int size) {
+  return cubeMipChain(
+      cubeFromRadiance(size, 2, [&](const glm::vec3& direction) { return environment.radiance(direction); }));
+}
+
+CubeMap prefilterSpecularLevel(const CubeMapLevels& source, int size, float roughness,
+                               std::uint32_t sampleCount) {
+  if (size < 1 || sampleCount < 1 || !(roughness > 0.0f && roughness <= 1.0f) || source.empty())
+    throw std::invalid_argument(
+        "prefilterSpecularLevel: needs size >= 1, sampleCount >= 1, roughness in (0, 1] and a source chain");
+  const std::vector<LobeSample> samples =
+      lobeSamples(roughness, sampleCount, source[0].size, static_cast<int>(source.size()));
+  float weightSum = 0.0f;
+  for (const LobeSample& sample : samples) weightSum += sample.NoL;
+  CubeMap cube{size, {}};
+  for (Image& face : cube.faces) face = Image(size, size);
+  tbb::parallel_for(0, 6 * size, [&](int row) {
+    const int face = row / size, y = row % size;
+    for (int x = 0; x < size; ++x) {
+      const Frame frame =
+          Frame::fromZ(cubeDirection(face, (glm::vec2(x, y) + 0.5f) / static_cast<float>(size)));
+      glm::vec3 sum(0.0f);
+      for (const LobeSample& sample : samples)
+        sum += sample.NoL * sampleCubeTrilinear(source, frame.toWorld(sample.direction), sample.lod);
+      cube.faces[static_cast<std::size_t>(face)].at(x, y) = glm::vec4(sum / weightSum, 1.0f);
+    }
+  });
+  return cube;
+}
+
+SpecularCube prefilterSpecular(const EnvironmentMap& environment, const SpecularPrefilterOptions& options) {
+  const int baseSize = options.baseSize > 0 ? options.baseSize : std::max(1, environment.width() / 4);
+  if (!std::has_single_bit(static_cast<unsigned>(baseSize)))
+    throw std::invalid_argument("prefilterSpecular: base size " + std::to_string(baseSize) +
+                                " is not a power of two");
+  const int fullChain = static_cast<int>(std::bit_width(static_cast<unsigned>(baseSize)));
+  const int levelCount = options.levelCount > 0 ? options.levelCount : fullChain;
+  if (levelCount < 2 || levelCount > fullChain)
+    throw std::invalid_argument("prefilterSpecular: " + std::to_string(levelCount) +
+                                " levels, expected 2 to " + std::to_string(fullChain) + " for base size " +
+                                std::to_string(baseSize));
+  const CubeMapLevels source = specularSourceChain(environment, baseSize);
+  SpecularCube cube;
+  for (int i = 0; i < levelCount; ++i) {
+    const float roughness = static_cast<float>(i) / static_cast<float>(levelCount - 1);
+    cube.roughness.push_back(roughness);
+    cube.levels.push_back(i == 0
+                              ? source[0]
+                              : prefilterSpecularLevel(source, baseSize >> i, roughness,
+                                                       specularSampleCount(roughness, options.sampleCount)));
+  }
+  return cube;
+}
+
+namespace {
+
+// A 1 x h strip averaged down to 1 x height (h a multiple of height).
+Image shrinkColumn(const Image& column, int height) {
+  const int group = column.height() / height;
+  Image shrunk(1, height);
+  for (int y = 0; y < height; ++y) {
+    glm::vec4 sum(0.0f);
+    for (int i = 0; i < group; ++i) sum += column.at(0, y * group + i);
+    shrunk.at(0, y) = sum / static_cast<float>(group);
+  }
+  return shrunk;
+}
+
+}  // namespace
+
+void writeSpecularCubeExr(const std::filesystem::path& path, const SpecularCube& cube) {
+  const std::size_t levelCount = cube.levels.size();
+  if (levelCount == 0 || cube.roughness.size() != levelCount)
+    fail(path, "cannot write a specular cube without levels and one roughness per level");
+  const int baseSize = cube.levels[0].size;
+  if (!std::has_single_bit(static_cast<unsigned>(baseSize)) ||
+      static_cast<int>(levelCount) != static_cast<int>(std::bit_width(static_cast<unsigned>(baseSize))))
+    fail(path, "a specular cube of base size " + std::to_string(baseSize) +
+                   " needs the full chain down to 1 x 1, got " + std::to_string(levelCount) + " levels");
+  std::vector<Image> strips;
+  std::string roughness;
+  for (std::size_t i = 0; i < levelCount; ++i) {
+    strips.push_back(cubeToExrStrip(cube.levels[i]));
+    char text[32];
+    std::snprintf(text, sizeof text, "%s%g", i ? " " : "", static_cast<double>(cube.roughness[i]));
+    roughness += text;
+  }
+  // OpenEXR's ROUND_DOWN chain of a W x 6W image: ... 1 x 6, 1 x 3, 1 x 1.
+  strips.push_back(shrinkColumn(strips.back(), 3));
+  strips.push_back(shrinkColumn(strips.back(), 1));
+  writeExrLevels(path, strips,
+                 {.pixelType = PixelType::Float,
+                  .envmap = EnvmapLayout::Cube,
+                  .stringAttributes = {{"iblkit:roughnessPerLevel", roughness}}});
+}
+
+}  // namespace iblkit

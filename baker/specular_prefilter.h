@@ -1,0 +1,73 @@
+#pragma once
+// The specular half of the split sum (Karis 2013, "Real Shading in Unreal Engine 4", section
+// "Image Based Lighting"): the environment convolved with the GGX lobe under the assumption
+// N = V = R, one cube mip level per roughness, so the engine reads level
+// roughness * (levels - 1) with trilinear filtering. docs/prefilter.md.
+//
+// Level i of a chain of n levels has perceptual roughness i / (n - 1) (linear, as the Khronos
+// glTF-Sample-Viewer's IBL sampler) and face size baseSize >> i; level 0 is the environment
+// itself on the cube. Each texel of a rougher level is
+//   sum_j L(l_j) NoL_j / sum_j NoL_j,
+// over Hammersley samples of the GGX NDF around its direction n (h_j from D(h) cos(theta_h),
+// l_j = reflect(-n, h_j)), with filtered importance sampling (Krivanek & Colbert 2008, "Real-time
+// Shading with Filtered Importance Sampling", section 3): sample j reads the source cube's mip
+// chain at lod = 0.5 log2(Omega_s / Omega_p) + 1, Omega_s = 1 / (count pdf_j) the solid angle the
+// sample stands for, pdf_j = D(h_j) / 4 (N = V), Omega_p = 4 pi / (6 size_0^2) a source texel's.
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "engine/core/cube_map.h"
+#include "engine/core/environment_map.h"
+
+namespace iblkit {
+
+struct SpecularPrefilterOptions {
+  // Face size of level 0; 0 picks environment.width() / 4 (128 for a 512 x 256 map).
+  int baseSize = 0;
+  // Number of levels; 0 picks the full chain down to 1 x 1 (log2(baseSize) + 1 levels).
+  int levelCount = 0;
+  // GGX samples per texel of the roughest level; smoother levels take fewer
+  // (specularSampleCount).
+  std::uint32_t sampleCount = 1024;
+};
+
+// The prefiltered chain and the perceptual roughness of each level.
+struct SpecularCube {
+  CubeMapLevels levels;
+  std::vector<float> roughness;
+};
+
+// Samples per texel for a level of perceptual roughness r: round(maxSamples * r), at least
+// min(128, maxSamples). Narrow lobes cover few source texels, and filtered importance sampling
+// widens each sample's footprint to match, so they need fewer samples; the smooth levels are also
+// the large ones, and this keeps them from dominating the cost (level 1 of a 128 base at 1024
+// samples would be 75% of the chain). Checked per level against brute force in the tests.
+std::uint32_t specularSampleCount(float roughness, std::uint32_t maxSamples);
+
+// The source of the convolution: `environment` (rotation and intensity applied) on a size x size
+// cube (cubeFromRadiance, 2x2 samples per texel) and its box-filtered mip chain.
+CubeMapLevels specularSourceChain(const EnvironmentMap& environment, int size);
+
+// One prefiltered size x size cube for perceptual roughness `roughness` in (0, 1], from a source
+// chain made by specularSourceChain (formula above). Parallel over rows of faces (TBB).
+// Throws std::invalid_argument unless size >= 1, sampleCount >= 1, roughness in (0, 1] and the
+// chain is non-empty.
+CubeMap prefilterSpecularLevel(const CubeMapLevels& source, int size, float roughness,
+                               std::uint32_t sampleCount);
+
+// The whole chain. Throws std::invalid_argument for a base size that is not a power of two, or a
+// level count outside [2, log2(baseSize) + 1].
+SpecularCube prefilterSpecular(const EnvironmentMap& environment,
+                               const SpecularPrefilterOptions& options = {});
+
+// Writes the chain as a tiled, mip-mapped OpenEXR cube environment map (32-bit float RGB, envmap =
+// cube, each level a W x 6W strip, cubeToExrStrip), with the string attribute
+// "iblkit:roughnessPerLevel" ("0 0.142857 ..."). OpenEXR's ROUND_DOWN chain of a W x 6W image goes
+// on below the 1 x 6 strip (1 x 3, then 1 x 1): those two levels, which are no cube, are box
+// downsamples of the last strip (readers use the first log2(W) + 1 levels, as many as the
+// attribute lists). Throws Error unless the chain is complete down to 1 x 1 faces.
+void writeSpecularCubeExr(const std::filesystem::path& path, const SpecularCube& cube);
+
+}  // namespace iblkit

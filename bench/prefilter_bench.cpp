@@ -1,0 +1,46 @@
+// Prefiltering cost: SH9 projection and the whole GGX specular chain (default options: base face
+// width / 4, full chain, 1024 samples per texel) for a 512 x 256 asset map and the same map
+// upsampled to 2048 x 1024. Set IBLKIT_ASSETS to the folder holding hdri/ (default: ./assets).
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "baker/environment_sh.h"
+#include "baker/specular_prefilter.h"
+#include "engine/core/environment_map_file.h"
+#include "engine/core/latlong.h"
+
+namespace {
+
+using iblkit::EnvironmentMap;
+
+std::filesystem::path assetMap() {
+  const char* assets = std::getenv("IBLKIT_ASSETS");
+  return std::filesystem::path(assets ? assets : "assets") / "hdri" / "park.exr";
+}
+
+// The asset map (width 512) or its bilinear upsampling to `width`.
+const EnvironmentMap& environment(int width) {
+  static const EnvironmentMap asset = iblkit::loadEnvironmentMap(assetMap());
+  static const EnvironmentMap large = EnvironmentMap::fromImage(
+      iblkit::latLongFromRadiance(2048, 1024, 1, [](const glm::vec3& d) { return asset.radiance(d); }),
+      "upsampled");
+  return width == asset.width() ? asset : large;
+}
+
+void BM_ProjectSh9(benchmark::State& state) {
+  const EnvironmentMap& map = environment(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(iblkit::projectEnvironmentSh9(map));
+}
+BENCHMARK(BM_ProjectSh9)->Arg(512)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_SpecularChain(benchmark::State& state) {
+  const EnvironmentMap& map = environment(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(iblkit::prefilterSpecular(map));
+}
+BENCHMARK(BM_SpecularChain)->Arg(512)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();
