@@ -1,6 +1,8 @@
 // iblkit-bake: precomputes what the real-time engine needs for a scene (docs/baker.md).
 //
-//   iblkit-bake SCENE [--env ENV] -o OUTDIR [--ao-rays N] [--ao-distance D] [--seed S] [--threads T]
+//   iblkit-bake SCENE [--env ENV] [--env-format latlong|mirrorball|angular] -o OUTDIR [--ao-rays N]
+//               [--ao-distance D] [--seed S] [--threads T] [--sh-window auto|none|BANDS]
+//               [--specular-samples N] [--lut-size N]
 //
 // OUTDIR/scene.glb  the whole flattened scene (world-space meshes, ground included, materials with
 //                   the scene's overrides applied, camera) with per-vertex visibility attributes
@@ -21,12 +23,17 @@
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "baker/baked_scene_gltf.h"
+#include "baker/brdf_lut.h"
+#include "baker/environment_sh.h"
 #include "baker/output_directory.h"
+#include "baker/specular_prefilter.h"
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
+#include "engine/core/environment_map_file.h"
 #include "engine/core/error.h"
 #include "engine/core/scene.h"
 
@@ -45,6 +52,10 @@ struct Options {
   float aoDistance = 0.0f;
   std::uint32_t seed = 0;
   int threads = 0;  // 0: every core
+  std::string envFormat = "latlong";
+  std::string shWindow = "auto";  // "auto", "none" or a cutoff in bands
+  std::uint32_t specularSamples = 1024;
+  int lutSize = 128;
 };
 
 class Stopwatch {
@@ -88,6 +99,42 @@ void writeJson(const fs::path& file, const json& document) {
   if (!stream.flush()) fail(file, "cannot write file");
 }
 
+// The sinc^4 window cutoff for SH9: automatic (the largest cutoff keeping irradiance >= 0), none
+// (0), or a number of bands.
+float shWindowCutoff(const std::string& choice, const SphericalHarmonics9& sh) {
+  if (choice == "auto") return automaticShWindowCutoff(sh);
+  if (choice == "none") return 0.0f;
+  try {
+    std::size_t used = 0;
+    const float cutoff = std::stof(choice, &used);
+    if (used == choice.size() && cutoff > 0.0f) return cutoff;
+  } catch (const std::exception&) {
+  }
+  throw Error("--sh-window: expected auto, none or a positive number of bands, got '" + choice + "'");
+}
+
+// The environment stages: env/sh9.json (SH9 radiance, windowed), env/specular.exr (GGX mip chain
+// as an OpenEXR cube map) and env/brdf_lut.exr (split-sum DFG table), written into `folder`.
+json bakeEnvironment(const EnvironmentMap& environment, const Options& options, const fs::path& folder,
+                     Stopwatch& stopwatch, json& timings) {
+  fs::create_directories(folder / "env");
+  const SphericalHarmonics9 sh = projectEnvironmentSh9(environment);
+  const float cutoff = shWindowCutoff(options.shWindow, sh);
+  writeSh9Json(folder / "env" / "sh9.json", sh, cutoff);
+  timings["sh9_s"] = stopwatch.lap();
+  SpecularPrefilterOptions specularOptions;
+  specularOptions.sampleCount = options.specularSamples;
+  const SpecularCube specular = prefilterSpecular(environment, specularOptions);
+  writeSpecularCubeExr(folder / "env" / "specular.exr", specular);
+  timings["specular_s"] = stopwatch.lap();
+  writeBrdfLutExr(folder / "env" / "brdf_lut.exr", computeBrdfLut(options.lutSize));
+  timings["brdf_lut_s"] = stopwatch.lap();
+  return {{"sh_window_cutoff", cutoff},
+          {"specular_face_size", specular.levels.front().size},
+          {"specular_roughness_per_level", specular.roughness},
+          {"brdf_lut_size", options.lutSize}};
+}
+
 int bake(const Options& options) {
   Stopwatch stopwatch;
   json timings;
@@ -97,6 +144,14 @@ int bake(const Options& options) {
   const fs::path environment = options.environment.empty() ? scene.environment.file : options.environment;
   std::error_code error;
   if (!environment.empty() && !fs::is_regular_file(environment, error)) fail(environment, "does not exist");
+  // Loaded before the long visibility stage, so a bad map fails fast.
+  std::optional<EnvironmentMap> environmentMap;
+  if (!environment.empty()) {
+    environmentMap = loadEnvironmentMap(environment, parseProbeFormat(options.envFormat));
+    environmentMap->setRotationDegrees(scene.environment.rotationDegrees);
+    environmentMap->setIntensity(scene.environment.intensity);
+    timings["load_environment_s"] = stopwatch.lap();
+  }
 
   VisibilitySettings settings;
   settings.rayCount = options.aoRays;
@@ -114,17 +169,29 @@ int bake(const Options& options) {
   writeDirectoryAtomically(options.output, [&](const fs::path& folder) {
     writeSceneGlb(scene, folder / "scene.glb");
     timings["write_scene_s"] = stopwatch.lap();
-    // The environment stages (env/sh9.json, env/specular.exr, env/brdf_lut.exr) belong here,
-    // written into `folder` from `environment`; they are not part of this program yet, so no env/
-    // folder is written and bake.json lists only the files that exist.
+    json outputs = {"scene.glb", "bake.json"};
+    json environmentReport = nullptr;
+    if (environmentMap) {
+      environmentReport = bakeEnvironment(*environmentMap, options, folder, stopwatch, timings);
+      for (const char* file : {"env/sh9.json", "env/specular.exr", "env/brdf_lut.exr"})
+        outputs.push_back(file);
+    }
     const json report = {
         {"version", kVersion},
         {"inputs",
          {{"scene", options.scene.string()},
           {"environment", environment.empty() ? json(nullptr) : json(environment.string())}}},
         {"parameters",
-         {{"ao_rays", options.aoRays}, {"ao_distance", options.aoDistance}, {"seed", options.seed}}},
-        {"outputs", {"scene.glb", "bake.json"}},
+         {{"ao_rays", options.aoRays},
+          {"ao_distance", options.aoDistance},
+          {"seed", options.seed},
+          {"env_format", options.envFormat},
+          {"environment_rotation_degrees", scene.environment.rotationDegrees},
+          {"environment_intensity", scene.environment.intensity},
+          {"sh_window", options.shWindow},
+          {"specular_samples", options.specularSamples}}},
+        {"environment", environmentReport},
+        {"outputs", outputs},
         {"timings", timings},
         {"counts",
          {{"meshes", scene.meshes.size()},
@@ -157,6 +224,18 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--seed", options.seed, "sample scrambling seed")->capture_default_str();
+  app.add_option("--env-format", options.envFormat, "environment layout: latlong, mirrorball or angular")
+      ->check(CLI::IsMember({"latlong", "mirrorball", "angular"}))
+      ->capture_default_str();
+  app.add_option("--sh-window", options.shWindow, "SH9 ringing window: auto, none or a cutoff in bands")
+      ->capture_default_str();
+  app.add_option("--specular-samples", options.specularSamples,
+                 "GGX samples per texel for the roughest level")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  app.add_option("--lut-size", options.lutSize, "DFG table size")
+      ->check(CLI::Range(8, 1024))
+      ->capture_default_str();
   app.add_option("--threads", options.threads, "worker threads; 0 = every core")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();

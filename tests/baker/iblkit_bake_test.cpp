@@ -7,6 +7,8 @@
 
 #include "baker/visibility_attributes.h"
 #include "engine/core/gltf_load.h"
+#include "engine/core/image_io.h"
+#include "engine/core/latlong.h"
 #include "engine/core/procedural_mesh.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
@@ -146,6 +148,49 @@ TEST(IblkitBake, BadScenesGiveOneLineErrorsAndNoOutput) {
     EXPECT_FALSE(fs::exists(root / "out"));
     EXPECT_EQ(leftovers(root), 0);
   }
+}
+
+TEST(IblkitBake, WritesTheEnvironmentStagesWhenThereIsAnEnvironment) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out", env = root / "sky.exr";
+  // A small smooth sky with a bright spot; 16 x 8 keeps the specular chain quick.
+  writeExr(env,
+           latLongFromRadiance(32, 16, 2,
+                               [](const glm::vec3& d) {
+                                 return glm::vec3(0.5f + 0.5f * std::max(d.y, 0.0f)) +
+                                        glm::vec3(20.0f) * std::pow(std::max(d.x, 0.0f), 8.0f);
+                               }),
+           {.pixelType = PixelType::Float});
+  int status = 0;
+  const std::string log = bake(scene.string() + " --env " + env.string() + " -o " + out.string() +
+                                   " --ao-rays 8 --specular-samples 64 --lut-size 16",
+                               &status);
+  ASSERT_EQ(status, 0) << log;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+  EXPECT_EQ(report["outputs"], nlohmann::json({"scene.glb", "bake.json", "env/sh9.json", "env/specular.exr",
+                                               "env/brdf_lut.exr"}));
+  EXPECT_EQ(report["environment"]["specular_face_size"], 8);  // a quarter of the map's width
+  EXPECT_EQ(report["environment"]["specular_roughness_per_level"].size(), 4u);
+  const nlohmann::json sh = nlohmann::json::parse(std::ifstream(out / "env" / "sh9.json"));
+  ASSERT_EQ(sh["L"].size(), 9u);
+  EXPECT_GT(sh["L"][0][0].get<float>(), 0.0f);
+  ExrInfo info;
+  readExr(out / "env" / "specular.exr", &info);
+  EXPECT_EQ(info.envmap, EnvmapLayout::Cube);
+  EXPECT_EQ(readExr(out / "env" / "brdf_lut.exr").width(), 16);
+}
+
+TEST(IblkitBake, BadShWindowIsRefusedWithoutOutput) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out", env = root / "sky.exr";
+  writeExr(env, Image(16, 8, glm::vec4(1.0f)), {});
+  int status = 0;
+  const std::string log =
+      bake(scene.string() + " --env " + env.string() + " -o " + out.string() + " --sh-window wide", &status);
+  EXPECT_EQ(status, 1);
+  EXPECT_EQ(log, "iblkit-bake: --sh-window: expected auto, none or a positive number of bands, got 'wide'\n");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(leftovers(root), 0);
 }
 
 }  // namespace
