@@ -2,7 +2,8 @@
 # The demo: runs every stage of the pipeline that exists on the bundled assets and scenes and
 # writes out/demo/report.html (static, no server needed) and out/demo/report.json.
 # Stages so far: read and check every environment map, model and scene (iblkit-info), with
-# tone-mapped previews of the maps.
+# tone-mapped previews of the maps; bake every bundled scene (iblkit-bake) and path-trace its
+# reference image (iblkit-trace). Scoring of the real-time engine against it comes with the engine.
 set -euo pipefail
 build=${1:-build}
 bin="$build/bin"
@@ -34,6 +35,19 @@ for scene in assets/models/*.glb assets/scenes/*.json; do
   printf '%s' "$line" >>"$json"
   scene_rows+="<tr><td>$(basename "$scene")</td><td>$(field "$line" meshes)</td><td>$(field "$line" vertices)</td><td>$(field "$line" triangles)</td><td>$(field "$line" camera)</td><td>$(field "$line" environment)</td></tr>"$'\n'
 done
+
+# Bake and reference render of each bundled scene.
+mkdir -p "$out/bake" "$out/trace"
+render_rows=""
+for scene in assets/scenes/*.json; do
+  name=$(basename "$scene" .json)
+  bake_log=$("$bin/iblkit-bake" "$scene" -o "$out/bake/$name" 2>>"$warnings")
+  trace_log=$("$bin/iblkit-trace" "$scene" -o "$out/trace/$name.exr" --png "$out/trace/$name.png" \
+    --exposure -1 --spp "${IBLKIT_DEMO_SPP:-32}" --width 480 --height 270 2>>"$warnings")
+  echo ',' >>"$json"
+  printf '{"scene": "%s", "bake": %s, "trace": "%s"}' "$scene" "$(cat "$out/bake/$name/bake.json")" "$trace_log" >>"$json"
+  render_rows+="<figure style=\"width:480px\"><img src=\"trace/$name.png\" width=\"480\" height=\"270\"><figcaption><b>$name</b>: path traced, $trace_log<br>bake: $bake_log</figcaption></figure>"$'\n'
+done
 echo ']}' >>"$json"
 mv "$json" "$out/report.json"
 
@@ -44,8 +58,10 @@ cat >"$out/report.html.tmp" <<HTML
 figcaption{font-size:12px}code{font-size:11px}table{border-collapse:collapse}td{border:1px solid #ccc;padding:4px}</style></head>
 <body><h1>iblkit demo</h1>
 <p>Stages that exist so far: every bundled environment map, model and scene is read and checked by the
-core library. Previews use the shared tone curve (ACES fitted, exposure 0, sRGB).
+core library. Previews use the shared tone curve (ACES fitted, sRGB): maps at exposure 0, renders at -1.
 Scoring of the real-time approximations against the path tracer will appear here.</p>
+<h2>Reference renders (iblkit-trace, path integrator) and bakes (iblkit-bake)</h2>
+$render_rows
 <h2>Environment maps</h2>
 $rows
 <h2>Models and scenes</h2>
