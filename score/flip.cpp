@@ -29,23 +29,32 @@ Plane convolveSeparable(const Plane& in, const std::vector<float>& horizontal,
                         const std::vector<float>& vertical) {
   const int w = in.width, h = in.height;
   const int rx = static_cast<int>(horizontal.size()) / 2, ry = static_cast<int>(vertical.size()) / 2;
+  const auto index = [w](int x, int y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
+  };
+  // Each pass reads a padded copy of one row or column, so the inner loops have no clamping.
   Plane rows(w, h), out(w, h);
-  for (int y = 0; y < h; ++y)
+  std::vector<float> padded(static_cast<std::size_t>(std::max(w + 2 * rx, h + 2 * ry)));
+  for (int y = 0; y < h; ++y) {
+    for (int x = -rx; x < w + rx; ++x)
+      padded[static_cast<std::size_t>(x + rx)] = in.values[index(std::clamp(x, 0, w - 1), y)];
     for (int x = 0; x < w; ++x) {
       float sum = 0.0f;
-      for (int i = -rx; i <= rx; ++i)
-        sum += horizontal[static_cast<std::size_t>(i + rx)] *
-               in.values[static_cast<std::size_t>(y * w + std::clamp(x + i, 0, w - 1))];
-      rows.values[static_cast<std::size_t>(y * w + x)] = sum;
+      for (std::size_t i = 0; i < horizontal.size(); ++i)
+        sum += horizontal[i] * padded[static_cast<std::size_t>(x) + i];
+      rows.values[index(x, y)] = sum;
     }
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
+  }
+  for (int x = 0; x < w; ++x) {
+    for (int y = -ry; y < h + ry; ++y)
+      padded[static_cast<std::size_t>(y + ry)] = rows.values[index(x, std::clamp(y, 0, h - 1))];
+    for (int y = 0; y < h; ++y) {
       float sum = 0.0f;
-      for (int j = -ry; j <= ry; ++j)
-        sum += vertical[static_cast<std::size_t>(j + ry)] *
-               rows.values[static_cast<std::size_t>(std::clamp(y + j, 0, h - 1) * w + x)];
-      out.values[static_cast<std::size_t>(y * w + x)] = sum;
+      for (std::size_t j = 0; j < vertical.size(); ++j)
+        sum += vertical[j] * padded[static_cast<std::size_t>(y) + j];
+      out.values[index(x, y)] = sum;
     }
+  }
   return out;
 }
 
@@ -300,12 +309,13 @@ ExposureRange automaticExposureRange(const Image& reference) {
   const double median = *middle, maximum = *std::max_element(luminances.begin(), luminances.end());
   // The bracket starts where the brightest pixel reaches 0.85 and stops where the median pixel does.
   // A black (or negative) median or maximum has no such exposure: fall back to a one-stop bracket.
-  ExposureRange range;
-  range.start = maximum > 0.0 ? static_cast<float>(std::log2(bright / maximum)) : 0.0f;
-  range.stop = median > 0.0 ? static_cast<float>(std::log2(bright / median)) : range.start + 1.0f;
-  range.stop = std::max(range.stop, range.start);
-  range.count = std::max(2, static_cast<int>(std::ceil(range.stop - range.start)));
-  return range;
+  const float start = maximum > 0.0 ? static_cast<float>(std::log2(bright / maximum)) : 0.0f;
+  const float stop = median > 0.0 ? static_cast<float>(std::log2(bright / median)) : start + 1.0f;
+  return exposureBracket(start, std::max(stop, start));
+}
+
+ExposureRange exposureBracket(float start, float stop) {
+  return {start, stop, std::max(2, static_cast<int>(std::ceil(stop - start)))};
 }
 
 FlipErrorMap hdrFlip(const Image& reference, const Image& test, const ExposureRange& exposures,

@@ -36,6 +36,8 @@ struct ExposureRange {
 // the median luminance to the bottom of the ACES fit's useful range, the stop exposure maps the
 // maximum luminance to where the fit reaches 0.85; count = max(2, ceil(stop - start)).
 ExposureRange automaticExposureRange(const Image& reference);
+// The bracket from start to stop (stop >= start) with the chapter's count, max(2, ceil(stop - start)).
+ExposureRange exposureBracket(float start, float stop);
 // The chapter's ACES tone mapper (Narkowicz's fit applied to 0.6 x), clamped to [0,1]. It differs
 // from our display curve (tone_curve.h), which omits the 0.6 pre-scale.
 float flipAces(float x);

@@ -91,13 +91,11 @@ int main(int argc, char** argv) {
     FlipErrorMap flipMap;
     if (wantFlip) {
       if (inputs.highDynamicRange) {
-        ExposureRange exposures = automaticExposureRange(inputs.reference);
-        if (!exposureRange.empty()) {
-          exposures.start = exposureRange[0];
-          exposures.stop = exposureRange[1];
-          if (exposures.stop < exposures.start) fail(testFile, "--exposure-range: stop is below start");
-          exposures.count = std::max(2, static_cast<int>(std::ceil(exposures.stop - exposures.start)));
-        }
+        if (!exposureRange.empty() && exposureRange[1] < exposureRange[0])
+          throw Error("--exposure-range: the stop exposure is below the start");
+        const ExposureRange exposures = exposureRange.empty()
+                                            ? automaticExposureRange(inputs.reference)
+                                            : exposureBracket(exposureRange[0], exposureRange[1]);
         flipMap = hdrFlip(inputs.reference, inputs.test, exposures, pixelsPerDegree);
         result["flip_exposures"] = {
             {"start", exposures.start}, {"stop", exposures.stop}, {"count", exposures.count}};
