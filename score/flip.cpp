@@ -1,8 +1,9 @@
-// FLIP written from the papers (see flip.h). Section and equation numbers refer to the HPG 2020
-// paper unless they name Ray Tracing Gems II (RTG2) chapter 19.
+// FLIP written from the papers (see flip.h): the HPG 2020 paper's colour pipeline and feature
+// pipeline, and Ray Tracing Gems II (RTG2) chapter 19 for HDR-FLIP.
 #include "score/flip.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -72,7 +73,7 @@ glm::vec3 xyzToLinearRgb(const glm::vec3& xyz) {
 // The reference white: XYZ of linear RGB (1, 1, 1).
 const glm::vec3 kWhite = linearRgbToXyz(glm::vec3(1.0f));
 
-// YCxCz, the linearised CIELAB opponent space of Flohr et al. (section 4.1): L* without the cube
+// YCxCz, the linearised CIELAB opponent space of Flohr et al. (colour pipeline): L* without the cube
 // root, so that spatial filtering in it is meaningful.
 glm::vec3 xyzToYcxcz(const glm::vec3& xyz) {
   const glm::vec3 n = xyz / kWhite;
@@ -92,27 +93,27 @@ glm::vec3 xyzToLab(const glm::vec3& xyz) {
   const float fx = f(n.x), fy = f(n.y), fz = f(n.z);
   return {116.0f * fy - 16.0f, 500.0f * (fx - fy), 200.0f * (fy - fz)};
 }
-// The Hunt effect (section 4.2): chroma appears weaker at low luminance, so a* and b* are scaled
+// The Hunt effect (colour pipeline): chroma appears weaker at low luminance, so a* and b* are scaled
 // by 0.01 L*.
 glm::vec3 huntAdjust(const glm::vec3& lab) { return {lab.x, 0.01f * lab.x * lab.y, 0.01f * lab.x * lab.z}; }
 // HyAB (Abasi et al. 2020): city-block distance in lightness plus Euclidean distance in chroma,
-// better than Euclidean Delta E for large colour differences (section 4.2).
+// better than Euclidean Delta E for large colour differences (colour pipeline).
 float hyab(const glm::vec3& a, const glm::vec3& b) {
   const glm::vec3 d = a - b;
   return std::abs(d.x) + std::sqrt(d.y * d.y + d.z * d.z);
 }
 
-// Error exponent of the colour pipeline and the colour error mapping's knee (section 4.2):
+// Error exponent of the colour pipeline and the colour error mapping's knee (colour pipeline):
 // differences below pc * cmax are compressed to [0, pt), the rest expanded to [pt, 1].
 constexpr float kColorExponent = 0.7f;  // qc
 constexpr float kKneeFraction = 0.4f;   // pc
 constexpr float kKneeError = 0.95f;     // pt
-// Feature detection (section 4.3): the Gaussian derivative filters' width in degrees and the
+// Feature detection (feature pipeline): the Gaussian derivative filters' width in degrees and the
 // feature error's exponent.
 constexpr float kFeatureWidthDegrees = 0.082f;  // w
 constexpr float kFeatureExponent = 0.5f;        // qf
 
-// The contrast sensitivity functions as spatial filters (section 4.1, eq. 3 and table 1): per
+// The contrast sensitivity functions as spatial filters (colour pipeline): per
 // channel of YCxCz a sum of two Gaussians a_k sqrt(pi / b_k) exp(-pi^2 x^2 / b_k), x in degrees.
 struct CsfTerm {
   float a, b;
@@ -164,7 +165,7 @@ Plane filterWithCsf(const Plane& channel, const ChannelCsf& csf, float pixelsPer
   return result;
 }
 
-// The edge and point detectors (section 4.3): first and second derivatives of a Gaussian with
+// The edge and point detectors (feature pipeline): first and second derivatives of a Gaussian with
 // sigma = w / 2 degrees, each normalised so that its positive weights sum to 1 and its negative
 // weights to -1. The 2D filters are h(x) g(y) (and transposed), so they are separable: h is
 // normalised by its positive and negative sums, g by its sum.
@@ -230,7 +231,7 @@ Opponent toOpponent(const Image& image) {
 
 // Filtered YCxCz back to linear RGB, clamped to [0,1] (the filters can leave the gamut), then to
 // Hunt-adjusted L*a*b*.
-glm::vec3 perceivedColor(const Plane (&filtered)[3], std::size_t i) {
+glm::vec3 perceivedColor(const std::array<Plane, 3>& filtered, std::size_t i) {
   const glm::vec3 rgb =
       glm::clamp(xyzToLinearRgb(ycxczToXyz({filtered[0][i], filtered[1][i], filtered[2][i]})), 0.0f, 1.0f);
   return huntAdjust(xyzToLab(linearRgbToXyz(rgb)));
@@ -242,17 +243,17 @@ FlipErrorMap ldrFlip(const Image& reference, const Image& test, float pixelsPerD
   if (reference.width() != test.width() || reference.height() != test.height())
     throw Error("ldrFlip: images of different sizes");
   const Opponent ref = toOpponent(reference), tst = toOpponent(test);
-  Plane refFiltered[3] = {filterWithCsf(ref.channels[0], kCsf[0], pixelsPerDegree),
-                          filterWithCsf(ref.channels[1], kCsf[1], pixelsPerDegree),
-                          filterWithCsf(ref.channels[2], kCsf[2], pixelsPerDegree)};
-  Plane testFiltered[3] = {filterWithCsf(tst.channels[0], kCsf[0], pixelsPerDegree),
-                           filterWithCsf(tst.channels[1], kCsf[1], pixelsPerDegree),
-                           filterWithCsf(tst.channels[2], kCsf[2], pixelsPerDegree)};
+  const auto filtered = [pixelsPerDegree](const Opponent& image) {
+    return std::array<Plane, 3>{filterWithCsf(image.channels[0], kCsf[0], pixelsPerDegree),
+                                filterWithCsf(image.channels[1], kCsf[1], pixelsPerDegree),
+                                filterWithCsf(image.channels[2], kCsf[2], pixelsPerDegree)};
+  };
+  const std::array<Plane, 3> refFiltered = filtered(ref), testFiltered = filtered(tst);
   const FeatureFilters filters = featureFilters(pixelsPerDegree);
   const Features refFeatures = detectFeatures(ref.luminance, filters);
   const Features testFeatures = detectFeatures(tst.luminance, filters);
 
-  // The largest colour difference in the gamut, between Hunt-adjusted green and blue (section 4.2).
+  // The largest colour difference in the gamut, between Hunt-adjusted green and blue (colour pipeline).
   const float cmax = std::pow(hyab(huntAdjust(xyzToLab(linearRgbToXyz({0.0f, 1.0f, 0.0f}))),
                                    huntAdjust(xyzToLab(linearRgbToXyz({0.0f, 0.0f, 1.0f})))),
                               kColorExponent);
@@ -265,13 +266,13 @@ FlipErrorMap ldrFlip(const Image& reference, const Image& test, float pixelsPerD
     const float colorError = difference < knee
                                  ? kKneeError / knee * difference
                                  : kKneeError + (difference - knee) / (cmax - knee) * (1.0f - kKneeError);
-    // Feature difference (eq. 8): the larger of the edge and point differences; 1/sqrt(2) maps the
+    // Feature difference: the larger of the edge and point differences; 1/sqrt(2) maps the
     // largest possible response magnitude (sqrt 2, a unit step in x and y) to 1.
     const float featureDifference = std::max(std::abs(refFeatures.edge[i] - testFeatures.edge[i]),
                                              std::abs(refFeatures.point[i] - testFeatures.point[i]));
     const float featureError =
         std::pow(std::min(featureDifference / std::numbers::sqrt2_v<float>, 1.0f), kFeatureExponent);
-    // Features amplify the colour error (eq. 9): errors on edges and points stand out.
+    // Features amplify the colour error : errors on edges and points stand out.
     map.error[i] = std::pow(colorError, 1.0f - featureError);
   }
   return map;

@@ -32,9 +32,9 @@ struct ExposureRange {
   float start = 0.0f, stop = 0.0f;
   int count = 2;
 };
-// The bracket RTG2 ch. 19 (section "HDR-FLIP") derives from the reference: the start exposure maps
-// the median luminance to the bottom of the ACES fit's useful range, the stop exposure maps the
-// maximum luminance to where the fit reaches 0.85; count = max(2, ceil(stop - start)).
+// The bracket RTG2 ch. 19 derives from the reference: with x85 the input where the ACES fit
+// (flipAces) reaches 0.85, the start exposure brings the reference's largest luminance to x85 and
+// the stop exposure its median luminance; count = max(2, ceil(stop - start)).
 ExposureRange automaticExposureRange(const Image& reference);
 // The bracket from start to stop (stop >= start) with the chapter's count, max(2, ceil(stop - start)).
 ExposureRange exposureBracket(float start, float stop);
