@@ -329,12 +329,12 @@ void writeLevels(const std::filesystem::path& file, std::span<const Image> level
 
 }  // namespace
 
-Image readExr(const std::filesystem::path& file, ExrInfo* info, int level) {
+Image readExr(const std::filesystem::path& file, ExrInfo* info, int level, PixelRepair repair) {
   Image image = withExrFile(file, [&](ExrLevelReader& reader) {
     if (info) *info = reader.info();
     return reader.read(level);
   });
-  repairPixels(file, {&image, 1});
+  if (repair == PixelRepair::Repair) repairPixels(file, {&image, 1});
   return image;
 }
 

@@ -13,33 +13,45 @@
 
 namespace iblkit {
 
-Image readImage(const std::filesystem::path& file) {
+Image readImage(const std::filesystem::path& file, PixelRepair repair) {
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".exr") return readExr(file);
-  if (extension == ".hdr" || extension == ".pic") return readRadianceHdr(file);
-  if (extension == ".png") return readPng(file);
+  if (extension == ".exr") return readExr(file, nullptr, 0, repair);
+  if (extension == ".hdr" || extension == ".pic") return readRadianceHdr(file, repair);
+  if (extension == ".png") return readPng(file, repair);
   fail(file, "unknown image format \"" + extension + "\" (expected .exr, .hdr, .pic or .png)");
+}
+
+namespace {
+
+// Counts `value` in `counts` and returns true when it is NaN, infinite or negative.
+bool countIfInvalid(float value, PixelRepairCounts& counts) {
+  if (value >= 0.0f && value <= std::numeric_limits<float>::max()) return false;  // the common case
+  if (std::isnan(value))
+    ++counts.nan;
+  else if (std::isinf(value))
+    ++counts.inf;
+  else
+    ++counts.negative;
+  return true;
+}
+
+}  // namespace
+
+PixelRepairCounts countInvalidPixels(const Image& image) {
+  PixelRepairCounts counts;
+  for (const glm::vec4& pixel : image.pixels())
+    for (int c = 0; c < 4; ++c) countIfInvalid(pixel[c], counts);
+  return counts;
 }
 
 PixelRepairCounts repairPixels(const std::filesystem::path& file, std::span<Image> images) {
   PixelRepairCounts counts;
-  for (Image& image : images) {
-    for (glm::vec4& pixel : image.pixels()) {
-      for (int c = 0; c < 4; ++c) {
-        float& value = pixel[c];
-        if (value >= 0.0f && value <= std::numeric_limits<float>::max()) continue;  // the common case
-        if (std::isnan(value))
-          ++counts.nan;
-        else if (std::isinf(value))
-          ++counts.inf;
-        else
-          ++counts.negative;
-        value = 0.0f;
-      }
-    }
-  }
+  for (Image& image : images)
+    for (glm::vec4& pixel : image.pixels())
+      for (int c = 0; c < 4; ++c)
+        if (countIfInvalid(pixel[c], counts)) pixel[c] = 0.0f;
   std::vector<std::string> parts;
   if (counts.nan) parts.push_back(std::to_string(counts.nan) + " NaN");
   if (counts.inf) parts.push_back(std::to_string(counts.inf) + " Inf");

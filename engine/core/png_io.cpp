@@ -53,7 +53,7 @@ void writePng(const std::filesystem::path& file, const Image& image, const ToneM
   });
 }
 
-Image readPng(const std::filesystem::path& file) {
+Image readPng(const std::filesystem::path& file, PixelRepair repair) {
   const std::vector<char> bytes = readFileBytes(file);
   constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (bytes.size() < sizeof(kSignature) || std::memcmp(bytes.data(), kSignature, sizeof(kSignature)) != 0)
@@ -85,7 +85,7 @@ Image readPng(const std::filesystem::path& file) {
     pixel = glm::vec4(kLinear[rgba[0]], kLinear[rgba[1]], kLinear[rgba[2]], rgba[3] / 255.0f);
     rgba += 4;
   }
-  repairPixels(file, {&image, 1});
+  if (repair == PixelRepair::Repair) repairPixels(file, {&image, 1});
   return image;
 }
 

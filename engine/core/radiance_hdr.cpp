@@ -203,7 +203,7 @@ class ScanlineDecoder {
 
 }  // namespace
 
-Image readRadianceHdr(const std::filesystem::path& file) {
+Image readRadianceHdr(const std::filesystem::path& file, PixelRepair repair) {
   const std::vector<char> bytes = readFileBytes(file);
   std::size_t position = 0;
   const Resolution resolution =
@@ -220,7 +220,7 @@ Image readRadianceHdr(const std::filesystem::path& file) {
   for (int y = 0; y < resolution.height; ++y)
     decoder.decode(y,
                    &image.pixels()[static_cast<std::size_t>(y) * static_cast<std::size_t>(resolution.width)]);
-  repairPixels(file, {&image, 1});
+  if (repair == PixelRepair::Repair) repairPixels(file, {&image, 1});
   return image;
 }
 

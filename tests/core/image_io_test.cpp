@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -104,6 +105,19 @@ TEST(BadImageCorpus, NanPixelsAreRepairedWithOneWarning) {
   EXPECT_EQ(image.at(2, 0), glm::vec4(0.0f, 0.5f, 0.5f, 1.0f));
   EXPECT_EQ(image.at(3, 0), glm::vec4(0.0f, 0.25f, 0.0f, 1.0f));
   EXPECT_EQ(image.at(3, 1), glm::vec4(4.0f, 4.0f, 4.0f, 1.0f));
+}
+
+TEST(BadImageCorpus, KeepReadsInvalidValuesAsStoredWithoutWarning) {
+  const std::filesystem::path file = test::dataDir() / "bad" / "nan_pixels.exr";
+  test::WarningCapture capture;
+  const Image image = readImage(file, PixelRepair::Keep);
+  EXPECT_TRUE(capture.warnings().empty());
+  EXPECT_TRUE(std::isnan(image.at(0, 0).r));
+  EXPECT_EQ(image.at(3, 0).r, -1.0f);
+  const PixelRepairCounts counts = countInvalidPixels(image);
+  EXPECT_EQ(counts.nan, 3u);
+  EXPECT_EQ(counts.inf, 1u);
+  EXPECT_EQ(counts.negative, 2u);
 }
 
 }  // namespace

@@ -1,0 +1,45 @@
+#pragma once
+// Classic full-reference image metrics, restricted to a mask of scored pixels (docs/scoring.md).
+// A mask is one byte per pixel (row-major, row 0 at the top), non-zero where the pixel is scored;
+// an empty mask scores every pixel. Masks and images must have the same size.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/core/image.h"
+
+namespace iblkit {
+
+// Mean over scored pixels and RGB channels of (test - reference)^2, on linear values.
+double meanSquaredError(const Image& reference, const Image& test, std::span<const std::uint8_t> mask = {});
+
+// Relative MSE: mean over scored pixels and RGB channels of (test - ref)^2 / (ref^2 + epsilon).
+// epsilon = 0.01 keeps near-black reference pixels from dominating (as in the denoising
+// literature, e.g. Rousselle et al. 2011); it is documented in docs/scoring.md.
+inline constexpr double kRelMseEpsilon = 0.01;
+inline double relativeSquaredError(double reference, double test) {
+  return (test - reference) * (test - reference) / (reference * reference + kRelMseEpsilon);
+}
+double relativeMeanSquaredError(const Image& reference, const Image& test,
+                                std::span<const std::uint8_t> mask = {});
+// Per pixel, the mean over RGB of relativeSquaredError (for heat maps).
+std::vector<float> relativeSquaredErrorMap(const Image& reference, const Image& test);
+
+// PSNR in dB of a linear MSE with a peak value of 1 (display white): 10 log10(1 / mse).
+// Identical images give +infinity.
+double peakSignalToNoiseRatio(double meanSquaredError);
+
+// SSIM (Wang, Bovik, Sheikh, Simoncelli 2004, "Image Quality Assessment: From Error Visibility to
+// Structural Similarity", eq. 13 with the 11x11 Gaussian window of sigma 1.5, K1 = 0.01,
+// K2 = 0.03, L = 1) on the luminance of the tone-mapped images (tone_curve.h, the default
+// ToneMapping, so values in [0,1]); the mean of the SSIM map over scored pixels. The window is
+// clamped at the image borders, so every pixel has a value.
+double structuralSimilarity(const Image& reference, const Image& test,
+                            std::span<const std::uint8_t> mask = {});
+
+// The mean of per-pixel values over scored pixels (used for FLIP maps). Throws Error when the
+// mask scores no pixel.
+double maskedMean(std::span<const float> values, std::span<const std::uint8_t> mask = {});
+
+}  // namespace iblkit
