@@ -2,25 +2,21 @@
 
 #include <gtest/gtest.h>
 
-#include "support/error_capture.h"
-
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <string>
 
 #include "engine/core/error.h"
+#include "support/error_capture.h"
+#include "support/expect_near.h"
 
 namespace iblkit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+using test::expectNear;
 
 glm::vec3 randomDirection(std::mt19937& rng) {
   std::normal_distribution<float> normal;

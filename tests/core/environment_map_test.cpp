@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include "support/error_capture.h"
-
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -12,17 +10,15 @@
 
 #include "engine/core/error.h"
 #include "engine/core/latlong.h"
+#include "support/error_capture.h"
+#include "support/expect_near.h"
 
 namespace iblkit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+using test::expectNear;
 
 // A smooth, non-symmetric radiance pattern, as a 128 x 64 lat-long image and as a map.
 Image patternImage() {

@@ -7,16 +7,14 @@
 #include <random>
 #include <vector>
 
+#include "support/expect_near.h"
+
 namespace iblkit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+using test::expectNear;
 
 // Uniform random unit directions, plus directions within 1e-3 .. 1e-12 radians of the poles and
 // on both sides of the seam (-Z, x = +-tiny), each scaled by a random length to check that

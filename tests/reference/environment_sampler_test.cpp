@@ -37,16 +37,18 @@ test::Chi2Result runChi2(const EnvironmentSampler& sampler, const std::string& n
       [&](const glm::vec3& h) { return double(sampler.pdf(fromHarness(h))); }, chi2Options(name));
 }
 
-// Integral of the map's (bilinear) radiance over the sphere by the midpoint rule in (theta, phi).
-glm::dvec3 radianceIntegral(const EnvironmentMap& map, int thetaSteps) {
-  glm::dvec3 sum(0.0);
+// Integral of f(direction) over the sphere by the midpoint rule on a thetaSteps x 2*thetaSteps
+// grid in (theta, phi) about +Y, each cell weighted by its exact solid angle.
+template <class Value, class Function>
+Value integrateOverSphere(Function&& f, int thetaSteps) {
+  Value sum(0.0);
   const double pi = glm::pi<double>(), dPhi = pi / thetaSteps;
   for (int i = 0; i < thetaSteps; ++i) {
     const double t0 = pi * i / thetaSteps, t1 = pi * (i + 1) / thetaSteps, t = 0.5 * (t0 + t1);
     for (int j = 0; j < 2 * thetaSteps; ++j) {
       const double phi = (j + 0.5) * dPhi;
       const glm::vec3 d(std::sin(t) * std::cos(phi), std::cos(t), std::sin(t) * std::sin(phi));
-      sum += glm::dvec3(map.radiance(d)) * (dPhi * (std::cos(t0) - std::cos(t1)));
+      sum += Value(f(d)) * (dPhi * (std::cos(t0) - std::cos(t1)));
     }
   }
   return sum;
@@ -124,7 +126,8 @@ TEST(EnvironmentSampler, SampledPdfMatchesPdfAndEstimatorIsUnbiased) {
   }
   EXPECT_LE(mismatches, n / 10000);
   estimate /= double(n);
-  const glm::dvec3 truth = radianceIntegral(map, 512);
+  const glm::dvec3 truth =
+      integrateOverSphere<glm::dvec3>([&](const glm::vec3& d) { return map.radiance(d); }, 512);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(estimate[c], truth[c], 0.005 * truth[c]) << "channel " << c;
 }
 
@@ -132,17 +135,8 @@ TEST(EnvironmentSampler, PdfIntegratesToOne) {
   const EnvironmentMap map = spotMap();
   for (const bool compensated : {false, true}) {
     const EnvironmentSampler sampler(map, compensated);
-    double integral = 0.0;
-    const int steps = 512;
-    const double pi = glm::pi<double>(), dPhi = pi / steps;
-    for (int i = 0; i < steps; ++i) {
-      const double t0 = pi * i / steps, t1 = pi * (i + 1) / steps, t = 0.5 * (t0 + t1);
-      for (int j = 0; j < 2 * steps; ++j) {
-        const double phi = (j + 0.5) * dPhi;
-        const glm::vec3 d(std::sin(t) * std::cos(phi), std::cos(t), std::sin(t) * std::sin(phi));
-        integral += sampler.pdf(d) * dPhi * (std::cos(t0) - std::cos(t1));
-      }
-    }
+    const double integral =
+        integrateOverSphere<double>([&](const glm::vec3& d) { return sampler.pdf(d); }, 512);
     EXPECT_NEAR(integral, 1.0, 2e-3) << (compensated ? "compensated" : "plain");
   }
 }
