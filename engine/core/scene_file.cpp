@@ -16,6 +16,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/gltf_load.h"
+#include "engine/core/procedural_mesh.h"
 
 namespace iblkit {
 
@@ -174,15 +175,47 @@ glm::mat4 modelTransform(const ObjectReader& model) {
          glm::scale(glm::mat4(1.0f), scale);
 }
 
+// A built-in shape: "sphere" is a unit sphere at the origin (place and size it with translation
+// and scale), finely tessellated so that its silhouette and interpolated normals are smooth at
+// the bundled image sizes. Its material is a white dielectric (glTF defaults with metallic 0),
+// which the model's "material" overrides.
+GltfContents shapeContents(const ObjectReader& model) {
+  const std::string shape = model.string("shape");
+  if (shape != "sphere") model.wrongValue("shape", "\"sphere\"");
+  constexpr int kRings = 96, kSegments = 192;
+  const ProceduralMesh sphere = uvSphere(glm::vec3(0.0f), 1.0f, kRings, kSegments);
+  Mesh mesh;
+  mesh.name = shape;
+  mesh.positions = sphere.positions;
+  mesh.normals = sphere.normals;
+  mesh.indices = sphere.indices;
+  Material material;
+  material.name = shape;
+  material.metallic = 0.0f;
+  GltfContents contents;
+  contents.meshes.push_back(std::move(mesh));
+  contents.materials.push_back(material);
+  return contents;
+}
+
 void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene) {
   const json& models = root.required("models");
   if (!models.is_array() || models.empty()) root.wrongValue("models", "a non-empty array of models");
   for (std::size_t i = 0; i < models.size(); ++i) {
     const ObjectReader model(models[i], "models[" + std::to_string(i) + "]", root.file(),
-                             {"file", "translation", "rotation", "scale", "material"});
-    const fs::path path = (folder / model.string("file")).lexically_normal();
+                             {"file", "shape", "translation", "rotation", "scale", "material"});
+    if (model.has("file") == model.has("shape"))
+      fail(root.file(), model.path() + ": needs exactly one of 'file' and 'shape'");
+    fs::path path;
+    GltfContents contents;
+    if (model.has("file")) {
+      path = (folder / model.string("file")).lexically_normal();
+      contents = loadGltf(path);
+    } else {
+      contents = shapeContents(model);
+      path = "shape:" + model.string("shape");
+    }
     const glm::mat4 transform = modelTransform(model);
-    GltfContents contents = loadGltf(path);
 
     const int materialOffset = int(scene.materials.size());
     for (Material& material : contents.materials) {

@@ -153,6 +153,31 @@ TEST_F(SceneFile, Defaults) {
   EXPECT_EQ(load({{"models", {cubeModel()}}, {"ground", {{"enabled", false}}}}).meshes.size(), 1u);
 }
 
+TEST_F(SceneFile, BuiltInSphereShape) {
+  const Scene scene = load({{"models",
+                             {{{"shape", "sphere"},
+                               {"translation", {0, 2, 0}},
+                               {"scale", 0.5},
+                               {"material", {{"metallic", 1}, {"roughness", 0}}}}}}});
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& sphere = scene.meshes[0];
+  for (std::size_t i = 0; i < sphere.positions.size(); ++i) {
+    ASSERT_NEAR(glm::length(sphere.positions[i] - glm::vec3(0, 2, 0)), 0.5f, 1e-5f);
+    ASSERT_NEAR(glm::dot(sphere.normals[i], (sphere.positions[i] - glm::vec3(0, 2, 0)) / 0.5f), 1.0f, 1e-5f);
+  }
+  expectNear(scene.bounds.min, glm::vec3(-0.5f, 1.5f, -0.5f));
+  expectNear(scene.bounds.max, glm::vec3(0.5f, 2.5f, 0.5f));
+  const Material& material = scene.materials.at(std::size_t(sphere.material));
+  EXPECT_EQ(material.baseColor, glm::vec3(1.0f));
+  EXPECT_EQ(material.metallic, 1.0f);
+  EXPECT_EQ(material.roughness, 0.0f);
+
+  EXPECT_EQ(error({{"models", {{{"shape", "cube"}}}}}), "models[0].shape: expected \"sphere\"");
+  EXPECT_EQ(error({{"models", {{{"shape", "sphere"}, {"file", "../models/cube.gltf"}}}}}),
+            "models[0]: needs exactly one of 'file' and 'shape'");
+  EXPECT_EQ(error({{"models", {json::object()}}}), "models[0]: needs exactly one of 'file' and 'shape'");
+}
+
 TEST_F(SceneFile, NegativeScaleMirrorsWithOutwardNormals) {
   const Scene scene = load({{"models", {{{"file", "../models/cube.gltf"}, {"scale", {-1, 1, 1}}}}}});
   const Mesh& m = scene.meshes.at(0);
@@ -171,7 +196,7 @@ TEST_F(SceneFile, NegativeScaleMirrorsWithOutwardNormals) {
 TEST_F(SceneFile, UnknownKeysAndWrongTypesNameTheKeyPath) {
   const json model = cubeModel();
   EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"scael", 2}}}}}),
-            "models[0].scael: unknown key (expected one of: file, translation, rotation, scale, material)");
+            "models[0].scael: unknown key (expected one of: file, shape, translation, rotation, scale, material)");
   EXPECT_EQ(error({{"models", {model}}, {"camrea", {}}}),
             "camrea: unknown key (expected one of: models, ground, environment, camera, width, height)");
   EXPECT_EQ(error({{"models", {model}}, {"ground", {{"material", {{"colour", {1, 1, 1}}}}}}}),
@@ -189,7 +214,7 @@ TEST_F(SceneFile, UnknownKeysAndWrongTypesNameTheKeyPath) {
             "models[0].material.roughness: expected a number in [0, 1]");
   EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"material", {{"baseColor", {1, 1}}}}}}}}),
             "models[0].material.baseColor: expected an array of 3 numbers in [0, 1]");
-  EXPECT_EQ(error({{"models", {{{"translation", {0, 0, 0}}}}}}), "models[0]: missing required key 'file'");
+  EXPECT_EQ(error({{"models", {{{"translation", {0, 0, 0}}}}}}), "models[0]: needs exactly one of 'file' and 'shape'");
   EXPECT_EQ(error({{"models", json::array()}}), "models: expected a non-empty array of models");
   EXPECT_EQ(error(json::object()), "the document: missing required key 'models'");
   EXPECT_EQ(error(json::array()), "the document: expected an object");
