@@ -1,0 +1,43 @@
+#pragma once
+// The numbers the report gives for one engine frame against its path-traced reference, and the
+// reference's own error (docs/report.md). Scored pixels are those that see geometry: the sky is
+// drawn from the same map by both programs and is trivially right.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/core/image.h"
+#include "score/flip.h"
+
+namespace iblkit {
+
+struct FrameScores {
+  double meanFlip = 0.0;           // HDR-FLIP (score/flip.h), mean over scored pixels
+  double relMse = 0.0;             // relative MSE over scored pixels (score/image_metrics.h)
+  double meanRelativeError = 0.0;  // sum |L_test - L_ref| / sum L_ref over scored pixels (luminance)
+  double ssim = 0.0;               // SSIM of the tone-mapped luminance over scored pixels
+  std::size_t invalidPixels = 0;   // NaN or infinite values in the test image; such a frame fails
+};
+
+// Scores `test` against `reference` (same size) over `mask` with HDR-FLIP at the given exposure
+// bracket, which the caller fixes per reference so that every mode is scored the same way.
+// When the test image has NaN or infinite values, only invalidPixels is set: those pixels are a
+// failure to report, not a number to average. `flip` (optional) receives the FLIP error map.
+FrameScores scoreFrame(const Image& reference, const Image& test, std::span<const std::uint8_t> mask,
+                       const ExposureRange& exposures, FlipErrorMap* flip = nullptr);
+
+// The relative MSE of the mean of two independent, equally weighted Monte Carlo halves a and b,
+// estimated from their difference: E[(a - b)^2] = 2 var(half) and var(mean) = var(half) / 2, so
+// relMSE(mean) ~ relMSE(a vs b) / 4 (with the mean as the denominator's reference).
+double halvesRelMseEstimate(const Image& a, const Image& b, std::span<const std::uint8_t> mask);
+
+// Pixels that see geometry: a depth layer (distance along the camera ray, 0 where nothing is hit,
+// iblkit-trace --depth) above 0.
+std::vector<std::uint8_t> geometryMask(const Image& depth);
+
+// The pixel-wise mean of two images of the same size.
+Image averageImages(const Image& a, const Image& b);
+
+}  // namespace iblkit

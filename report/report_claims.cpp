@@ -1,0 +1,112 @@
+#include "report/report_claims.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace iblkit {
+
+double metricValue(const FrameScores& scores, Metric metric) {
+  switch (metric) {
+    case Metric::MeanFlip: return scores.meanFlip;
+    case Metric::RelMse: return scores.relMse;
+    case Metric::MeanRelativeError: return scores.meanRelativeError;
+    case Metric::Ssim: return scores.ssim;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double meanOverEnvironments(const std::vector<CaseResult>& cases, const std::string& scene, const std::string& mode,
+                            Metric metric, int* failures) {
+  double sum = 0.0;
+  int count = 0, failed = 0;
+  for (const CaseResult& result : cases) {
+    if (result.scene != scene) continue;
+    for (const ModeResult& modeResult : result.modes) {
+      if (modeResult.mode != mode) continue;
+      if (!modeResult.failure.empty()) {
+        ++failed;
+        continue;
+      }
+      sum += metricValue(modeResult.scores, metric);
+      ++count;
+    }
+  }
+  if (failures) *failures = failed;
+  return count > 0 ? sum / count : std::numeric_limits<double>::quiet_NaN();
+}
+
+namespace {
+
+bool hasMode(const std::vector<CaseResult>& cases, const std::string& scene, const std::string& mode) {
+  for (const CaseResult& result : cases)
+    for (const ModeResult& modeResult : result.modes)
+      if (result.scene == scene && modeResult.mode == mode) return true;
+  return false;
+}
+
+int environmentCount(const std::vector<CaseResult>& cases, const std::string& scene) {
+  int count = 0;
+  for (const CaseResult& result : cases) count += result.scene == scene ? 1 : 0;
+  return count;
+}
+
+std::string format(double value) {
+  std::ostringstream text;
+  text.precision(4);
+  text << value;
+  return text.str();
+}
+
+// measured <= bound (or measured > bound when `strictlyAbove`, for ladder rungs where the lower
+// rung's error is the bound).
+void addClaim(std::vector<Claim>& claims, const std::vector<CaseResult>& cases, const std::string& scene,
+              const std::string& statement, double measured, double bound, bool above, bool strict,
+              int failures) {
+  if (environmentCount(cases, scene) == 0) return;
+  Claim claim;
+  claim.statement = statement;
+  claim.measured = measured;
+  claim.bound = bound;
+  const bool measuredOk = std::isfinite(measured) && std::isfinite(bound) && failures == 0;
+  if (above)
+    claim.holds = measuredOk && (strict ? measured > bound : measured >= bound);
+  else
+    claim.holds = measuredOk && (strict ? measured < bound : measured <= bound);
+  claim.detail = "averaged over " + std::to_string(environmentCount(cases, scene)) + " environments";
+  if (failures > 0) claim.detail += "; " + std::to_string(failures) + " frames failed";
+  claims.push_back(claim);
+}
+
+}  // namespace
+
+std::vector<Claim> evaluateClaims(const std::vector<CaseResult>& cases) {
+  std::vector<Claim> claims;
+  int failures = 0;
+  if (hasMode(cases, "mirror_sphere", "mirror")) {
+    const double mirror = meanOverEnvironments(cases, "mirror_sphere", "mirror", Metric::MeanFlip, &failures);
+    addClaim(claims, cases, "mirror_sphere", "mirror_sphere: mirror mode mean FLIP <= 0.02", mirror, 0.02, false,
+             false, failures);
+  }
+  if (hasMode(cases, "diffuse_sphere", "sh")) {
+    const double diffuse = meanOverEnvironments(cases, "diffuse_sphere", "sh", Metric::MeanRelativeError, &failures);
+    addClaim(claims, cases, "diffuse_sphere", "diffuse_sphere: sh mode mean relative error <= 3%", diffuse, 0.03,
+             false, false, failures);
+  }
+
+  const char* ladder[] = {"sh", "sh-ao", "sh-ao-bent", "prt"};
+  for (int rung = 0; rung + 1 < 4; ++rung) {
+    if (!hasMode(cases, "bunny", ladder[rung]) || !hasMode(cases, "bunny", ladder[rung + 1])) continue;
+    int upperFailures = 0, lowerFailures = 0;
+    const double upper = meanOverEnvironments(cases, "bunny", ladder[rung], Metric::MeanFlip, &upperFailures);
+    const double lower = meanOverEnvironments(cases, "bunny", ladder[rung + 1], Metric::MeanFlip, &lowerFailures);
+    const bool strict = rung < 2;  // the last rung, prt, need only be no worse
+    addClaim(claims, cases, "bunny",
+             std::string("bunny: mean FLIP of ") + ladder[rung] + (strict ? " > " : " >= ") + ladder[rung + 1] +
+                 " (" + format(upper) + (strict ? " > " : " >= ") + format(lower) + ")",
+             upper, lower, true, strict, upperFailures + lowerFailures);
+  }
+  return claims;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,33 @@
+#pragma once
+// What the demo's numbers must show (issue 6), checked by the report itself on its own results:
+//  - the lone mirror sphere's `mirror` frames: mean FLIP at most 0.02, averaged over environments;
+//  - the lone diffuse sphere's `sh` frames: mean relative error at most 3%, averaged likewise;
+//  - the white bunny on its ground: the approximation ladder sh > sh-ao > sh-ao-bent >= prt in
+//    mean FLIP averaged over environments, each rung a claim of its own.
+// A claim whose scene or modes are not in the report is left out; a claim whose frames failed
+// does not hold.
+
+#include <string>
+#include <vector>
+
+#include "report/report_case.h"
+
+namespace iblkit {
+
+struct Claim {
+  std::string statement;  // e.g. "mirror_sphere: mirror mean FLIP <= 0.02"
+  double measured = 0.0, bound = 0.0;
+  bool holds = false;
+  std::string detail;  // what was averaged, or why it could not be measured
+};
+
+std::vector<Claim> evaluateClaims(const std::vector<CaseResult>& cases);
+
+// The mean of a mode's metric over the environments of a scene; sets `failures` to the number of
+// that scene's cases where the mode has no score. NaN when no case has one.
+enum class Metric { MeanFlip, RelMse, MeanRelativeError, Ssim };
+double meanOverEnvironments(const std::vector<CaseResult>& cases, const std::string& scene, const std::string& mode,
+                            Metric metric, int* failures = nullptr);
+double metricValue(const FrameScores& scores, Metric metric);
+
+}  // namespace iblkit

@@ -1,0 +1,277 @@
+#include "report/report_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "engine/core/error.h"
+
+namespace iblkit {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+void writeAtomically(const fs::path& file, const std::string& text) {
+  const fs::path temporary = file.string() + ".tmp";
+  {
+    std::ofstream stream(temporary, std::ios::binary);
+    stream << text;
+    if (!stream) fail(temporary, "cannot write file");
+  }
+  std::error_code error;
+  fs::rename(temporary, file, error);
+  if (error) fail(file, "cannot write file: " + error.message());
+}
+
+json number(double value) { return std::isfinite(value) ? json(value) : json(); }
+
+std::string fixed(double value, int digits) {
+  if (!std::isfinite(value)) return "&ndash;";
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(digits);
+  text << value;
+  return text.str();
+}
+
+std::string escape(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) {
+    if (c == '<') escaped += "&lt;";
+    else if (c == '>') escaped += "&gt;";
+    else if (c == '&') escaped += "&amp;";
+    else escaped += c;
+  }
+  return escaped;
+}
+
+std::vector<std::string> scenesInOrder(const std::vector<CaseResult>& cases) {
+  std::vector<std::string> scenes;
+  for (const CaseResult& result : cases)
+    if (std::find(scenes.begin(), scenes.end(), result.scene) == scenes.end()) scenes.push_back(result.scene);
+  return scenes;
+}
+
+const ModeResult* findMode(const CaseResult& result, const std::string& mode) {
+  for (const ModeResult& modeResult : result.modes)
+    if (modeResult.mode == mode) return &modeResult;
+  return nullptr;
+}
+
+}  // namespace
+
+void writeReportJson(const fs::path& file, const ReportSummary& summary) {
+  json document;
+  document["settings"] = {{"width", summary.settings.width},
+                          {"height", summary.settings.height},
+                          {"modes", summary.modes},
+                          {"passSpp", summary.settings.passSpp},
+                          {"maxPasses", summary.settings.maxPasses},
+                          {"negligibleRatio", summary.settings.negligibleRatio}};
+  document["seconds"] = summary.totalSeconds;
+  document["stages"] = {{"cached", summary.cachedStages}, {"run", summary.runStages}};
+  for (const Claim& claim : summary.claims)
+    document["claims"].push_back({{"statement", claim.statement},
+                                  {"measured", number(claim.measured)},
+                                  {"bound", number(claim.bound)},
+                                  {"holds", claim.holds},
+                                  {"detail", claim.detail}});
+  for (const CaseResult& result : summary.cases) {
+    json entry = {{"scene", result.scene},
+                  {"environment", result.environment},
+                  {"sceneFile", result.sceneFile.string()},
+                  {"environmentFile", result.environmentFile.string()},
+                  {"bakeSeconds", result.bakeSeconds},
+                  {"traceSeconds", result.traceSeconds},
+                  {"reference", {{"spp", result.referenceSpp},
+                                 {"relMseEstimate", number(result.referenceRelMse)},
+                                 {"converged", result.referenceConverged},
+                                 {"image", result.referenceImage}}},
+                  {"scoredPixels", result.scoredPixels},
+                  {"flipExposureRange", {result.flipExposures.start, result.flipExposures.stop}},
+                  {"thumbnailExposure", result.exposure},
+                  {"commands", result.commands}};
+    for (const ModeResult& modeResult : result.modes) {
+      json mode = {{"mode", modeResult.mode}, {"frameMilliseconds", number(modeResult.frameMilliseconds)}};
+      if (modeResult.failure.empty()) {
+        mode["meanFlip"] = modeResult.scores.meanFlip;
+        mode["relMse"] = modeResult.scores.relMse;
+        mode["meanRelativeError"] = modeResult.scores.meanRelativeError;
+        mode["ssim"] = modeResult.scores.ssim;
+        mode["image"] = modeResult.image;
+        mode["flipHeatMap"] = modeResult.heatMap;
+      } else {
+        mode["failure"] = modeResult.failure;
+      }
+      entry["modes"].push_back(mode);
+    }
+    document["cases"].push_back(entry);
+  }
+  writeAtomically(file, document.dump(2) + "\n");
+}
+
+std::string ladderSvg(const std::vector<CaseResult>& cases, const std::string& scene,
+                      const std::vector<std::string>& modes) {
+  constexpr double kWidth = 560, kHeight = 260, kLeft = 60, kRight = 110, kTop = 16, kBottom = 40;
+  double top = 0.0;
+  std::vector<const CaseResult*> sceneCases;
+  for (const CaseResult& result : cases) {
+    if (result.scene != scene) continue;
+    sceneCases.push_back(&result);
+    for (const ModeResult& modeResult : result.modes)
+      if (modeResult.failure.empty()) top = std::max(top, modeResult.scores.meanFlip);
+  }
+  top = top > 0.0 ? top * 1.1 : 1.0;
+  const double plotWidth = kWidth - kLeft - kRight, plotHeight = kHeight - kTop - kBottom;
+  auto x = [&](std::size_t i) { return kLeft + (modes.size() > 1 ? plotWidth * double(i) / double(modes.size() - 1) : 0.0); };
+  auto y = [&](double value) { return kTop + plotHeight * (1.0 - value / top); };
+
+  std::ostringstream svg;
+  svg.setf(std::ios::fixed);
+  svg.precision(1);
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
+      << "\" font-family=\"sans-serif\" font-size=\"11\">\n";
+  svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotWidth << "\" height=\"" << plotHeight
+      << "\" fill=\"none\" stroke=\"#999\"/>\n";
+  for (int tick = 0; tick <= 4; ++tick) {
+    const double value = top * tick / 4.0;
+    svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << y(value) + 4 << "\" text-anchor=\"end\">"
+        << fixed(value, 3) << "</text>\n";
+  }
+  svg << "<text x=\"14\" y=\"" << kTop + plotHeight / 2 << "\" transform=\"rotate(-90 14 " << kTop + plotHeight / 2
+      << ")\" text-anchor=\"middle\">mean FLIP</text>\n";
+  for (std::size_t i = 0; i < modes.size(); ++i)
+    svg << "<text x=\"" << x(i) << "\" y=\"" << kHeight - kBottom + 16 << "\" text-anchor=\"middle\">" << modes[i]
+        << "</text>\n";
+
+  auto polyline = [&](const std::vector<double>& values, const char* style, const std::string& label) {
+    std::ostringstream points;
+    points.setf(std::ios::fixed);
+    points.precision(1);
+    double lastY = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!std::isfinite(values[i])) continue;
+      points << x(i) << "," << y(values[i]) << " ";
+      lastY = y(values[i]);
+    }
+    svg << "<polyline fill=\"none\" " << style << " points=\"" << points.str() << "\"/>\n";
+    svg << "<text x=\"" << kLeft + plotWidth + 6 << "\" y=\"" << lastY + 4 << "\">" << label << "</text>\n";
+  };
+  for (const CaseResult* result : sceneCases) {
+    std::vector<double> values;
+    for (const std::string& mode : modes) {
+      const ModeResult* modeResult = findMode(*result, mode);
+      values.push_back(modeResult && modeResult->failure.empty() ? modeResult->scores.meanFlip
+                                                                  : std::numeric_limits<double>::quiet_NaN());
+    }
+    polyline(values, "stroke=\"#9ab\" stroke-width=\"1\"", result->environment);
+  }
+  std::vector<double> means;
+  for (const std::string& mode : modes) means.push_back(meanOverEnvironments(cases, scene, mode, Metric::MeanFlip));
+  polyline(means, "stroke=\"#c30\" stroke-width=\"3\"", "<tspan font-weight=\"bold\">mean</tspan>");
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+void writeReportHtml(const fs::path& file, const ReportSummary& summary) {
+  std::ostringstream html;
+  html << R"(<!doctype html>
+<html><head><meta charset="utf-8"><title>iblkit: real-time IBL approximations against the path-traced truth</title>
+<style>
+body{font-family:sans-serif;margin:2em;max-width:1500px;color:#222}
+table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:3px 6px;font-size:13px;text-align:right}
+th{background:#f4f4f4}td.l,th.l{text-align:left}.ok{color:#070;font-weight:bold}.no{color:#b00;font-weight:bold}
+figure{display:inline-block;margin:2px;vertical-align:top}figcaption{font-size:11px;text-align:center}
+img{display:block}code{font-size:11px}.small{font-size:12px;color:#555}
+</style></head><body>
+<h1>iblkit: how far each real-time approximation is from the path-traced truth</h1>
+<p>Every scene is baked (<code>iblkit-bake</code>), rendered headless in every engine mode
+(<code>iblkit-view</code>, OpenGL) and path-traced (<code>iblkit-trace</code>) with the same camera,
+environment orientation, material model and tone curve. Each mode is scored against the reference
+over the pixels that see geometry (the sky is trivially right): HDR-FLIP with one exposure bracket
+per reference, relative MSE, the luminance-weighted mean relative error and SSIM
+(<code>docs/scoring.md</code>, <code>docs/report.md</code>). The reference is traced in passes until its own
+relMSE, estimated from two independent halves, is at most )"
+       << summary.settings.negligibleRatio * 100.0 << R"(% of the best mode's.</p>
+)";
+  html << "<h2>What the numbers must show</h2>\n<table><tr><th class=l>claim</th><th>measured</th><th>bound</th><th>holds</th><th class=l>detail</th></tr>\n";
+  for (const Claim& claim : summary.claims)
+    html << "<tr><td class=l>" << escape(claim.statement) << "</td><td>" << fixed(claim.measured, 4) << "</td><td>"
+         << fixed(claim.bound, 4) << "</td><td class=" << (claim.holds ? "ok>yes" : "no>no") << "</td><td class=l>"
+         << escape(claim.detail) << "</td></tr>\n";
+  html << "</table>\n";
+
+  for (const std::string& scene : scenesInOrder(summary.cases)) {
+    html << "<h2>" << scene << "</h2>\n";
+    std::vector<const CaseResult*> sceneCases;
+    for (const CaseResult& result : summary.cases)
+      if (result.scene == scene) sceneCases.push_back(&result);
+    html << "<p class=small>Mean FLIP / relMSE / mean relative error per mode and environment; the last column"
+            " averages over the environments.</p>\n<table><tr><th class=l>mode</th>";
+    for (const CaseResult* result : sceneCases) html << "<th>" << result->environment << "</th>";
+    html << "<th>mean</th><th>frame (ms)</th></tr>\n";
+    for (const std::string& mode : summary.modes) {
+      html << "<tr><td class=l>" << mode << "</td>";
+      std::vector<double> frameTimes;
+      for (const CaseResult* result : sceneCases) {
+        const ModeResult* modeResult = findMode(*result, mode);
+        if (!modeResult) {
+          html << "<td></td>";
+        } else if (!modeResult->failure.empty()) {
+          html << "<td class=no title=\"" << escape(modeResult->failure) << "\">failed</td>";
+        } else {
+          html << "<td>" << fixed(modeResult->scores.meanFlip, 4) << " / " << fixed(modeResult->scores.relMse, 4)
+               << " / " << fixed(100.0 * modeResult->scores.meanRelativeError, 1) << "%</td>";
+        }
+        if (modeResult && std::isfinite(modeResult->frameMilliseconds)) frameTimes.push_back(modeResult->frameMilliseconds);
+      }
+      std::sort(frameTimes.begin(), frameTimes.end());
+      html << "<td><b>" << fixed(meanOverEnvironments(summary.cases, scene, mode, Metric::MeanFlip), 4) << " / "
+           << fixed(meanOverEnvironments(summary.cases, scene, mode, Metric::RelMse), 4) << " / "
+           << fixed(100.0 * meanOverEnvironments(summary.cases, scene, mode, Metric::MeanRelativeError), 1)
+           << "%</b></td><td>" << (frameTimes.empty() ? "&ndash;" : fixed(frameTimes[frameTimes.size() / 2], 1))
+           << "</td></tr>\n";
+    }
+    html << "</table>\n" << ladderSvg(summary.cases, scene, summary.modes);
+    html << "<table><tr><th class=l>environment</th><th>bake (s)</th><th>trace (s)</th><th>reference spp</th>"
+            "<th>reference relMSE (estimated)</th><th>converged</th></tr>\n";
+    for (const CaseResult* result : sceneCases)
+      html << "<tr><td class=l>" << result->environment << "</td><td>" << fixed(result->bakeSeconds, 1) << "</td><td>"
+           << fixed(result->traceSeconds, 1) << "</td><td>" << result->referenceSpp << "</td><td>"
+           << fixed(result->referenceRelMse, 5) << "</td><td class=" << (result->referenceConverged ? "ok>yes" : "no>no")
+           << "</td></tr>\n";
+    html << "</table>\n";
+    for (const CaseResult* result : sceneCases) {
+      html << "<h3>" << scene << " under " << result->environment << "</h3>\n<div>";
+      const int w = summary.settings.width, h = summary.settings.height;
+      html << "<figure><img src=\"" << result->referenceImage << "\" width=" << w << " height=" << h
+           << "><figcaption>reference, " << result->referenceSpp << " spp</figcaption></figure>";
+      for (const ModeResult& modeResult : result->modes) {
+        if (!modeResult.failure.empty()) {
+          html << "<figure><figcaption class=no>" << modeResult.mode << ": " << escape(modeResult.failure)
+               << "</figcaption></figure>";
+          continue;
+        }
+        html << "<figure><img src=\"" << modeResult.image << "\" width=" << w << " height=" << h << "><img src=\""
+             << modeResult.heatMap << "\" width=" << w << "><figcaption>" << modeResult.mode << ": FLIP "
+             << fixed(modeResult.scores.meanFlip, 4) << "</figcaption></figure>";
+      }
+      html << "</div>\n<details><summary class=small>commands</summary><pre class=small>";
+      for (const std::string& command : result->commands) html << escape(command) << "\n";
+      html << "</pre></details>\n";
+    }
+  }
+  html << "<p class=small>Report written in " << fixed(summary.totalSeconds, 1) << " s; " << summary.runStages
+       << " stages run, " << summary.cachedStages << " taken from the cache. Thumbnails: ACES fitted tone curve, the"
+          " exposure that maps the reference's median scored luminance to 0.18; heat maps: HDR-FLIP error,"
+          " magma, 0 to 1.</p>\n</body></html>\n";
+  writeAtomically(file, html.str());
+}
+
+}  // namespace iblkit

@@ -1,0 +1,72 @@
+#include "report/report_claims.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace iblkit {
+namespace {
+
+CaseResult caseOf(const std::string& scene, const std::string& environment,
+                  const std::vector<std::pair<std::string, double>>& flips) {
+  CaseResult result;
+  result.scene = scene;
+  result.environment = environment;
+  for (const auto& [mode, flip] : flips) {
+    ModeResult modeResult;
+    modeResult.mode = mode;
+    modeResult.scores.meanFlip = flip;
+    modeResult.scores.meanRelativeError = flip;  // the tests below read one or the other
+    result.modes.push_back(modeResult);
+  }
+  return result;
+}
+
+TEST(ReportClaims, LadderRungsAreAveragedOverEnvironments) {
+  const std::vector<CaseResult> cases = {
+      caseOf("bunny", "sky", {{"sh", 0.30}, {"sh-ao", 0.20}, {"sh-ao-bent", 0.25}, {"prt", 0.10}}),
+      caseOf("bunny", "city", {{"sh", 0.10}, {"sh-ao", 0.08}, {"sh-ao-bent", 0.01}, {"prt", 0.02}}),
+  };
+  const std::vector<Claim> claims = evaluateClaims(cases);
+  ASSERT_EQ(claims.size(), 3u);
+  EXPECT_EQ(claims[0].statement, "bunny: mean FLIP of sh > sh-ao (0.2 > 0.14)");
+  EXPECT_TRUE(claims[0].holds);
+  EXPECT_NEAR(claims[1].measured, 0.14, 1e-12);
+  EXPECT_NEAR(claims[1].bound, 0.13, 1e-12);
+  EXPECT_TRUE(claims[1].holds);  // the mean decides, not each environment
+  EXPECT_TRUE(claims[2].holds);  // 0.13 >= 0.06
+  EXPECT_EQ(claims[2].detail, "averaged over 2 environments");
+
+  const std::vector<CaseResult> inverted = {
+      caseOf("bunny", "sky", {{"sh", 0.1}, {"sh-ao", 0.2}, {"sh-ao-bent", 0.2}, {"prt", 0.2}})};
+  const std::vector<Claim> failing = evaluateClaims(inverted);
+  EXPECT_FALSE(failing[0].holds);
+  EXPECT_FALSE(failing[1].holds);  // equal is not better for a strict rung
+  EXPECT_TRUE(failing[2].holds);   // prt need only be no worse
+}
+
+TEST(ReportClaims, SphereBoundsAndFailedFrames) {
+  std::vector<CaseResult> cases = {caseOf("mirror_sphere", "sky", {{"mirror", 0.015}}),
+                                   caseOf("mirror_sphere", "city", {{"mirror", 0.02}}),
+                                   caseOf("diffuse_sphere", "sky", {{"sh", 0.05}})};
+  std::vector<Claim> claims = evaluateClaims(cases);
+  ASSERT_EQ(claims.size(), 2u);
+  EXPECT_TRUE(claims[0].holds);
+  EXPECT_NEAR(claims[0].measured, 0.0175, 1e-12);
+  EXPECT_FALSE(claims[1].holds);
+  EXPECT_EQ(claims[1].bound, 0.03);
+
+  cases[1].modes[0].failure = "3 NaN or infinite pixel values";
+  claims = evaluateClaims(cases);
+  EXPECT_FALSE(claims[0].holds);  // a failed frame is not averaged away
+  EXPECT_EQ(claims[0].detail, "averaged over 2 environments; 1 frames failed");
+}
+
+TEST(ReportClaims, ClaimsWithoutTheirSceneOrModeAreLeftOut) {
+  EXPECT_TRUE(evaluateClaims({caseOf("suzi", "sky", {{"sh", 0.1}})}).empty());
+  EXPECT_TRUE(evaluateClaims({caseOf("bunny", "sky", {{"full", 0.1}})}).empty());
+  EXPECT_TRUE(std::isnan(meanOverEnvironments({}, "bunny", "sh", Metric::MeanFlip)));
+}
+
+}  // namespace
+}  // namespace iblkit

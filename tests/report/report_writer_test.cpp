@@ -1,0 +1,77 @@
+#include "report/report_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+ReportSummary summaryWithOneFailure() {
+  ReportSummary summary;
+  summary.modes = {"sh", "sh-ao"};
+  for (const char* environment : {"sky", "city"}) {
+    CaseResult result;
+    result.scene = "bunny";
+    result.environment = environment;
+    result.referenceSpp = 256;
+    result.referenceRelMse = 1e-4;
+    result.referenceConverged = true;
+    for (const std::string& mode : summary.modes) {
+      ModeResult modeResult;
+      modeResult.mode = mode;
+      modeResult.scores.meanFlip = mode == "sh" ? 0.2 : 0.1;
+      modeResult.frameMilliseconds = 4.0;
+      result.modes.push_back(modeResult);
+    }
+    summary.cases.push_back(result);
+  }
+  summary.cases[1].modes[1].failure = "2 NaN or infinite pixel values";
+  summary.claims = evaluateClaims(summary.cases);
+  return summary;
+}
+
+std::string readText(const std::filesystem::path& file) {
+  std::ifstream stream(file);
+  std::stringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+TEST(ReportWriter, JsonHoldsTheNumbersAndTheFailure) {
+  const auto file = test::scratchDir() / "report.json";
+  writeReportJson(file, summaryWithOneFailure());
+  const nlohmann::json report = nlohmann::json::parse(readText(file));
+  ASSERT_EQ(report["cases"].size(), 2u);
+  EXPECT_EQ(report["cases"][0]["modes"][0]["meanFlip"], 0.2);
+  EXPECT_EQ(report["cases"][0]["reference"]["spp"], 256);
+  EXPECT_EQ(report["cases"][1]["modes"][1]["failure"], "2 NaN or infinite pixel values");
+  EXPECT_FALSE(report["cases"][1]["modes"][1].contains("meanFlip"));
+  EXPECT_EQ(report["claims"][0]["holds"], false);  // the failed frame breaks the sh > sh-ao rung
+  EXPECT_FALSE(std::filesystem::exists(file.string() + ".tmp"));
+}
+
+TEST(ReportWriter, HtmlShowsClaimsTablesAndPlot) {
+  const auto file = test::scratchDir() / "report.html";
+  writeReportHtml(file, summaryWithOneFailure());
+  const std::string html = readText(file);
+  EXPECT_NE(html.find("bunny: mean FLIP of sh &gt; sh-ao"), std::string::npos);
+  EXPECT_NE(html.find("<td class=no title=\"2 NaN or infinite pixel values\">failed</td>"), std::string::npos);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+}
+
+TEST(ReportWriter, LadderPlotHasALinePerEnvironmentAndTheMean) {
+  const std::string svg = ladderSvg(summaryWithOneFailure().cases, "bunny", {"sh", "sh-ao"});
+  std::size_t lines = 0;
+  for (std::size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++lines;
+  EXPECT_EQ(lines, 3u);
+  EXPECT_NE(svg.find(">sky</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">city</text>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace iblkit
