@@ -48,7 +48,9 @@ std::string tryDisplay(EGLDisplay display, Attempt& attempt) {
     return why;
   };
   if (!eglBindAPI(EGL_OPENGL_API)) return give_up("no desktop OpenGL API");
-  const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  // No surface is ever made, but EGL's default surface type (window) has no configs without a
+  // window system; pbuffer configs exist on every platform.
+  const EGLint configAttributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configCount = 0;
   if (!eglChooseConfig(display, configAttributes, &config, 1, &configCount) || configCount < 1)
