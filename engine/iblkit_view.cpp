@@ -70,29 +70,37 @@ struct FrameTimes {
   double cpuMs = 0.0, gpuMs = 0.0;
 };
 
-// Median times of `frames` frames: CPU time from the first GL call to glFinish, and the GPU time
-// of a GL_TIME_ELAPSED query around the frame.
-FrameTimes benchmark(Renderer& renderer, RenderTarget& target, const Camera& camera,
-                     const FrameSettings& settings, int frames) {
-  std::vector<double> cpu, gpu;
+// Median frame times of each mode over `frames` rounds; each round renders every mode once, in
+// turn, so that load from other processes weighs on all modes alike. CPU time runs from the first
+// GL call to glFinish; GPU time is a GL_TIME_ELAPSED query around the frame (llvmpipe's is not
+// meaningful: it renders when glFinish asks).
+std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, const Camera& camera,
+                                  const FrameSettings& settings, const std::vector<ShadingMode>& modes,
+                                  int frames) {
+  std::vector<std::vector<double>> cpu(modes.size()), gpu(modes.size());
   GLuint query = 0;
   glCreateQueries(GL_TIME_ELAPSED, 1, &query);
-  for (int frame = 0; frame < frames; ++frame) {
-    const auto start = std::chrono::steady_clock::now();
-    glBeginQuery(GL_TIME_ELAPSED, query);
-    renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
-    target.resolve();
-    glEndQuery(GL_TIME_ELAPSED);
-    glFinish();
-    cpu.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    GLuint64 nanoseconds = 0;
-    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);
-    gpu.push_back(double(nanoseconds) * 1e-6);
-  }
+  for (int frame = 0; frame < frames; ++frame)
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+      FrameSettings modeSettings = settings;
+      modeSettings.mode = modes[m];
+      const auto start = std::chrono::steady_clock::now();
+      glBeginQuery(GL_TIME_ELAPSED, query);
+      renderer.render(camera, modeSettings, target.framebuffer(), target.width(), target.height());
+      target.resolve();
+      glEndQuery(GL_TIME_ELAPSED);
+      glFinish();
+      cpu[m].push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      GLuint64 nanoseconds = 0;
+      glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);
+      gpu[m].push_back(double(nanoseconds) * 1e-6);
+    }
   glDeleteQueries(1, &query);
   checkGlErrors("benchmark");
-  return {median(cpu), median(gpu)};
+  std::vector<FrameTimes> times;
+  for (std::size_t m = 0; m < modes.size(); ++m) times.push_back({median(cpu[m]), median(gpu[m])});
+  return times;
 }
 
 void writeLayer(Renderer& renderer, RenderTarget& target, const Camera& camera, FrameSettings settings,
@@ -135,16 +143,15 @@ int runHeadless(const Options& options) {
               << target.samples() << " sample(s), median of " << options.bench << " frames\n";
     std::vector<ShadingMode> modes(std::begin(kShadingModes), std::end(kShadingModes));
     if (!allModes) modes = {settings.mode};
+    benchmark(renderer, target, camera, settings, modes, 2);  // warm-up: shader variants, caches
+    const std::vector<FrameTimes> times = benchmark(renderer, target, camera, settings, modes, options.bench);
     double unlit = 0.0, full = 0.0;
-    for (ShadingMode mode : modes) {
-      FrameSettings modeSettings = settings;
-      modeSettings.mode = mode;
-      benchmark(renderer, target, camera, modeSettings, 2);  // warm-up: shader variants, caches
-      const FrameTimes times = benchmark(renderer, target, camera, modeSettings, options.bench);
+    for (std::size_t m = 0; m < modes.size(); ++m) {
       std::cout << std::fixed << std::setprecision(2) << "  " << std::left << std::setw(11)
-                << shadingModeName(mode) << " cpu " << times.cpuMs << " ms  gpu " << times.gpuMs << " ms\n";
-      if (mode == ShadingMode::Unlit) unlit = times.cpuMs;
-      if (mode == ShadingMode::Full) full = times.cpuMs;
+                << shadingModeName(modes[m]) << " cpu " << times[m].cpuMs << " ms  gpu " << times[m].gpuMs
+                << " ms\n";
+      if (modes[m] == ShadingMode::Unlit) unlit = times[m].cpuMs;
+      if (modes[m] == ShadingMode::Full) full = times[m].cpuMs;
     }
     if (unlit > 0.0 && full > 0.0)
       std::cout << "  full / unlit = " << std::setprecision(2) << full / unlit << '\n';

@@ -147,6 +147,30 @@ TEST(IblkitView, NormalAndDepthLayersAlignWithIblkitTrace) {
             << " degrees, max relative depth " << maxDepth << '\n';
 }
 
+// Given a scene instead of a bake folder, iblkit-view bakes it in memory, says so, and renders it.
+TEST(IblkitView, BakesASceneFileInMemory) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  const fs::path scene = dir / "scene.json";
+  std::ofstream(scene)
+      << R"({"models": [{"file": "scene.glb"}], "environment": {"file": "sky.exr"}, "ground": {"enabled": false}})";
+  const fs::path fromScene = dir / "from_scene.exr";
+  const ProgramRun r = run("iblkit-view", quoted(scene) + " --headless -o " + quoted(fromScene) + kSize +
+                                              " --mode sh --ao-rays 8");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(scene.string() +
+                          ": a scene, not a bake folder: baking it in memory (8 visibility rays per vertex)"),
+            std::string::npos)
+      << r.output;
+  const Image image = readExr(fromScene);
+  int covered = 0;
+  for (const glm::vec4& p : image.pixels()) {
+    ASSERT_TRUE(std::isfinite(p.r + p.g + p.b));
+    if (p.a == 1.0f) covered += p.r + p.g + p.b > 1e-3f;
+  }
+  EXPECT_GT(covered, 1000);
+}
+
 void expectFailure(const std::string& arguments, const std::string& message, const fs::path& out) {
   fs::remove(out);
   const ProgramRun r = run("iblkit-view", arguments);
