@@ -2,7 +2,7 @@
 //
 //   iblkit-view OUTDIR|SCENE --headless -o IMAGE [--width W] [--height H] [--mode M]
 //               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
-//               [--bench N] [--ao-rays N]
+//               [--bench N] [--no-sky] [--ao-rays N]
 //
 // OUTDIR is an iblkit-bake folder; a .json/.gltf/.glb scene is baked in memory first. -o .exr
 // writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
@@ -41,6 +41,7 @@ struct Options {
   int samples = 1;
   int bench = 0;
   int aoRays = 64;
+  bool noSky = false;
 };
 
 std::string lowerExtension(const fs::path& file) {
@@ -124,6 +125,7 @@ int runHeadless(const Options& options) {
   if (!allModes) settings.mode = parseShadingMode(options.mode);
   settings.exposure = options.exposure;
   settings.envRotationDegrees = options.envRotation;
+  settings.drawSky = !options.noSky;
 
   LoadBakeOptions loadOptions;
   loadOptions.aoRays = options.aoRays;
@@ -200,6 +202,7 @@ int main(int argc, char** argv) {
   app.add_option("--depth", options.depthOutput, "also write the camera distance layer (.exr)");
   app.add_option("--bench", options.bench, "render N frames and print the median frame time")
       ->check(CLI::Range(1, 100000));
+  app.add_flag("--no-sky", options.noSky, "black background (alpha 0) instead of the environment");
   app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex when baking a scene in memory")
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();

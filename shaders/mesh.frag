@@ -22,8 +22,17 @@ const int kUnlit = 0, kMirror = 1, kSh = 2, kShAo = 3, kShAoBent = 4, kPrt = 5, 
 // Layers, as iblkit::FrameLayer.
 const int kRadiance = 0, kNormal = 1, kDepth = 2;
 
-uniform int mode;
-uniform int layer;
+// The mode and the layer are compile-time constants, one program per combination (renderer.cpp
+// defines them): a software rasteriser like llvmpipe runs every side of a branch on a uniform, so
+// a single program would cost the sum of all modes. The defaults serve glslangValidator.
+#ifndef SHADING_MODE
+#define SHADING_MODE 6
+#endif
+#ifndef FRAME_LAYER
+#define FRAME_LAYER 0
+#endif
+const int mode = SHADING_MODE;
+const int layer = FRAME_LAYER;
 uniform vec3 cameraPosition;
 uniform bool isGround;
 // Material (engine/core/material.h), clamped to the glTF ranges on the CPU.

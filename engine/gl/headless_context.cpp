@@ -50,7 +50,8 @@ std::string tryDisplay(EGLDisplay display, Attempt& attempt) {
   if (!eglBindAPI(EGL_OPENGL_API)) return give_up("no desktop OpenGL API");
   // No surface is ever made, but EGL's default surface type (window) has no configs without a
   // window system; pbuffer configs exist on every platform.
-  const EGLint configAttributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  const EGLint configAttributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                                     EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configCount = 0;
   if (!eglChooseConfig(display, configAttributes, &config, 1, &configCount) || configCount < 1)

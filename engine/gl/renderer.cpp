@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "engine/baked/sh_rotation.h"
 #include "engine/gl/gpu_mesh.h"
@@ -40,7 +42,8 @@ Material clampedMaterial(const Material& m) {
 struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;
-  ShaderProgram meshProgram{"mesh.vert", "mesh.frag"};
+  // mesh.frag specialised per (mode, layer), compiled on first use.
+  std::map<std::pair<ShadingMode, FrameLayer>, ShaderProgram> meshPrograms;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
   GLuint emptyVertexArray = 0;  // the fullscreen triangle needs a bound VAO but no attributes
@@ -48,6 +51,19 @@ struct Renderer::Impl {
   SphericalHarmonics9 sh9;
   float rotationDegrees = 0.0f, intensity = 1.0f;
   int specularLevels = 1;
+
+  const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer) {
+    // The feature layers do not depend on the mode: one program each.
+    if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
+    const auto key = std::make_pair(mode, layer);
+    auto found = meshPrograms.find(key);
+    if (found == meshPrograms.end()) {
+      const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
+                                  "\n#define FRAME_LAYER " + std::to_string(int(layer));
+      found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
+    }
+    return found->second;
+  }
 };
 
 Renderer::Renderer(const BakedScene& bake) : impl_(std::make_unique<Impl>()) {
@@ -107,13 +123,11 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
 
-  const ShaderProgram& program = r.meshProgram;
+  const ShaderProgram& program = r.meshProgram(settings.mode, settings.layer);
   // SH9 radiance turned by the extra rotation (the scene's is in the baked coefficients).
   const SphericalHarmonics9 sh =
       settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
   program.set("viewProjection", viewProjection);
-  program.set("mode", int(settings.mode));
-  program.set("layer", int(settings.layer));
   program.set("cameraPosition", camera.position);
   program.setArray("shRadiance", sh.coefficients.data(), kShCoefficients);
   program.set("latLongMap", int(kUnitLatLong));

@@ -38,11 +38,21 @@ std::string mapCompilerMessage(const EmbeddedShader& shader, const std::string& 
   return "shaders/" + std::string(shader.name) + ": " + line;
 }
 
-GLuint compileStage(GLenum type, std::string_view name) {
+// The source with `defines` after the #version line (line 1 of every stage), then "#line 2 0" so
+// that line numbers still match the file.
+std::string withDefines(std::string_view source, std::string_view defines) {
+  if (defines.empty()) return std::string(source);
+  const std::size_t firstLineEnd = source.find('\n') + 1;
+  return std::string(source.substr(0, firstLineEnd)) + std::string(defines) + "\n#line 2 0\n" +
+         std::string(source.substr(firstLineEnd));
+}
+
+GLuint compileStage(GLenum type, std::string_view name, std::string_view defines) {
   const EmbeddedShader& shader = findShader(name);
   const GLuint id = glCreateShader(type);
-  const char* text = shader.source.data();
-  const GLint length = GLint(shader.source.size());
+  const std::string source = withDefines(shader.source, defines);
+  const char* text = source.data();
+  const GLint length = GLint(source.size());
   glShaderSource(id, 1, &text, &length);
   glCompileShader(id);
   GLint ok = GL_FALSE;
@@ -62,11 +72,12 @@ GLuint compileStage(GLenum type, std::string_view name) {
 
 std::string expandedShaderSource(std::string_view name) { return std::string(findShader(name).source); }
 
-ShaderProgram::ShaderProgram(std::string_view vertexShader, std::string_view fragmentShader) {
-  const GLuint vertex = compileStage(GL_VERTEX_SHADER, vertexShader);
+ShaderProgram::ShaderProgram(std::string_view vertexShader, std::string_view fragmentShader,
+                             std::string_view defines) {
+  const GLuint vertex = compileStage(GL_VERTEX_SHADER, vertexShader, defines);
   GLuint fragment = 0;
   try {
-    fragment = compileStage(GL_FRAGMENT_SHADER, fragmentShader);
+    fragment = compileStage(GL_FRAGMENT_SHADER, fragmentShader, defines);
   } catch (...) {
     glDeleteShader(vertex);
     throw;

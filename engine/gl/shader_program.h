@@ -17,9 +17,11 @@ std::string expandedShaderSource(std::string_view name);
 
 class ShaderProgram {
  public:
-  // Compiles and links the two embedded stages. Throws Error("shaders/<file>:<line>: <message>")
+  // Compiles and links the two embedded stages, with `defines` ("#define NAME VALUE" lines)
+  // inserted after each stage's #version line. Throws Error("shaders/<file>:<line>: <message>")
   // with the compiler's first message mapped back to the file it came from.
-  ShaderProgram(std::string_view vertexShader, std::string_view fragmentShader);
+  ShaderProgram(std::string_view vertexShader, std::string_view fragmentShader,
+                std::string_view defines = {});
   ShaderProgram(ShaderProgram&& other) noexcept;
   ShaderProgram& operator=(ShaderProgram&& other) noexcept;
   ShaderProgram(const ShaderProgram&) = delete;
