@@ -25,9 +25,8 @@ void GLAPIENTRY onDebugMessage(GLenum /*source*/, GLenum type, GLuint id, GLenum
                                const GLchar* message, const void* /*user*/) {
   // Errors and high-severity messages only: performance and portability notes are not failures.
   if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
-  const std::string text =
-      std::string(message, length >= 0 ? std::size_t(length) : std::string(message).size()) + " (id " +
-      std::to_string(id) + ")";
+  const std::string text = (length >= 0 ? std::string(message, std::size_t(length)) : std::string(message)) +
+                           " (id " + std::to_string(id) + ")";
   DebugState& debug = state();
   const std::lock_guard lock(debug.mutex);
   debug.messages.push_back(text);

@@ -43,11 +43,11 @@ std::string tryDisplay(EGLDisplay display, Attempt& attempt) {
   if (display == EGL_NO_DISPLAY) return "no display (" + eglErrorText() + ")";
   EGLint major = 0, minor = 0;
   if (!eglInitialize(display, &major, &minor)) return "eglInitialize failed (" + eglErrorText() + ")";
-  auto give_up = [&](const std::string& why) {
+  auto giveUp = [&](const std::string& why) {
     eglTerminate(display);
     return why;
   };
-  if (!eglBindAPI(EGL_OPENGL_API)) return give_up("no desktop OpenGL API");
+  if (!eglBindAPI(EGL_OPENGL_API)) return giveUp("no desktop OpenGL API");
   // No surface is ever made, but EGL's default surface type (window) has no configs without a
   // window system; pbuffer configs exist on every platform.
   const EGLint configAttributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
@@ -55,7 +55,7 @@ std::string tryDisplay(EGLDisplay display, Attempt& attempt) {
   EGLConfig config = nullptr;
   EGLint configCount = 0;
   if (!eglChooseConfig(display, configAttributes, &config, 1, &configCount) || configCount < 1)
-    return give_up("no OpenGL config");
+    return giveUp("no OpenGL config");
   const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
                                       4,
                                       EGL_CONTEXT_MINOR_VERSION,
@@ -66,15 +66,15 @@ std::string tryDisplay(EGLDisplay display, Attempt& attempt) {
                                       EGL_TRUE,
                                       EGL_NONE};
   const EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
-  if (context == EGL_NO_CONTEXT) return give_up("no 4.5 core context (" + eglErrorText() + ")");
+  if (context == EGL_NO_CONTEXT) return giveUp("no 4.5 core context (" + eglErrorText() + ")");
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
     eglDestroyContext(display, context);
-    return give_up("cannot make a surfaceless context current (" + eglErrorText() + ")");
+    return giveUp("cannot make a surfaceless context current (" + eglErrorText() + ")");
   }
   if (epoxy_gl_version() < 45) {
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display, context);
-    return give_up("the context has OpenGL " + std::to_string(epoxy_gl_version()) + ", not 45");
+    return giveUp("the context has OpenGL " + std::to_string(epoxy_gl_version()) + ", not 45");
   }
   attempt = {display, context};
   return {};

@@ -153,6 +153,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     r.meshes[i].draw();
   }
   glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(0);
   glUseProgram(0);
 }
 

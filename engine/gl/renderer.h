@@ -53,8 +53,9 @@ class Renderer {
   const Scene& scene() const;
 
   // Renders into `framebuffer` (0 = the default one) over the viewport (0, 0, width, height): clears
-  // colour and depth, draws the sky (if settings.drawSky) and every mesh. Leaves the GL state it
-  // changed (program, VAO, depth test) as it found the defaults.
+  // colour and depth, draws the sky (if settings.drawSky) and every mesh. Afterwards `framebuffer`
+  // stays bound and seamless cube filtering on; program, vertex array and depth test are back to
+  // 0 / off.
   void render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width, int height);
 
   // Draws the linear float 2D `texture` into the viewport (x, y, w, h) of the currently bound

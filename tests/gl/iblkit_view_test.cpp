@@ -171,6 +171,29 @@ TEST(IblkitView, BakesASceneFileInMemory) {
   EXPECT_GT(covered, 1000);
 }
 
+// IBLKIT_EGL_PLATFORM forces one EGL platform; both give a context on Mesa, and --bench names it.
+TEST(IblkitView, EglPlatformCanBeForced) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  for (const std::string platform : {"device", "surfaceless"}) {
+    std::string output;
+    const int status =
+        test::runCommand("IBLKIT_EGL_PLATFORM=" + platform + " " + quoted(test::binDir() / "iblkit-view") +
+                             " " + quoted(fixture.bake) + " --headless --bench 1 --mode unlit" + kSize,
+                         &output);
+    EXPECT_EQ(status, 0) << output;
+    EXPECT_NE(output.find("iblkit-view: " + platform + ": "), std::string::npos) << output;
+  }
+  std::string output;
+  EXPECT_EQ(test::runCommand("IBLKIT_EGL_PLATFORM=x11 " + quoted(test::binDir() / "iblkit-view") + " " +
+                                 quoted(fixture.bake) + " --headless --bench 1",
+                             &output),
+            1);
+  EXPECT_NE(output.find("iblkit-view: IBLKIT_EGL_PLATFORM: expected device or surfaceless, got 'x11'\n"),
+            std::string::npos)
+      << output;
+}
+
 void expectFailure(const std::string& arguments, const std::string& message, const fs::path& out) {
   fs::remove(out);
   const ProgramRun r = run("iblkit-view", arguments);
