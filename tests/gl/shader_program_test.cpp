@@ -33,6 +33,20 @@ TEST(ShaderProgram, UnknownShaderIsAnError) {
             "shaders/nope.frag: no such embedded shader");
 }
 
+// Compile errors name the original file and line, in the stage and in an included file (a define
+// breaks the source on purpose: mesh.frag line 34 reads SHADING_MODE, environment.glsl line 7
+// declares rotateAboutY).
+TEST(ShaderProgram, CompileErrorsNameTheShaderFileAndLine) {
+  test::glContext();
+  const std::string inStage = test::errorMessage(
+      [] { ShaderProgram("mesh.vert", "mesh.frag", "#define SHADING_MODE undefinedName"); });
+  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:34: ", 0), 0u) << inStage;
+  const std::string inInclude =
+      test::errorMessage([] { ShaderProgram("fullscreen.vert", "sky.frag", "#define rotateAboutY 1"); });
+  EXPECT_EQ(inInclude.rfind("shaders/environment.glsl:7: ", 0), 0u) << inInclude;
+  takeGlErrors();  // the failed compiles are not GL errors, but drain whatever the driver reported
+}
+
 TEST(ShaderProgram, EveryEmbeddedStageCompilesAndLinks) {
   test::glContext();
   EXPECT_NO_THROW(ShaderProgram("mesh.vert", "mesh.frag"));
