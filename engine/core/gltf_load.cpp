@@ -229,6 +229,13 @@ class Loader {
     }
   }
 
+  // The baker marks the ground of a .json scene with node extras {"isGround": true}
+  // (baked_scene_gltf.h), so a baked scene is framed without it, as the original scene was.
+  static bool isGroundNode(const tinygltf::Node& node) {
+    const tinygltf::Value& flag = node.extras.Get("isGround");
+    return flag.IsBool() && flag.Get<bool>();
+  }
+
   void instantiate(int meshIndex, int nodeIndex, const glm::mat4& world) {
     if (std::size_t(meshIndex) >= model_.meshes.size())
       fail(file_,
@@ -243,6 +250,7 @@ class Loader {
       if (!local) continue;
       Mesh mesh = *local;
       mesh.source.node = nodeIndex;
+      mesh.isGround = isGroundNode(model_.nodes[nodeIndex]);
       const std::string where = primitiveName(mesh.source.mesh, mesh.source.primitive);
       transformMesh(mesh, world);
       requireFinite(

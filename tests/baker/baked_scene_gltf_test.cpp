@@ -6,6 +6,7 @@
 
 #include "engine/core/gltf_load.h"
 #include "engine/core/procedural_mesh.h"
+#include "engine/core/scene.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 
@@ -74,6 +75,7 @@ TEST(BakedSceneGltf, LoadsBackAsTheSameMeshesMaterialsAndCamera) {
     EXPECT_EQ(read.texcoords, written.texcoords);
     EXPECT_EQ(read.indices, written.indices);
     EXPECT_EQ(read.material, written.material);
+    EXPECT_EQ(read.isGround, written.isGround) << written.name;
     ASSERT_EQ(read.attributes.size(), written.attributes.size());
     for (const auto& [name, attribute] : written.attributes) {
       ASSERT_TRUE(read.attributes.count(name)) << name;
@@ -102,6 +104,23 @@ TEST(BakedSceneGltf, LoadsBackAsTheSameMeshesMaterialsAndCamera) {
   EXPECT_FLOAT_EQ(camera.yfovRadians, expected.yfovRadians);
   EXPECT_FLOAT_EQ(camera.znear, 0.05f);
   EXPECT_FLOAT_EQ(camera.zfar, 80.0f);
+}
+
+// The ground's extras.isGround survives the round trip, so a baked scene is framed by the bounds of
+// its objects alone, exactly as the scene it was baked from.
+TEST(BakedSceneGltf, GroundIsLeftOutOfTheFramingBoundsAfterLoading) {
+  Scene scene = bakedScene();
+  scene.camera.reset();
+  const std::filesystem::path file = test::scratchDir() / "framing.glb";
+  writeSceneGlb(scene, file);
+  const Scene back = loadScene(file);
+  const Bounds original = objectBounds(scene.meshes);
+  EXPECT_EQ(back.bounds.min, original.min);
+  EXPECT_EQ(back.bounds.max, original.max);
+  EXPECT_LT(back.bounds.radius(), 1.5f);  // the sphere's box (half diagonal 1.3), not the 10-wide ground
+  const Camera framed = sceneCamera(back, 16.0f / 9.0f), expected = frameBounds(original, 16.0f / 9.0f);
+  EXPECT_EQ(framed.position, expected.position);
+  EXPECT_EQ(framed.forward, expected.forward);
 }
 
 TEST(BakedSceneGltf, ContainerIsFourByteAlignedGlb) {

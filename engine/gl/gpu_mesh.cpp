@@ -1,0 +1,94 @@
+#include "engine/gl/gpu_mesh.h"
+
+#include <cstring>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "engine/core/error.h"
+
+namespace iblkit {
+namespace {
+
+struct Stream {
+  GLuint location;
+  int components;
+  std::span<const float> data;
+};
+
+std::span<const float> bakedAttribute(const Mesh& mesh, const char* name, int components) {
+  const auto found = mesh.attributes.find(name);
+  if (found == mesh.attributes.end() || found->second.componentCount != components ||
+      found->second.data.size() != std::size_t(components) * mesh.vertexCount())
+    fail(mesh.name, std::string("missing baked attribute ") + name);
+  return found->second.data;
+}
+
+}  // namespace
+
+GpuMesh::GpuMesh(const Mesh& mesh) : indexCount_(GLsizei(mesh.indices.size())) {
+  const std::size_t n = mesh.vertexCount();
+  const std::vector<Stream> streams = {
+      {kAttributePosition, 3, {reinterpret_cast<const float*>(mesh.positions.data()), 3 * n}},
+      {kAttributeNormal, 3, {reinterpret_cast<const float*>(mesh.normals.data()), 3 * n}},
+      {kAttributeAo, 1, bakedAttribute(mesh, "_AO", 1)},
+      {kAttributeBentNormal, 3, bakedAttribute(mesh, "_BENTNORMAL", 3)},
+      {kAttributeTransfer012, 3, bakedAttribute(mesh, "_SHT0", 3)},
+      {kAttributeTransfer345, 3, bakedAttribute(mesh, "_SHT1", 3)},
+      {kAttributeTransfer678, 3, bakedAttribute(mesh, "_SHT2", 3)},
+  };
+  // One buffer: each attribute's array in turn (4-byte aligned), then the indices.
+  std::size_t bytes = 0;
+  for (const Stream& stream : streams) bytes += stream.data.size_bytes();
+  indexOffset_ = GLintptr(bytes);
+  bytes += mesh.indices.size() * sizeof(std::uint32_t);
+  std::vector<std::byte> contents(bytes);
+  std::vector<std::size_t> offsets;
+  std::size_t offset = 0;
+  for (const Stream& stream : streams) {
+    std::memcpy(contents.data() + offset, stream.data.data(), stream.data.size_bytes());
+    offsets.push_back(offset);
+    offset += stream.data.size_bytes();
+  }
+  std::memcpy(contents.data() + offset, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+  glCreateBuffers(1, &buffer_);
+  glNamedBufferStorage(buffer_, GLsizeiptr(bytes), contents.data(), 0);
+  // One binding point per attribute (numbered as its location), each reading its own array.
+  glCreateVertexArrays(1, &vertexArray_);
+  for (std::size_t i = 0; i < streams.size(); ++i) {
+    const Stream& stream = streams[i];
+    glEnableVertexArrayAttrib(vertexArray_, stream.location);
+    glVertexArrayAttribFormat(vertexArray_, stream.location, stream.components, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vertexArray_, stream.location, stream.location);
+    glVertexArrayVertexBuffer(vertexArray_, stream.location, buffer_, GLintptr(offsets[i]),
+                              GLsizei(stream.components * sizeof(float)));
+  }
+  glVertexArrayElementBuffer(vertexArray_, buffer_);
+}
+
+GpuMesh::GpuMesh(GpuMesh&& other) noexcept
+    : vertexArray_(std::exchange(other.vertexArray_, 0)),
+      buffer_(std::exchange(other.buffer_, 0)),
+      indexCount_(other.indexCount_),
+      indexOffset_(other.indexOffset_) {}
+
+GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
+  std::swap(vertexArray_, other.vertexArray_);
+  std::swap(buffer_, other.buffer_);
+  std::swap(indexCount_, other.indexCount_);
+  std::swap(indexOffset_, other.indexOffset_);
+  return *this;
+}
+
+GpuMesh::~GpuMesh() {
+  if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
+  if (buffer_) glDeleteBuffers(1, &buffer_);
+}
+
+void GpuMesh::draw() const {
+  glBindVertexArray(vertexArray_);
+  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, reinterpret_cast<const void*>(indexOffset_));
+  glBindVertexArray(0);
+}
+
+}  // namespace iblkit

@@ -1,0 +1,62 @@
+#include "engine/gl/gpu_textures.h"
+
+#include <utility>
+
+#include "engine/core/error.h"
+
+namespace iblkit {
+
+GlTexture::GlTexture(GlTexture&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+GlTexture& GlTexture::operator=(GlTexture&& other) noexcept {
+  std::swap(id_, other.id_);
+  return *this;
+}
+
+GlTexture::~GlTexture() {
+  if (id_) glDeleteTextures(1, &id_);
+}
+
+namespace {
+
+GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT) {
+  if (image.empty()) throw Error("texture upload: empty image");
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, 1, GL_RGBA32F, image.width(), image.height());
+  glTextureSubImage2D(id, 0, 0, 0, image.width(), image.height(), GL_RGBA, GL_FLOAT, image.pixels().data());
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GLint(wrapS));
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GLint(wrapT));
+  return GlTexture(id);
+}
+
+}  // namespace
+
+GlTexture uploadLatLong(const Image& latLong) { return upload2D(latLong, GL_REPEAT, GL_CLAMP_TO_EDGE); }
+
+GlTexture uploadTable(const Image& table) { return upload2D(table, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE); }
+
+GlTexture uploadCubeLevels(const CubeMapLevels& levels) {
+  if (levels.empty() || levels.front().size < 1) throw Error("texture upload: empty cube map chain");
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
+  const int size = levels.front().size;
+  glTextureStorage2D(id, GLsizei(levels.size()), GL_RGBA32F, size, size);
+  for (std::size_t level = 0; level < levels.size(); ++level) {
+    const CubeMap& cube = levels[level];
+    for (int face = 0; face < 6; ++face)
+      // For cube maps, glTextureSubImage3D's z offset selects the face (OpenGL 4.5 section 8.6).
+      glTextureSubImage3D(id, GLint(level), 0, 0, face, cube.size, cube.size, 1, GL_RGBA, GL_FLOAT,
+                          cube.faces[std::size_t(face)].pixels().data());
+  }
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAX_LEVEL, GLint(levels.size()) - 1);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+    glTextureParameteri(id, wrap, GL_CLAMP_TO_EDGE);
+  return GlTexture(id);
+}
+
+}  // namespace iblkit

@@ -1,0 +1,38 @@
+#pragma once
+// Uploads of the engine's textures (OpenGL 4.5 direct state access), owned by GlTexture.
+#include <epoxy/gl.h>
+
+#include "engine/core/cube_map.h"
+#include "engine/core/image.h"
+
+namespace iblkit {
+
+// An owned texture name (deleted with the object; needs the context current).
+class GlTexture {
+ public:
+  GlTexture() = default;
+  explicit GlTexture(GLuint id) : id_(id) {}
+  GlTexture(GlTexture&& other) noexcept;
+  GlTexture& operator=(GlTexture&& other) noexcept;
+  GlTexture(const GlTexture&) = delete;
+  GlTexture& operator=(const GlTexture&) = delete;
+  ~GlTexture();
+  GLuint id() const { return id_; }
+
+ private:
+  GLuint id_ = 0;
+};
+
+// A lat-long map as RGBA32F with image row 0 first (v = 0 at t = 0), bilinear, no mip-maps,
+// repeating in s and clamped in t: the core's sampleLatLongBilinear (environment.glsl).
+GlTexture uploadLatLong(const Image& latLong);
+
+// A cube mip chain (cube_map.h, OpenGL's face layout; level sizes halving down to 1) as an RGBA32F
+// cube map, trilinear (GL_LINEAR_MIPMAP_LINEAR) between levels. Seamless filtering across faces is
+// a context-wide switch (GL_TEXTURE_CUBE_MAP_SEAMLESS) the renderer turns on.
+GlTexture uploadCubeLevels(const CubeMapLevels& levels);
+
+// A 2D table (the DFG LUT) as RGBA32F, row 0 first, bilinear, clamped.
+GlTexture uploadTable(const Image& table);
+
+}  // namespace iblkit

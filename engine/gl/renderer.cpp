@@ -1,0 +1,175 @@
+#include "engine/gl/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "engine/baked/sh_rotation.h"
+#include "engine/gl/gpu_mesh.h"
+#include "engine/gl/gpu_textures.h"
+#include "engine/gl/shader_program.h"
+
+namespace iblkit {
+namespace {
+
+// Texture units the shaders' samplers read.
+enum TextureUnit : GLuint { kUnitLatLong = 0, kUnitSpecular = 1, kUnitBrdfLut = 2, kUnitPresent = 3 };
+
+// (cos, sin) of the rotation by -degrees: lookups read the map at R_y(-rotation) d
+// (environment_map.h).
+glm::vec2 inverseRotation(float degrees) {
+  const float radians = -glm::radians(degrees);
+  return {std::cos(radians), std::sin(radians)};
+}
+
+// Material parameters clamped to their glTF ranges (docs/material-model.md, "Parameters").
+Material clampedMaterial(const Material& m) {
+  Material c = m;
+  c.baseColor = glm::clamp(m.baseColor, 0.0f, 1.0f);
+  c.metallic = std::clamp(m.metallic, 0.0f, 1.0f);
+  c.roughness = std::clamp(m.roughness, 0.0f, 1.0f);
+  c.specular = std::clamp(m.specular, 0.0f, 1.0f);
+  c.specularColor = glm::max(m.specularColor, 0.0f);
+  return c;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  Scene scene;
+  std::vector<GpuMesh> meshes;
+  // mesh.frag specialised per (mode, layer), compiled on first use.
+  std::map<std::pair<ShadingMode, FrameLayer>, ShaderProgram> meshPrograms;
+  ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
+  ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
+  GLuint emptyVertexArray = 0;  // the fullscreen triangle needs a bound VAO but no attributes
+  GlTexture latLong, specular, brdfLut;
+  SphericalHarmonics9 sh9;
+  float rotationDegrees = 0.0f, intensity = 1.0f;
+  int specularLevels = 1;
+
+  const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer) {
+    // The feature layers do not depend on the mode: one program each.
+    if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
+    const auto key = std::make_pair(mode, layer);
+    auto found = meshPrograms.find(key);
+    if (found == meshPrograms.end()) {
+      const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
+                                  "\n#define FRAME_LAYER " + std::to_string(int(layer));
+      found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
+    }
+    return found->second;
+  }
+};
+
+Renderer::Renderer(const BakedScene& bake) : impl_(std::make_unique<Impl>()) {
+  impl_->scene = bake.scene;
+  for (const Mesh& mesh : bake.scene.meshes) impl_->meshes.emplace_back(mesh);
+  glCreateVertexArrays(1, &impl_->emptyVertexArray);
+  setEnvironment(bake.env);
+}
+
+Renderer::~Renderer() {
+  if (impl_ && impl_->emptyVertexArray) glDeleteVertexArrays(1, &impl_->emptyVertexArray);
+}
+
+void Renderer::setEnvironment(const EnvironmentStages& env) {
+  impl_->latLong = uploadLatLong(env.latLong);
+  impl_->specular = uploadCubeLevels(env.specular.levels);
+  impl_->brdfLut = uploadTable(env.brdfLut);
+  impl_->sh9 = env.sh9;
+  impl_->rotationDegrees = env.rotationDegrees;
+  impl_->intensity = env.intensity;
+  impl_->specularLevels = int(env.specular.levels.size());
+}
+
+void Renderer::setMaterial(int materialIndex, const Material& material) {
+  impl_->scene.materials.at(std::size_t(materialIndex)) = material;
+}
+
+const std::vector<Material>& Renderer::materials() const { return impl_->scene.materials; }
+
+const Scene& Renderer::scene() const { return impl_->scene; }
+
+void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width,
+                      int height) {
+  Impl& r = *impl_;
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, width, height);
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  const glm::mat4 viewProjection =
+      camera.projectionMatrix(float(width) / float(height)) * camera.viewMatrix();
+  const glm::vec2 latLongRotation = inverseRotation(r.rotationDegrees + settings.envRotationDegrees);
+  glBindTextureUnit(kUnitLatLong, r.latLong.id());
+  glBindTextureUnit(kUnitSpecular, r.specular.id());
+  glBindTextureUnit(kUnitBrdfLut, r.brdfLut.id());
+
+  if (settings.drawSky && settings.layer == FrameLayer::Radiance) {
+    const ShaderProgram& sky = r.skyProgram;
+    sky.set("inverseViewProjection", glm::inverse(viewProjection));
+    sky.set("latLongMap", int(kUnitLatLong));
+    sky.set("latLongRotation", latLongRotation);
+    sky.set("latLongIntensity", r.intensity);
+    sky.use();
+    glBindVertexArray(r.emptyVertexArray);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  const ShaderProgram& program = r.meshProgram(settings.mode, settings.layer);
+  // SH9 radiance turned by the extra rotation (the scene's is in the baked coefficients).
+  const SphericalHarmonics9 sh =
+      settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
+  program.set("viewProjection", viewProjection);
+  program.set("cameraPosition", camera.position);
+  program.setArray("shRadiance", sh.coefficients.data(), kShCoefficients);
+  program.set("latLongMap", int(kUnitLatLong));
+  program.set("latLongRotation", latLongRotation);
+  program.set("latLongIntensity", r.intensity);
+  program.set("specularCube", int(kUnitSpecular));
+  program.set("specularRotation", inverseRotation(settings.envRotationDegrees));
+  program.set("specularLevels", float(r.specularLevels));
+  program.set("brdfLut", int(kUnitBrdfLut));
+  program.use();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  for (std::size_t i = 0; i < r.meshes.size(); ++i) {
+    const Mesh& mesh = r.scene.meshes[i];
+    const Material m = clampedMaterial(r.scene.materials.at(std::size_t(mesh.material)));
+    program.set("isGround", int(mesh.isGround));
+    program.set("baseColor", m.baseColor);
+    program.set("metallic", m.metallic);
+    program.set("roughness", m.roughness);
+    program.set("specularWeight", m.specular);
+    program.set("specularColor", m.specularColor);
+    program.set("emissive", m.emissive);
+    r.meshes[i].draw();
+  }
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+void Renderer::presentToneMapped(GLuint texture, const FrameSettings& settings, int x, int y, int w, int h) {
+  Impl& r = *impl_;
+  glViewport(x, y, w, h);
+  glBindTextureUnit(kUnitPresent, texture);
+  r.presentProgram.set("radianceTexture", int(kUnitPresent));
+  r.presentProgram.set("exposure", settings.exposure);
+  r.presentProgram.set("curve", int(settings.curve));
+  r.presentProgram.use();
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(r.emptyVertexArray);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+}  // namespace iblkit

@@ -1,0 +1,71 @@
+#pragma once
+// The real-time image-based-lighting renderer (docs/engine.md): draws a baked scene with one of
+// the shading modes into a float framebuffer, in linear radiance, with the core camera so that a
+// frame lines up pixel for pixel with iblkit-trace's image of the same scene.
+#include <epoxy/gl.h>
+
+#include <memory>
+#include <vector>
+
+#include "engine/baked/baked_scene.h"
+#include "engine/core/camera.h"
+#include "engine/core/material.h"
+#include "engine/core/tone_curve.h"
+#include "engine/gl/shading_mode.h"
+
+namespace iblkit {
+
+// What a frame writes into the colour target.
+enum class FrameLayer {
+  Radiance,  // linear radiance; alpha = 1 on non-ground objects, 0 on the ground and the sky
+  Normal,    // world shading normal turned towards the viewer (iblkit-trace --normal); 0 on the sky
+  Depth,     // distance from the camera position along the ray (iblkit-trace --depth); 0 on the sky
+};
+
+struct FrameSettings {
+  ShadingMode mode = ShadingMode::Full;
+  float exposure = 0.0f;                    // stops; presentToneMapped only (render writes linear radiance)
+  ToneCurve curve = ToneCurve::AcesFitted;  // presentToneMapped only
+  // Extra environment rotation about +Y (degrees, environment_map.h's sense), on top of the
+  // scene's, applied to every lookup (sky, mirror, SH9, PRT, specular cube).
+  float envRotationDegrees = 0.0f;
+  bool drawSky = true;  // false: the background is black with alpha 0
+  FrameLayer layer = FrameLayer::Radiance;
+};
+
+class Renderer {
+ public:
+  // Uploads the scene's meshes (with their baked attributes) and environment stages. Needs a
+  // current OpenGL 4.5 core context (HeadlessContext or a window's); the Renderer must be
+  // destroyed while that context is still current. Throws Error for shader build failures.
+  explicit Renderer(const BakedScene& bake);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Replaces the environment (sky, SH9, specular chain, DFG table); e.g. from prepareEnvironment.
+  // PRT keeps working: the transfer vectors do not depend on the lighting.
+  void setEnvironment(const EnvironmentStages& env);
+  // Overrides material `materialIndex` (an index into materials()). Throws std::out_of_range.
+  void setMaterial(int materialIndex, const Material& material);
+  const std::vector<Material>& materials() const;
+  // The scene as given to the constructor (its camera, bounds, image size).
+  const Scene& scene() const;
+
+  // Renders into `framebuffer` (0 = the default one) over the viewport (0, 0, width, height): clears
+  // colour and depth, draws the sky (if settings.drawSky) and every mesh. Afterwards `framebuffer`
+  // stays bound and seamless cube filtering on; program, vertex array and depth test are back to
+  // 0 / off.
+  void render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width, int height);
+
+  // Draws the linear float 2D `texture` into the viewport (x, y, w, h) of the currently bound
+  // draw framebuffer, tone-mapped with the core curve: sRGB_OETF(curve(radiance 2^exposure)), as
+  // toneMap (tone_curve.h) computes it; writes display values (no GL_FRAMEBUFFER_SRGB needed).
+  void presentToneMapped(GLuint texture, const FrameSettings& settings, int x, int y, int w, int h);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace iblkit

@@ -1,0 +1,30 @@
+#pragma once
+// The real-time engine's shading modes (docs/engine.md has each formula and its source). Each
+// isolates one approximation of the reference path tracer, so the scorer can measure them apart.
+#include <string_view>
+
+namespace iblkit {
+
+enum class ShadingMode {
+  Unlit,     // base colour only (the cost floor for benchmarks)
+  Mirror,    // the lat-long environment along reflect(-v, n): a perfect mirror, no visibility
+  Sh,        // SH9 irradiance along n times albedo / pi, no visibility
+  ShAo,      // Sh times the baked ambient occlusion
+  ShAoBent,  // SH9 irradiance along the baked bent normal, times the ambient occlusion
+  Prt,       // baked SH transfer dotted with the environment's SH9 radiance, times albedo / pi
+  Full,      // the material model: diffuse (PRT) + split-sum specular with occlusion terms
+};
+
+// "unlit", "mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full". Throws Error("--mode: unknown
+// shading mode '<name>' (expected one of unlit, mirror, ...)") for anything else.
+ShadingMode parseShadingMode(std::string_view name);
+
+// The name parseShadingMode accepts for `mode`.
+std::string_view shadingModeName(ShadingMode mode);
+
+// Every mode, in the order of the enum (for benchmarks, tests and the viewer's mode menu).
+inline constexpr ShadingMode kShadingModes[] = {ShadingMode::Unlit, ShadingMode::Mirror,   ShadingMode::Sh,
+                                                ShadingMode::ShAo,  ShadingMode::ShAoBent, ShadingMode::Prt,
+                                                ShadingMode::Full};
+
+}  // namespace iblkit

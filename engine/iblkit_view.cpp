@@ -1,0 +1,222 @@
+// iblkit-view: the real-time engine's program (docs/engine.md).
+//
+//   iblkit-view OUTDIR|SCENE --headless -o IMAGE [--width W] [--height H] [--mode M]
+//               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
+//               [--bench N] [--no-sky] [--ao-rays N]
+//
+// OUTDIR is an iblkit-bake folder; a .json/.gltf/.glb scene is baked in memory first. -o .exr
+// writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
+// Without --headless the window viewer runs (engine/view/, not built yet).
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.h"
+#include "engine/core/image_io.h"
+#include "engine/gl/gl_debug.h"
+#include "engine/gl/headless_context.h"
+#include "engine/gl/render_target.h"
+#include "engine/gl/renderer.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kProgram = "iblkit-view";
+
+struct Options {
+  fs::path input, output, normalOutput, depthOutput;
+  bool headless = false;
+  int width = 0, height = 0;  // 0: the scene's size
+  std::string mode = "full";  // or "all" with --bench
+  float exposure = 0.0f;
+  float envRotation = 0.0f;
+  int samples = 1;
+  int bench = 0;
+  int aoRays = 64;
+  bool noSky = false;
+};
+
+std::string lowerExtension(const fs::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return extension;
+}
+
+void requireExtension(const fs::path& file, std::initializer_list<const char*> allowed) {
+  const std::string extension = lowerExtension(file);
+  std::string list;
+  for (const char* a : allowed) {
+    if (extension == a) return;
+    list += (list.empty() ? "" : " or ") + std::string(a);
+  }
+  fail(file, "unsupported output format (expected " + list + ")");
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct FrameTimes {
+  double cpuMs = 0.0, gpuMs = 0.0;
+};
+
+// Median frame times of each mode over `frames` rounds; each round renders every mode once, in
+// turn, so that load from other processes weighs on all modes alike. CPU time runs from the first
+// GL call to glFinish; GPU time is a GL_TIME_ELAPSED query around the frame (llvmpipe's is not
+// meaningful: it renders when glFinish asks).
+std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, const Camera& camera,
+                                  const FrameSettings& settings, const std::vector<ShadingMode>& modes,
+                                  int frames) {
+  std::vector<std::vector<double>> cpu(modes.size()), gpu(modes.size());
+  GLuint query = 0;
+  glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+  for (int frame = 0; frame < frames; ++frame)
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+      FrameSettings modeSettings = settings;
+      modeSettings.mode = modes[m];
+      const auto start = std::chrono::steady_clock::now();
+      glBeginQuery(GL_TIME_ELAPSED, query);
+      renderer.render(camera, modeSettings, target.framebuffer(), target.width(), target.height());
+      target.resolve();
+      glEndQuery(GL_TIME_ELAPSED);
+      glFinish();
+      cpu[m].push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      GLuint64 nanoseconds = 0;
+      glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);
+      gpu[m].push_back(double(nanoseconds) * 1e-6);
+    }
+  glDeleteQueries(1, &query);
+  checkGlErrors("benchmark");
+  std::vector<FrameTimes> times;
+  for (std::size_t m = 0; m < modes.size(); ++m) times.push_back({median(cpu[m]), median(gpu[m])});
+  return times;
+}
+
+void writeLayer(Renderer& renderer, RenderTarget& target, const Camera& camera, FrameSettings settings,
+                FrameLayer layer, const fs::path& file) {
+  settings.layer = layer;
+  renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
+  const Image image = target.readColor();
+  checkGlErrors("render");
+  writeExr(file, image, {.pixelType = PixelType::Float, .writeAlpha = true});
+}
+
+int runHeadless(const Options& options) {
+  if (options.output.empty() && options.bench == 0)
+    throw Error("-o: an output image is required with --headless");
+  if (!options.output.empty()) requireExtension(options.output, {".exr", ".png"});
+  for (const fs::path& layer : {options.normalOutput, options.depthOutput})
+    if (!layer.empty()) requireExtension(layer, {".exr"});
+  const bool allModes = options.mode == "all";
+  if (allModes && options.bench == 0) fail("--mode", "'all' is only for --bench");
+  FrameSettings settings;
+  if (!allModes) settings.mode = parseShadingMode(options.mode);
+  settings.exposure = options.exposure;
+  settings.envRotationDegrees = options.envRotation;
+  settings.drawSky = !options.noSky;
+
+  LoadBakeOptions loadOptions;
+  loadOptions.aoRays = options.aoRays;
+  const BakedScene bake = loadBake(options.input, loadOptions);
+  const int width = options.width > 0 ? options.width : bake.scene.width;
+  const int height = options.height > 0 ? options.height : bake.scene.height;
+
+  HeadlessContext context = HeadlessContext::create();
+  enableGlDebugOutput(GlDebugMode::Strict);
+  Renderer renderer(bake);
+  RenderTarget target(width, height, options.samples);
+  const Camera camera = sceneCamera(bake.scene, float(width) / float(height));
+  checkGlErrors("setup");
+
+  if (options.bench > 0) {
+    std::cout << kProgram << ": " << context.description() << ", " << width << "x" << height << ", "
+              << target.samples() << " sample(s), median of " << options.bench << " frames\n";
+    std::vector<ShadingMode> modes(std::begin(kShadingModes), std::end(kShadingModes));
+    if (!allModes) modes = {settings.mode};
+    benchmark(renderer, target, camera, settings, modes, 2);  // warm-up: shader variants, caches
+    const std::vector<FrameTimes> times = benchmark(renderer, target, camera, settings, modes, options.bench);
+    double unlit = 0.0, full = 0.0;
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+      std::cout << std::fixed << std::setprecision(2) << "  " << std::left << std::setw(11)
+                << shadingModeName(modes[m]) << " cpu " << times[m].cpuMs << " ms  gpu " << times[m].gpuMs
+                << " ms\n";
+      if (modes[m] == ShadingMode::Unlit) unlit = times[m].cpuMs;
+      if (modes[m] == ShadingMode::Full) full = times[m].cpuMs;
+    }
+    if (unlit > 0.0 && full > 0.0)
+      std::cout << "  full / unlit = " << std::setprecision(2) << full / unlit << '\n';
+    if (options.output.empty()) return 0;
+  }
+
+  renderer.render(camera, settings, target.framebuffer(), width, height);
+  const Image image = target.readColor();
+  checkGlErrors("render");
+  if (!options.normalOutput.empty())
+    writeLayer(renderer, target, camera, settings, FrameLayer::Normal, options.normalOutput);
+  if (!options.depthOutput.empty())
+    writeLayer(renderer, target, camera, settings, FrameLayer::Depth, options.depthOutput);
+  if (lowerExtension(options.output) == ".exr")
+    writeExr(options.output, image, {.pixelType = PixelType::Float, .writeAlpha = true});
+  else
+    writePng(options.output, image, {.exposure = settings.exposure, .curve = settings.curve});
+  return 0;
+}
+
+}  // namespace
+}  // namespace iblkit
+
+int main(int argc, char** argv) {
+  iblkit::Options options;
+  CLI::App app{"Renders a baked scene in real time (OpenGL 4.5), in a window or headless."};
+  app.add_option("input", options.input, "iblkit-bake output folder, or a .json/.gltf/.glb scene")
+      ->required();
+  app.add_flag("--headless", options.headless, "render offscreen through EGL and write -o");
+  app.add_option("-o,--output", options.output,
+                 "output image: .exr (linear float RGBA) or .png (tone-mapped)");
+  app.add_option("--width", options.width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
+  app.add_option("--height", options.height, "image height (default: the scene's)")
+      ->check(CLI::Range(1, 16384));
+  app.add_option("--mode", options.mode,
+                 "unlit, mirror, sh, sh-ao, sh-ao-bent, prt or full (all: every mode, --bench)")
+      ->capture_default_str();
+  app.add_option("--exposure", options.exposure, "exposure in stops (PNG and display)")
+      ->capture_default_str();
+  app.add_option("--env-rotation", options.envRotation, "extra environment rotation about +Y, degrees")
+      ->capture_default_str();
+  app.add_option("--samples", options.samples, "MSAA samples per pixel")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  app.add_option("--normal", options.normalOutput, "also write the world shading normal layer (.exr)");
+  app.add_option("--depth", options.depthOutput, "also write the camera distance layer (.exr)");
+  app.add_option("--bench", options.bench, "render N frames and print the median frame time")
+      ->check(CLI::Range(1, 100000));
+  app.add_flag("--no-sky", options.noSky, "black background (alpha 0) instead of the environment");
+  app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex when baking a scene in memory")
+      ->check(CLI::Range(1, 1 << 16))
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    if (!options.headless) {
+      // The window viewer (engine/view/viewer.h, runViewer) hooks in here once it is built.
+      std::cerr << iblkit::kProgram << ": the window viewer is not built yet\n";
+      return 1;
+    }
+    return iblkit::runHeadless(options);
+  } catch (const std::exception& e) {
+    std::cerr << iblkit::kProgram << ": " << e.what() << '\n';
+    return 1;
+  }
+}

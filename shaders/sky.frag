@@ -1,0 +1,22 @@
+#version 450 core
+// The environment seen directly behind the objects: the camera ray of each pixel looked up in the
+// lat-long map, with the same filter and rotation as every other lookup. Alpha 0 (no object).
+
+#include "environment.glsl"
+
+in vec2 ndc;
+
+uniform mat4 inverseViewProjection;
+uniform sampler2D latLongMap;
+uniform vec2 latLongRotation;
+uniform float latLongIntensity;
+
+layout(location = 0) out vec4 fragColor;
+
+void main() {
+  // Two points of the pixel's ray, unprojected (the camera's primaryRay, camera.h).
+  vec4 nearPoint = inverseViewProjection * vec4(ndc, -1.0, 1.0);
+  vec4 farPoint = inverseViewProjection * vec4(ndc, 1.0, 1.0);
+  vec3 direction = farPoint.xyz / farPoint.w - nearPoint.xyz / nearPoint.w;
+  fragColor = vec4(latLongIntensity * sampleLatLong(latLongMap, rotateAboutY(direction, latLongRotation)), 0.0);
+}

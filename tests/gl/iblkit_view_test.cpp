@@ -1,0 +1,246 @@
+// End-to-end tests of iblkit-view --headless (build/bin), on a scene baked by iblkit-bake, and its
+// alignment with iblkit-trace.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "baker/baked_scene_gltf.h"
+#include "engine/core/image_io.h"
+#include "support/bake_fixture.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Built with += : GCC 12 gives a false -Wrestrict on "'" + std::string (its bug 105329).
+std::string quoted(const fs::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += "'";
+  return text;
+}
+
+struct ProgramRun {
+  int status = 0;
+  std::string output;
+};
+
+ProgramRun run(const std::string& program, const std::string& arguments) {
+  ProgramRun result;
+  result.status = test::runCommand(quoted(test::binDir() / program) + " " + arguments, &result.output);
+  return result;
+}
+
+struct Fixture {
+  fs::path scene, environment, bake;
+};
+
+// A sphere on a ground plane with a camera, as .glb, an environment file, and its iblkit-bake folder,
+// in `folder` (the test's scratch folder: test::scratchDir() empties it on every call).
+Fixture makeFixture(const fs::path& folder) {
+  Fixture made;
+  Material plastic;
+  plastic.baseColor = glm::vec3(0.6f, 0.5f, 0.4f);
+  plastic.metallic = 0.0f;
+  plastic.roughness = 0.5f;
+  BakedScene scene = test::makeTestBake(
+      {.sphereMaterial = plastic, .ground = true, .aoRays = 1, .rings = 24, .segments = 48});
+  made.scene = folder / "scene.glb";
+  writeSceneGlb(scene.scene, made.scene);
+  made.environment = folder / "sky.exr";
+  writeExr(made.environment, scene.env.latLong, {.pixelType = PixelType::Float});
+  made.bake = folder / "bake";
+  const ProgramRun bake =
+      run("iblkit-bake", quoted(made.scene) + " --env " + quoted(made.environment) + " -o " +
+                             quoted(made.bake) + " --ao-rays 16 --specular-samples 32 --lut-size 16");
+  EXPECT_EQ(bake.status, 0) << bake.output;
+  return made;
+}
+
+constexpr const char* kSize = " --width 128 --height 96";
+
+TEST(IblkitView, RendersEveryModeToExrWithCoverageAlpha) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  for (const char* mode : {"unlit", "mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full"}) {
+    const fs::path out = dir / (std::string("view_") + mode + ".exr");
+    fs::remove(out);
+    const ProgramRun r = run("iblkit-view", quoted(fixture.bake) + " --headless -o " + quoted(out) + kSize +
+                                                " --mode " + mode + " --samples 4");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Image image = readExr(out);
+    ASSERT_EQ(image.width(), 128);
+    int covered = 0;
+    for (const glm::vec4& p : image.pixels()) {
+      ASSERT_TRUE(std::isfinite(p.r + p.g + p.b)) << mode;
+      if (p.a == 1.0f) {
+        ++covered;
+        EXPECT_GT(p.r + p.g + p.b, 1e-3f) << mode;
+      }
+    }
+    EXPECT_GT(covered, 1000) << mode;
+  }
+}
+
+TEST(IblkitView, WritesTheToneMappedPng) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  const fs::path out = dir / "view.png";
+  fs::remove(out);
+  const ProgramRun r =
+      run("iblkit-view", quoted(fixture.bake) + " --headless -o " + quoted(out) + kSize + " --exposure -1");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(readPng(out).width(), 128);
+}
+
+// The normal and depth layers of both programs for the same scene and size, compared where the
+// 3 x 3 neighbourhood of a pixel is on one surface (iblkit-trace jitters its samples in the pixel,
+// the rasteriser takes the centre; edges differ by construction).
+TEST(IblkitView, NormalAndDepthLayersAlignWithIblkitTrace) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  const ProgramRun view =
+      run("iblkit-view", quoted(fixture.bake) + " --headless -o " + quoted(dir / "align_view.exr") + kSize +
+                             " --normal " + quoted(dir / "align_view_n.exr") + " --depth " +
+                             quoted(dir / "align_view_d.exr"));
+  ASSERT_EQ(view.status, 0) << view.output;
+  const ProgramRun trace =
+      run("iblkit-trace", quoted(fixture.scene) + " --env " + quoted(fixture.environment) + " -o " +
+                              quoted(dir / "align_trace.exr") + kSize + " --spp 4 --integrator ao --normal " +
+                              quoted(dir / "align_trace_n.exr") + " --depth " +
+                              quoted(dir / "align_trace_d.exr"));
+  ASSERT_EQ(trace.status, 0) << trace.output;
+  // Normals have negative components: read them as stored.
+  auto read = [](const fs::path& file) { return readExr(file, nullptr, 0, PixelRepair::Keep); };
+  const Image vn = read(dir / "align_view_n.exr"), tn = read(dir / "align_trace_n.exr");
+  const Image vd = read(dir / "align_view_d.exr"), td = read(dir / "align_trace_d.exr");
+  int compared = 0, skyAgrees = 0;
+  float maxAngle = 0.0f, maxDepth = 0.0f;
+  for (int y = 1; y < 95; ++y)
+    for (int x = 1; x < 127; ++x) {
+      bool flat = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const float a = td.at(x + dx, y + dy).r, b = td.at(x, y).r;
+          if (a == 0.0f || b == 0.0f || std::abs(a - b) > 0.05f * b ||
+              glm::dot(glm::vec3(tn.at(x + dx, y + dy)), glm::vec3(tn.at(x, y))) < 0.95f)
+            flat = false;
+        }
+      if (td.at(x, y).r == 0.0f) skyAgrees += vd.at(x, y).r == 0.0f;
+      if (!flat) continue;
+      ++compared;
+      const float cosine = glm::dot(glm::normalize(glm::vec3(vn.at(x, y))), glm::vec3(tn.at(x, y)));
+      const float angle = glm::degrees(std::acos(std::min(cosine, 1.0f)));
+      maxAngle = std::max(maxAngle, angle);
+      maxDepth = std::max(maxDepth, std::abs(vd.at(x, y).r - td.at(x, y).r) / td.at(x, y).r);
+    }
+  EXPECT_GT(compared, 6000);
+  EXPECT_LT(maxAngle, 1.5f);
+  EXPECT_LT(maxDepth, 0.01f);
+  EXPECT_GT(skyAgrees, 1000);
+  std::cout << "alignment: " << compared << " pixels, max normal angle " << maxAngle
+            << " degrees, max relative depth " << maxDepth << '\n';
+}
+
+// Given a scene instead of a bake folder, iblkit-view bakes it in memory, says so, and renders it.
+TEST(IblkitView, BakesASceneFileInMemory) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  const fs::path scene = dir / "scene.json";
+  std::ofstream(scene)
+      << R"({"models": [{"file": "scene.glb"}], "environment": {"file": "sky.exr"}, "ground": {"enabled": false}})";
+  const fs::path fromScene = dir / "from_scene.exr";
+  const ProgramRun r = run("iblkit-view", quoted(scene) + " --headless -o " + quoted(fromScene) + kSize +
+                                              " --mode sh --ao-rays 8");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(scene.string() +
+                          ": a scene, not a bake folder: baking it in memory (8 visibility rays per vertex)"),
+            std::string::npos)
+      << r.output;
+  const Image image = readExr(fromScene);
+  int covered = 0;
+  for (const glm::vec4& p : image.pixels()) {
+    ASSERT_TRUE(std::isfinite(p.r + p.g + p.b));
+    if (p.a == 1.0f) covered += p.r + p.g + p.b > 1e-3f;
+  }
+  EXPECT_GT(covered, 1000);
+}
+
+// IBLKIT_EGL_PLATFORM forces one EGL platform; both give a context on Mesa, and --bench names it.
+TEST(IblkitView, EglPlatformCanBeForced) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  for (const std::string platform : {"device", "surfaceless"}) {
+    std::string output;
+    const int status =
+        test::runCommand("IBLKIT_EGL_PLATFORM=" + platform + " " + quoted(test::binDir() / "iblkit-view") +
+                             " " + quoted(fixture.bake) + " --headless --bench 1 --mode unlit" + kSize,
+                         &output);
+    EXPECT_EQ(status, 0) << output;
+    EXPECT_NE(output.find("iblkit-view: " + platform + ": "), std::string::npos) << output;
+  }
+  std::string output;
+  EXPECT_EQ(test::runCommand("IBLKIT_EGL_PLATFORM=x11 " + quoted(test::binDir() / "iblkit-view") + " " +
+                                 quoted(fixture.bake) + " --headless --bench 1",
+                             &output),
+            1);
+  EXPECT_NE(output.find("iblkit-view: IBLKIT_EGL_PLATFORM: expected device or surfaceless, got 'x11'\n"),
+            std::string::npos)
+      << output;
+}
+
+void expectFailure(const std::string& arguments, const std::string& message, const fs::path& out) {
+  fs::remove(out);
+  const ProgramRun r = run("iblkit-view", arguments);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find(message + "\n"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  const fs::path out = dir / "bad.exr";
+  const fs::path missing = dir / "missing_bake";
+  expectFailure(quoted(missing) + " --headless -o " + quoted(out),
+                "iblkit-view: " + missing.string() + ": no such bake folder", out);
+
+  const fs::path incomplete = dir / "view_incomplete";
+  fs::remove_all(incomplete);
+  fs::copy(fixture.bake, incomplete, fs::copy_options::recursive);
+  fs::remove(incomplete / "env" / "brdf_lut.exr");
+  expectFailure(quoted(incomplete) + " --headless -o " + quoted(out),
+                "iblkit-view: " + (incomplete / "env" / "brdf_lut.exr").string() +
+                    ": missing (incomplete bake folder?)",
+                out);
+
+  const fs::path old = dir / "view_old";
+  fs::remove_all(old);
+  fs::copy(fixture.bake, old, fs::copy_options::recursive);
+  std::stringstream text;
+  text << std::ifstream(old / "bake.json").rdbuf();
+  std::string record = text.str();
+  const std::size_t version = record.find("iblkit-bake 1");
+  ASSERT_NE(version, std::string::npos);
+  record[version + 12] = '9';
+  std::ofstream(old / "bake.json") << record;
+  expectFailure(quoted(old) + " --headless -o " + quoted(out),
+                "iblkit-view: " + (old / "bake.json").string() +
+                    ": version 'iblkit-bake 9' is not supported (expected 'iblkit-bake 1')",
+                out);
+
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --mode shiny",
+                "iblkit-view: --mode: unknown shading mode 'shiny' (expected one of unlit, mirror, sh, "
+                "sh-ao, sh-ao-bent, prt, full)",
+                out);
+  expectFailure(quoted(fixture.bake) + " -o " + quoted(out),
+                "iblkit-view: the window viewer is not built yet", out);
+}
+
+}  // namespace
+}  // namespace iblkit

@@ -1,0 +1,235 @@
+#include "engine/gl/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "engine/baked/sh_rotation.h"
+#include "engine/core/tone_curve.h"
+#include "engine/gl/gpu_textures.h"
+#include "engine/gl/render_target.h"
+#include "gl/test_context.h"
+#include "support/bake_fixture.h"
+
+namespace iblkit {
+namespace {
+
+constexpr int kWidth = 128, kHeight = 96;
+
+// Where the camera ray through raster position p hits the unit sphere at the origin.
+std::optional<glm::vec3> hitUnitSphere(const Camera& camera, glm::vec2 p) {
+  const Ray ray = camera.primaryRay(p, kWidth, kHeight);
+  const float b = glm::dot(ray.origin, ray.direction);
+  const float c = glm::dot(ray.origin, ray.origin) - 1.0f;
+  const float discriminant = b * b - c;
+  if (discriminant < 0.0f) return std::nullopt;
+  return ray.origin + (-b - std::sqrt(discriminant)) * ray.direction;
+}
+
+// Pixels whose centre and the four corners of the pixel all hit the sphere: away from the
+// silhouette, where rasterised coverage and the tessellation decide.
+bool interiorPixel(const Camera& camera, int x, int y) {
+  for (glm::vec2 offset :
+       {glm::vec2(0.5f), glm::vec2(-1.0f), glm::vec2(2.0f), glm::vec2(-1.0f, 2.0f), glm::vec2(2.0f, -1.0f)})
+    if (!hitUnitSphere(camera, glm::vec2(x, y) + offset)) return false;
+  return true;
+}
+
+float relativeError(const glm::vec3& value, const glm::vec3& expected) {
+  return glm::length(value - expected) / glm::length(expected);
+}
+
+struct Comparison {
+  int pixels = 0;
+  float maxError = 0.0f, meanError = 0.0f;
+};
+
+// Renders `bake` with `settings` and compares every interior sphere pixel with expected(point,
+// ray direction), and (with the sky drawn) every pixel whose whole neighbourhood misses the sphere
+// with the environment along the camera ray.
+template <class Expected>
+Comparison compareSphere(const BakedScene& bake, const FrameSettings& settings, Expected&& expected,
+                         Comparison* sky = nullptr) {
+  test::glContext();
+  Renderer renderer(bake);
+  RenderTarget target(kWidth, kHeight, 1);
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+  const Image image = target.readColor();
+  checkGlErrors("sphere render");
+  EnvironmentMap environment = test::testSky();
+  environment.setRotationDegrees(settings.envRotationDegrees);
+  Comparison result;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const glm::vec4 pixel = image.at(x, y);
+      const glm::vec2 centre(x + 0.5f, y + 0.5f);
+      if (interiorPixel(camera, x, y)) {
+        EXPECT_EQ(pixel.a, 1.0f) << x << "," << y;
+        const float error = relativeError(
+            glm::vec3(pixel),
+            expected(*hitUnitSphere(camera, centre), camera.primaryRay(centre, kWidth, kHeight).direction));
+        result.maxError = std::max(result.maxError, error);
+        result.meanError += error;
+        ++result.pixels;
+      } else if (sky && !hitUnitSphere(camera, centre + glm::vec2(2.0f)) &&
+                 !hitUnitSphere(camera, centre - glm::vec2(2.0f)) &&
+                 !hitUnitSphere(camera, centre + glm::vec2(2.0f, -2.0f)) &&
+                 !hitUnitSphere(camera, centre + glm::vec2(-2.0f, 2.0f))) {
+        EXPECT_EQ(pixel.a, 0.0f) << x << "," << y;
+        const float error = relativeError(
+            glm::vec3(pixel), environment.radiance(camera.primaryRay(centre, kWidth, kHeight).direction));
+        sky->maxError = std::max(sky->maxError, error);
+        sky->meanError += error;
+        ++sky->pixels;
+      }
+    }
+  if (result.pixels) result.meanError /= float(result.pixels);
+  if (sky && sky->pixels) sky->meanError /= float(sky->pixels);
+  return result;
+}
+
+Material chrome() {
+  Material m;
+  m.baseColor = glm::vec3(1.0f);
+  m.metallic = 1.0f;
+  m.roughness = 0.0f;
+  return m;
+}
+
+// `mirror` against the core's bilinear lat-long lookup along reflect(d, n) of the exact sphere.
+// The GPU interpolates the normals of a 48 x 96 tessellation, which tilts the reflected
+// direction by a fraction of a degree; the sky is the same lookup along the camera ray.
+void expectMirrorMatches(float rotationDegrees) {
+  const BakedScene bake = test::makeTestBake({.sphereMaterial = chrome()});
+  EnvironmentMap environment = test::testSky();
+  environment.setRotationDegrees(rotationDegrees);
+  FrameSettings settings;
+  settings.mode = ShadingMode::Mirror;
+  settings.envRotationDegrees = rotationDegrees;
+  Comparison sky;
+  const Comparison sphere = compareSphere(
+      bake, settings,
+      [&](const glm::vec3& point, const glm::vec3& direction) {
+        return environment.radiance(glm::reflect(direction, glm::normalize(point)));
+      },
+      &sky);
+  EXPECT_GT(sphere.pixels, 1500);
+  EXPECT_LT(sphere.maxError, 0.02f);
+  EXPECT_LT(sphere.meanError, 0.002f);
+  EXPECT_GT(sky.pixels, 5000);
+  EXPECT_LT(sky.maxError, 0.002f);
+  std::cout << "mirror (rotation " << rotationDegrees << "): " << sphere.pixels << " sphere pixels, max "
+            << sphere.maxError << " mean " << sphere.meanError << "; " << sky.pixels << " sky pixels, max "
+            << sky.maxError << '\n';
+}
+
+TEST(Renderer, MirrorSphereMatchesTheCpuReflectionLookup) { expectMirrorMatches(0.0f); }
+
+TEST(Renderer, EnvironmentRotationTurnsEveryLookup) { expectMirrorMatches(90.0f); }
+
+// `sh` against SphericalHarmonics9::irradiance at the exact normal, for a Lambert sphere; and with
+// the environment turned, against the rotated coefficients.
+TEST(Renderer, DiffuseSphereMatchesTheCpuSh9Irradiance) {
+  Material white;
+  white.baseColor = glm::vec3(0.8f, 0.7f, 0.6f);
+  white.metallic = 0.0f;
+  white.specular = 0.0f;
+  const BakedScene bake = test::makeTestBake({.sphereMaterial = white});
+  for (float rotation : {0.0f, 60.0f}) {
+    const SphericalHarmonics9 sh = rotateShAboutY(bake.env.sh9, rotation);
+    FrameSettings settings;
+    settings.mode = ShadingMode::Sh;
+    settings.envRotationDegrees = rotation;
+    const Comparison sphere = compareSphere(bake, settings, [&](const glm::vec3& point, const glm::vec3&) {
+      return white.baseColor / glm::pi<float>() * sh.irradiance(glm::normalize(point));
+    });
+    EXPECT_GT(sphere.pixels, 1500);
+    EXPECT_LT(sphere.maxError, 0.005f) << "rotation " << rotation;
+    EXPECT_LT(sphere.meanError, 0.001f) << "rotation " << rotation;
+    std::cout << "sh (rotation " << rotation << "): " << sphere.pixels << " pixels, max " << sphere.maxError
+              << " mean " << sphere.meanError << '\n';
+  }
+}
+
+// Every mode gives finite radiance everywhere and light on every object pixel (the sphere touches
+// the ground, so the occluded modes are nearly black at the contact point, not black); occlusion only
+// darkens (sh-ao <= sh on average), and multisampling gives fractional coverage at the silhouette.
+TEST(Renderer, EveryModeGivesFiniteLitPixelsOnTheObject) {
+  test::glContext();
+  Material plastic;
+  plastic.baseColor = glm::vec3(0.7f, 0.3f, 0.2f);
+  plastic.metallic = 0.0f;
+  plastic.roughness = 0.4f;
+  const BakedScene bake = test::makeTestBake({.sphereMaterial = plastic, .ground = true});
+  Renderer renderer(bake);
+  RenderTarget target(kWidth, kHeight, 4);
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  std::map<ShadingMode, double> meanLuminance;
+  for (ShadingMode mode : kShadingModes) {
+    FrameSettings settings;
+    settings.mode = mode;
+    renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+    const Image image = target.readColor();
+    checkGlErrors(std::string(shadingModeName(mode)));
+    int objectPixels = 0, partialCoverage = 0;
+    double sum = 0.0;
+    for (const glm::vec4& p : image.pixels()) {
+      ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b)) << shadingModeName(mode);
+      if (p.a > 0.0f && p.a < 1.0f) ++partialCoverage;
+      if (p.a < 1.0f) continue;
+      ++objectPixels;
+      const float luminance = 0.2126f * p.r + 0.7152f * p.g + 0.0722f * p.b;
+      EXPECT_GT(luminance, 0.0f) << shadingModeName(mode);
+      sum += luminance;
+    }
+    EXPECT_GT(objectPixels, 1500) << shadingModeName(mode);
+    EXPECT_GT(partialCoverage, 20) << shadingModeName(mode);
+    meanLuminance[mode] = sum / objectPixels;
+    EXPECT_GT(meanLuminance[mode], 0.05) << shadingModeName(mode);
+  }
+  EXPECT_LT(meanLuminance[ShadingMode::ShAo], meanLuminance[ShadingMode::Sh]);
+  EXPECT_LT(meanLuminance[ShadingMode::Prt], meanLuminance[ShadingMode::Sh]);
+}
+
+// The GLSL tone curve (shaders/tone_curve.glsl) against toneMap (tone_curve.h): a float texture of
+// 0, negatives and 1e-4 .. 1e4 presented into a float target, for every curve.
+TEST(Renderer, GlslToneCurveMatchesTheCpuCurve) {
+  test::glContext();
+  const BakedScene bake = test::makeTestBake({.sphereMaterial = chrome(), .rings = 4, .segments = 8});
+  Renderer renderer(bake);
+  constexpr int kValues = 256;
+  Image values(kValues, 1);
+  for (int i = 0; i < kValues; ++i) {
+    const float x = i == 0 ? 0.0f : std::pow(10.0f, -4.0f + 8.0f * float(i) / float(kValues - 1));
+    values.at(i, 0) = glm::vec4(x, 0.5f * x, i % 7 == 0 ? -x : 2.0f * x, 1.0f);
+  }
+  const GlTexture texture = uploadTable(values);
+  RenderTarget target(kValues, 1, 1);
+  float maxError = 0.0f;
+  for (ToneCurve curve : {ToneCurve::Clamp, ToneCurve::AcesFitted, ToneCurve::Reinhard}) {
+    FrameSettings settings;
+    settings.curve = curve;
+    settings.exposure = 0.75f;
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
+    renderer.presentToneMapped(texture.id(), settings, 0, 0, kValues, 1);
+    const Image shown = target.readColor();
+    checkGlErrors("present");
+    for (int i = 0; i < kValues; ++i) {
+      const glm::vec3 expected = toneMap(glm::vec3(values.at(i, 0)), {.exposure = 0.75f, .curve = curve});
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(shown.at(i, 0)[c], expected[c], 1e-4f)
+            << "curve " << int(curve) << " value " << values.at(i, 0)[c];
+        maxError = std::max(maxError, std::abs(shown.at(i, 0)[c] - expected[c]));
+      }
+    }
+  }
+  std::cout << "tone curve: max |GLSL - C++| = " << maxError << " over " << 3 * 3 * kValues << " values\n";
+}
+
+}  // namespace
+}  // namespace iblkit

@@ -1,0 +1,28 @@
+#include "engine/gl/shading_mode.h"
+
+#include <gtest/gtest.h>
+
+#include "support/error_capture.h"
+
+namespace iblkit {
+namespace {
+
+TEST(ShadingMode, NamesRoundTrip) {
+  const char* names[] = {"unlit", "mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full"};
+  int i = 0;
+  for (ShadingMode mode : kShadingModes) {
+    EXPECT_EQ(shadingModeName(mode), names[i]);
+    EXPECT_EQ(parseShadingMode(names[i]), mode);
+    ++i;
+  }
+  EXPECT_EQ(i, 7);
+}
+
+TEST(ShadingMode, UnknownNameIsAnError) {
+  EXPECT_EQ(test::errorMessage([] { parseShadingMode("Full"); }),
+            "--mode: unknown shading mode 'Full' (expected one of unlit, mirror, sh, sh-ao, sh-ao-bent, prt, "
+            "full)");
+}
+
+}  // namespace
+}  // namespace iblkit
