@@ -200,6 +200,9 @@ per reference, relative MSE, the luminance-weighted mean relative error and SSIM
 relMSE, estimated from two independent halves, is at most )"
        << summary.settings.negligibleRatio * 100.0 << R"(% of the best mode's.</p>
 )";
+  std::error_code error;
+  if (fs::exists(file.parent_path() / "inputs.html", error))
+    html << "<p>The inputs (every map, model and scene, checked): <a href=\"inputs.html\">inputs.html</a>.</p>\n";
   html << "<h2>What the numbers must show</h2>\n<table><tr><th class=l>claim</th><th>measured</th><th>bound</th><th>holds</th><th class=l>detail</th></tr>\n";
   for (const Claim& claim : summary.claims)
     html << "<tr><td class=l>" << escape(claim.statement) << "</td><td>" << fixed(claim.measured, 4) << "</td><td>"
