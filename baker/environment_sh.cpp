@@ -14,6 +14,8 @@
 #include "engine/core/error.h"
 #include "engine/core/file_io.h"
 
+#include <nlohmann/json.hpp>
+
 namespace iblkit {
 
 SphericalHarmonics9 projectEnvironmentSh9(const EnvironmentMap& environment) {
@@ -109,6 +111,27 @@ void writeSh9Json(const std::filesystem::path& path, const SphericalHarmonics9& 
     out.close();
     if (!out) fail(path, "cannot write " + temporary.string());
   });
+}
+
+SphericalHarmonics9 readSh9Json(const std::filesystem::path& path, float* windowCutoff) {
+  using nlohmann::json;
+  std::ifstream stream(path);
+  if (!stream) fail(path, "cannot open");
+  try {
+    const json document = json::parse(stream);
+    const json& coefficients = document.at("L");
+    if (!coefficients.is_array() || coefficients.size() != kShCoefficients)
+      fail(path, "\"L\" must hold 9 RGB coefficients");
+    SphericalHarmonics9 sh;
+    for (int k = 0; k < kShCoefficients; ++k) {
+      const json& c = coefficients.at(std::size_t(k));
+      sh.coefficients[std::size_t(k)] = glm::vec3(c.at(0).get<float>(), c.at(1).get<float>(), c.at(2).get<float>());
+    }
+    if (windowCutoff) *windowCutoff = document.at("windowCutoff").get<float>();
+    return sh;
+  } catch (const json::exception& e) {
+    fail(path, std::string("malformed SH9 file: ") + e.what());
+  }
 }
 
 namespace {

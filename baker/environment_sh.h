@@ -41,6 +41,10 @@ float automaticShWindowCutoff(const SphericalHarmonics9& sh);
 // Throws Error("<path>: cannot open: ...") when the file cannot be written.
 void writeSh9Json(const std::filesystem::path& path, const SphericalHarmonics9& sh, float windowCutoff);
 
+// Reads what writeSh9Json wrote: the coefficients, and the window cutoff into *windowCutoff
+// (optional). Throws Error("<path>: ...") for a missing, unreadable or malformed file.
+SphericalHarmonics9 readSh9Json(const std::filesystem::path& path, float* windowCutoff = nullptr);
+
 // Irradiance E(n) = sum over texels of L * max(0, n.w) * dOmega (every texel of the environment a
 // small light; rotation and intensity applied), at each unit normal. Exact up to the texel
 // quadrature; O(normals x texels), parallel over normals (TBB). For tests and comparisons.

@@ -179,8 +179,10 @@ int bake(const Options& options) {
     const json report = {
         {"version", kVersion},
         {"inputs",
-         {{"scene", options.scene.string()},
-          {"environment", environment.empty() ? json(nullptr) : json(environment.string())}}},
+         {{"scene", fs::absolute(options.scene).lexically_normal().string()},
+          // Absolute, so the bake loads from any working directory (the engine draws the sky from it).
+          {"environment",
+           environment.empty() ? json(nullptr) : json(fs::absolute(environment).lexically_normal().string())}}},
         {"parameters",
          {{"ao_rays", options.aoRays},
           {"ao_distance", options.aoDistance},

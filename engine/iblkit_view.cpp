@@ -39,6 +39,8 @@ struct Options {
   float exposure = 0.0f;
   float envRotation = 0.0f;
   int samples = 1;
+  bool sampleShading = false;
+  int supersample = 1;
   int bench = 0;
   int aoRays = 64;
   bool noSky = false;
@@ -104,11 +106,18 @@ std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, cons
   return times;
 }
 
+// The target's colour, box-filtered down by the supersampling factor (a power of two).
+Image readFrame(RenderTarget& target, int supersample) {
+  Image image = target.readColor();
+  for (int factor = supersample; factor > 1; factor /= 2) image = downsample2x(image);
+  return image;
+}
+
 void writeLayer(Renderer& renderer, RenderTarget& target, const Camera& camera, FrameSettings settings,
-                FrameLayer layer, const fs::path& file) {
+                FrameLayer layer, const fs::path& file, int supersample) {
   settings.layer = layer;
   renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
-  const Image image = target.readColor();
+  const Image image = readFrame(target, supersample);
   checkGlErrors("render");
   writeExr(file, image, {.pixelType = PixelType::Float, .writeAlpha = true});
 }
@@ -126,6 +135,7 @@ int runHeadless(const Options& options) {
   settings.exposure = options.exposure;
   settings.envRotationDegrees = options.envRotation;
   settings.drawSky = !options.noSky;
+  settings.sampleShading = options.sampleShading;
 
   LoadBakeOptions loadOptions;
   loadOptions.aoRays = options.aoRays;
@@ -136,7 +146,7 @@ int runHeadless(const Options& options) {
   HeadlessContext context = HeadlessContext::create();
   enableGlDebugOutput(GlDebugMode::Strict);
   Renderer renderer(bake);
-  RenderTarget target(width, height, options.samples);
+  RenderTarget target(width * options.supersample, height * options.supersample, options.samples);
   const Camera camera = sceneCamera(bake.scene, float(width) / float(height));
   checkGlErrors("setup");
 
@@ -160,13 +170,13 @@ int runHeadless(const Options& options) {
     if (options.output.empty()) return 0;
   }
 
-  renderer.render(camera, settings, target.framebuffer(), width, height);
-  const Image image = target.readColor();
+  renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
+  const Image image = readFrame(target, options.supersample);
   checkGlErrors("render");
   if (!options.normalOutput.empty())
-    writeLayer(renderer, target, camera, settings, FrameLayer::Normal, options.normalOutput);
+    writeLayer(renderer, target, camera, settings, FrameLayer::Normal, options.normalOutput, options.supersample);
   if (!options.depthOutput.empty())
-    writeLayer(renderer, target, camera, settings, FrameLayer::Depth, options.depthOutput);
+    writeLayer(renderer, target, camera, settings, FrameLayer::Depth, options.depthOutput, options.supersample);
   if (lowerExtension(options.output) == ".exr")
     writeExr(options.output, image, {.pixelType = PixelType::Float, .writeAlpha = true});
   else
@@ -195,6 +205,11 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--env-rotation", options.envRotation, "extra environment rotation about +Y, degrees")
       ->capture_default_str();
+  app.add_flag("--sample-shading", options.sampleShading,
+               "shade every MSAA sample (supersampling: the pixel's shading is averaged, as the reference does)");
+  app.add_option("--supersample", options.supersample,
+                 "render K x K pixels per output pixel and box-filter them down (K = 1, 2 or 4)")
+      ->check(CLI::IsMember({1, 2, 4}));
   app.add_option("--samples", options.samples, "MSAA samples per pixel")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();

@@ -44,6 +44,18 @@ std::vector<std::uint8_t> geometryMask(const Image& depth) {
   return mask;
 }
 
+std::vector<std::uint8_t> erodeMask(std::span<const std::uint8_t> mask, int width, int height) {
+  if (mask.size() != std::size_t(width) * std::size_t(height)) fail("erodeMask", "mask size does not match");
+  auto at = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < width && y < height && mask[std::size_t(y) * width + x] != 0;
+  };
+  std::vector<std::uint8_t> eroded(mask.size(), 0);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      eroded[std::size_t(y) * width + x] = at(x, y) && at(x - 1, y) && at(x + 1, y) && at(x, y - 1) && at(x, y + 1);
+  return eroded;
+}
+
 Image averageImages(const Image& a, const Image& b) {
   if (a.width() != b.width() || a.height() != b.height()) fail("averageImages", "images differ in size");
   Image mean(a.width(), a.height());

@@ -37,6 +37,11 @@ double halvesRelMseEstimate(const Image& a, const Image& b, std::span<const std:
 // iblkit-trace --depth) above 0.
 std::vector<std::uint8_t> geometryMask(const Image& depth);
 
+// The mask without its rim: a pixel stays when it and its four neighbours are set (pixels on the
+// image border lose the neighbours outside). A rim pixel mixes object and sky in proportions each
+// program's pixel filter decides, which is not the shading being scored.
+std::vector<std::uint8_t> erodeMask(std::span<const std::uint8_t> mask, int width, int height);
+
 // The pixel-wise mean of two images of the same size.
 Image averageImages(const Image& a, const Image& b);
 

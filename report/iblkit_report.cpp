@@ -53,6 +53,12 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--bench", settings.benchFrames, "frames for each mode's median frame time (0: none)")
       ->check(CLI::Range(0, 1000));
+  app.add_option("--samples", settings.engineSamples,
+                 "shaded samples per pixel of the engine frames (MSAA with sample shading; 1: none)")
+      ->check(CLI::Range(1, 32));
+  app.add_option("--supersample", settings.engineSupersample,
+                 "engine frames render K x K pixels per pixel, box-filtered down (1, 2 or 4)")
+      ->check(CLI::IsMember({1, 2, 4}));
   app.add_flag("--strict", strict, "exit with status 2 when a claim does not hold");
   CLI11_PARSE(app, argc, argv);
 

@@ -7,11 +7,14 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "baker/environment_sh.h"
+#include "engine/core/environment_map_file.h"
 #include "engine/core/error.h"
 #include "engine/core/image_io.h"
 #include "engine/core/scene.h"
 #include "report/content_hash.h"
 #include "report/program_runner.h"
+#include "report/sh9_truncation.h"
 #include "score/heat_map.h"
 
 namespace iblkit {
@@ -79,9 +82,10 @@ float thumbnailExposure(const Image& reference, std::span<const std::uint8_t> ma
   return median > 0.0f ? std::clamp(std::log2(0.18f / median), -16.0f, 16.0f) : 0.0f;
 }
 
-// The median frame time iblkit-view --bench prints ("... median 12.3 ms ...").
+// The median frame time iblkit-view --bench prints for the one mode ("  sh   cpu 12.34 ms  gpu 0.00 ms"):
+// the CPU time, synchronised with glFinish, since GPU timer queries are not everywhere.
 double parseMedianMilliseconds(const std::string& output) {
-  static const std::regex pattern(R"(median[^0-9]*([0-9]+(\.[0-9]+)?)\s*ms)");
+  static const std::regex pattern(R"(\bcpu\s+([0-9]+(\.[0-9]+)?)\s*ms)");
   std::smatch match;
   if (!std::regex_search(output, match, pattern)) return std::numeric_limits<double>::quiet_NaN();
   return std::stod(match[1].str());
@@ -119,13 +123,23 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
     try {
       ContentHash key = ContentHash().add(baked.folder.string()).addFile(view).add(mode);
       for (const std::string& argument : size) key.add(argument);
-      key.add(std::to_string(settings.benchFrames));
+      key.add(std::to_string(settings.benchFrames)).add(std::to_string(settings.engineSamples));
+      key.add(std::to_string(settings.engineSupersample));
       const StageRun rendered = cachedRun(cache, "view-" + caseName + "-" + mode, key.hex(),
                                           [&](const fs::path& folder) {
                                             std::vector<std::string> argv = {
                                                 view.string(), (baked.folder / "bake").string(), "--headless",
                                                 "-o", (folder / "frame.exr").string(), "--mode", mode};
                                             argv.insert(argv.end(), std::begin(size), std::end(size));
+                                            if (settings.engineSamples > 1) {
+                                              argv.insert(argv.end(), {"--samples",
+                                                                       std::to_string(settings.engineSamples),
+                                                                       "--sample-shading"});
+                                            }
+                                            if (settings.engineSupersample > 1) {
+                                              argv.insert(argv.end(), {"--supersample",
+                                                                       std::to_string(settings.engineSupersample)});
+                                            }
                                             if (settings.benchFrames > 0) {
                                               argv.push_back("--bench");
                                               argv.push_back(std::to_string(settings.benchFrames));
@@ -147,11 +161,12 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
   // Reference passes with seeds 0, 1, 2, ...: even seeds make half A, odd seeds half B.
   std::vector<Image> passes;
   std::vector<std::uint8_t> mask;
-  Image reference;
+  Image reference, normals;
   for (int count = settings.minPasses;; count = std::min(2 * count, settings.maxPasses)) {
     while (int(passes.size()) < count) {
       const int seed = int(passes.size());
       ContentHash key = ContentHash(inputs).addFile(trace).add(std::to_string(settings.passSpp)).add(std::to_string(seed));
+      if (seed == 0) key.add("normal");
       for (const std::string& argument : size) key.add(argument);
       const StageRun pass = cachedRun(cache, "trace-" + caseName + "-" + std::to_string(seed), key.hex(),
                                       [&](const fs::path& folder) {
@@ -160,12 +175,15 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
                                             "-o", (folder / "beauty.exr").string(), "--depth",
                                             (folder / "depth.exr").string(), "--spp", std::to_string(settings.passSpp),
                                             "--seed", std::to_string(seed)};
+                                        if (seed == 0) argv.insert(argv.end(), {"--normal", (folder / "normal.exr").string()});
                                         argv.insert(argv.end(), std::begin(size), std::end(size));
                                         return argv;
                                       });
       if (seed == 0) {
         result.commands.push_back(pass.command + "   (one pass of " + std::to_string(settings.maxPasses) + " at most)");
-        mask = geometryMask(readExr(pass.folder / "depth.exr"));
+        const Image depth = readExr(pass.folder / "depth.exr");
+        mask = erodeMask(geometryMask(depth), depth.width(), depth.height());
+        normals = readExr(pass.folder / "normal.exr", nullptr, 0, PixelRepair::Keep);  // signed
       }
       result.traceSeconds += pass.seconds;
       passes.push_back(readExr(pass.folder / "beauty.exr", nullptr, 0, PixelRepair::Keep));
@@ -199,6 +217,18 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
     result.referenceConverged = result.referenceRelMse <= settings.negligibleRatio * best;
     if (result.referenceConverged || count >= settings.maxPasses) break;
   }
+
+  // SH9's own error on these normals, with the SH9 the bake wrote and the scene's map as lit.
+  const Scene scene = loadScene(sceneFile);
+  EnvironmentMap environment = loadEnvironmentMap(environmentFile);
+  environment.setRotationDegrees(scene.environment.rotationDegrees);
+  environment.setIntensity(scene.environment.intensity);
+  const Sh9Truncation truncation =
+      sh9Truncation(environment, readSh9Json(baked.folder / "bake" / "env" / "sh9.json"), normals, mask);
+  result.sh9Truncation = truncation.meanRelativeError;
+  for (std::size_t m = 0; m < result.modes.size(); ++m)
+    if (result.modes[m].mode == "sh" && result.modes[m].failure.empty())
+      result.shBeyondSh9 = errorBeyondSh9(reference, frames[m], truncation, mask);
 
   // Pictures: reference and frames at one exposure, FLIP heat maps.
   const fs::path images = settings.outDir / "images";

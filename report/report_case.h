@@ -25,6 +25,12 @@ struct ReportSettings {
   // mode's relMSE, so its noise adds at most that fraction to every mode's measured error.
   double negligibleRatio = 0.1;
   int benchFrames = 5;  // iblkit-view --bench frames for the frame time; 0: not measured
+  // Engine frames shade this many samples per pixel (iblkit-view --samples N --sample-shading), so
+  // their pixels average the shading over the pixel as the reference's pixel filter does; 1: one.
+  int engineSamples = 4;
+  // ...and render K x K pixels per output pixel (iblkit-view --supersample K): 4 x 2 x 2 = 16
+  // shaded samples by default, since 4 still alias the mirror sphere's minified reflection.
+  int engineSupersample = 2;
 };
 
 struct ModeResult {
@@ -45,6 +51,11 @@ struct CaseResult {
   float exposure = 0.0f;          // of the PNG thumbnails, stops
   ExposureRange flipExposures;    // HDR-FLIP bracket shared by every mode of this case
   std::size_t scoredPixels = 0;
+  // SH9's own error on the scored pixels' normals (sh9_truncation.h): what an exact `sh` frame of a
+  // convex Lambert object would still measure as meanRelativeError.
+  double sh9Truncation = std::numeric_limits<double>::quiet_NaN();
+  // What the `sh` frame gets wrong beyond that (errorBeyondSh9); NaN without an `sh` frame.
+  double shBeyondSh9 = std::numeric_limits<double>::quiet_NaN();
   std::string referenceImage;     // PNG path relative to outDir
   std::vector<ModeResult> modes;
   std::vector<std::string> commands;  // the command lines of the stages, for the report

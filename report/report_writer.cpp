@@ -72,6 +72,8 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                           {"height", summary.settings.height},
                           {"modes", summary.modes},
                           {"passSpp", summary.settings.passSpp},
+                          {"engineSamples", summary.settings.engineSamples},
+                          {"engineSupersample", summary.settings.engineSupersample},
                           {"maxPasses", summary.settings.maxPasses},
                           {"negligibleRatio", summary.settings.negligibleRatio}};
   document["seconds"] = summary.totalSeconds;
@@ -94,6 +96,8 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                                  {"converged", result.referenceConverged},
                                  {"image", result.referenceImage}}},
                   {"scoredPixels", result.scoredPixels},
+                  {"sh9TruncationError", number(result.sh9Truncation)},
+                  {"shErrorBeyondSh9", number(result.shBeyondSh9)},
                   {"flipExposureRange", {result.flipExposures.start, result.flipExposures.stop}},
                   {"thumbnailExposure", result.exposure},
                   {"commands", result.commands}};
@@ -243,12 +247,17 @@ relMSE, estimated from two independent halves, is at most )"
     }
     html << "</table>\n" << ladderSvg(summary.cases, scene, summary.modes);
     html << "<table><tr><th class=l>environment</th><th>bake (s)</th><th>trace (s)</th><th>reference spp</th>"
-            "<th>reference relMSE (estimated)</th><th>converged</th></tr>\n";
+            "<th>reference relMSE (estimated)</th><th>converged</th>"
+            "<th title=\"mean relative error of SH9 irradiance against brute force on the scored pixels' normals: "
+            "the least an sh frame can have on a convex Lambert object\">SH9's own error</th>"
+            "<th title=\"what the sh frame gets wrong beyond SH9's own error, on 16x16-pixel blocks\">sh beyond SH9</th>"
+            "</tr>\n";
     for (const CaseResult* result : sceneCases)
       html << "<tr><td class=l>" << result->environment << "</td><td>" << fixed(result->bakeSeconds, 1) << "</td><td>"
            << fixed(result->traceSeconds, 1) << "</td><td>" << result->referenceSpp << "</td><td>"
            << fixed(result->referenceRelMse, 5) << "</td><td class=" << (result->referenceConverged ? "ok>yes" : "no>no")
-           << "</td></tr>\n";
+           << "</td><td>" << fixed(100.0 * result->sh9Truncation, 1) << "%</td><td>"
+           << fixed(100.0 * result->shBeyondSh9, 2) << "%</td></tr>\n";
     html << "</table>\n";
     for (const CaseResult* result : sceneCases) {
       html << "<h3>" << scene << " under " << result->environment << "</h3>\n<div>";

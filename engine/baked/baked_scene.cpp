@@ -1,11 +1,14 @@
 #include "engine/baked/baked_scene.h"
 
+#include "baker/environment_sh.h"
+
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
+#include "baker/environment_sh.h"
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
 #include "engine/core/environment_map_file.h"
@@ -48,25 +51,6 @@ void requireBakedAttributes(const Scene& scene, const fs::path& file) {
     }
 }
 
-SphericalHarmonics9 readSh9Json(const fs::path& file, float& windowCutoff) {
-  const json document = readJson(file);
-  try {
-    const json& coefficients = document.at("L");
-    if (!coefficients.is_array() || coefficients.size() != kShCoefficients)
-      fail(file, "\"L\" must hold 9 RGB coefficients");
-    SphericalHarmonics9 sh;
-    for (int k = 0; k < kShCoefficients; ++k) {
-      const json& c = coefficients.at(std::size_t(k));
-      sh.coefficients[std::size_t(k)] =
-          glm::vec3(c.at(0).get<float>(), c.at(1).get<float>(), c.at(2).get<float>());
-    }
-    windowCutoff = document.at("windowCutoff").get<float>();
-    return sh;
-  } catch (const json::exception& e) {
-    fail(file, std::string("malformed SH9 file: ") + e.what());
-  }
-}
-
 // env/specular.exr: the first log2(W) + 1 levels are the cube chain, one per roughness in the
 // "iblkit:roughnessPerLevel" attribute (docs/prefilter.md).
 SpecularCube readSpecularExr(const fs::path& file) {
@@ -104,7 +88,9 @@ BakedScene readBakeFolder(const fs::path& folder) {
     const json& environment = record.at("inputs").at("environment");
     if (environment.is_null()) fail(bakeJson, "the bake has no environment stages (bake with --env)");
     const json& parameters = record.at("parameters");
-    const fs::path environmentFile = environment.get<std::string>();
+    // Bakes record an absolute path; a relative one (hand-written bake.json) is relative to the bake.
+    fs::path environmentFile = environment.get<std::string>();
+    if (environmentFile.is_relative()) environmentFile = folder / environmentFile;
     env.rotationDegrees = parameters.at("environment_rotation_degrees").get<float>();
     env.intensity = parameters.at("environment_intensity").get<float>();
     const ProbeFormat format = parseProbeFormat(parameters.value("env_format", std::string("latlong")));
@@ -117,7 +103,8 @@ BakedScene readBakeFolder(const fs::path& folder) {
   requireFile(sceneFile);
   bake.scene = loadScene(sceneFile);
   requireBakedAttributes(bake.scene, sceneFile);
-  env.sh9 = readSh9Json(folder / "env" / "sh9.json", env.shWindowCutoff);
+  requireFile(folder / "env" / "sh9.json");
+  env.sh9 = readSh9Json(folder / "env" / "sh9.json", &env.shWindowCutoff);
   env.specular = readSpecularExr(folder / "env" / "specular.exr");
   const fs::path lut = folder / "env" / "brdf_lut.exr";
   requireFile(lut);

@@ -101,6 +101,12 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  if (settings.sampleShading) {
+    glEnable(GL_SAMPLE_SHADING);
+    glMinSampleShading(1.0f);
+  } else {
+    glDisable(GL_SAMPLE_SHADING);
+  }
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

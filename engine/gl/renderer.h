@@ -31,6 +31,9 @@ struct FrameSettings {
   float envRotationDegrees = 0.0f;
   bool drawSky = true;  // false: the background is black with alpha 0
   FrameLayer layer = FrameLayer::Radiance;
+  // Shade every sample of a multisampled target (supersampling): the shading is then averaged
+  // over the pixel like the reference's pixel filter does, not only the edges. N times the cost.
+  bool sampleShading = false;
 };
 
 class Renderer {

@@ -87,6 +87,54 @@ TEST(IblkitView, RendersEveryModeToExrWithCoverageAlpha) {
   }
 }
 
+// --supersample K renders K x K pixels per output pixel and box-filters them down; with
+// --sample-shading every MSAA sample is shaded. Both keep the output size and the image's mean,
+// and average the shading inside the object (not only at its edges), which plain MSAA does not.
+TEST(IblkitView, SupersamplingAndSampleShadingAverageTheShadingOverThePixel) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  auto render = [&](const std::string& name, const std::string& options) {
+    const fs::path out = dir / (name + ".exr");
+    const ProgramRun r =
+        run("iblkit-view", quoted(fixture.bake) + " --headless --mode mirror -o " + quoted(out) + kSize + options);
+    EXPECT_EQ(r.status, 0) << r.output;
+    return readExr(out);
+  };
+  const Image plain = render("plain", " --samples 4");
+  const Image shaded = render("shaded", " --samples 4 --sample-shading");
+  const Image super = render("super", " --samples 4 --sample-shading --supersample 2");
+  ASSERT_EQ(super.width(), 128);
+  ASSERT_EQ(super.height(), 96);
+  auto interiorDifference = [&](const Image& a, const Image& b, double* meanA, double* meanB) {
+    int differing = 0, interior = 0;
+    *meanA = *meanB = 0.0;
+    for (int y = 1; y + 1 < a.height(); ++y)
+      for (int x = 1; x + 1 < a.width(); ++x) {
+        bool inside = true;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) inside = inside && a.at(x + dx, y + dy).a == 1.0f;
+        if (!inside) continue;
+        ++interior;
+        *meanA += a.at(x, y).g;
+        *meanB += b.at(x, y).g;
+        differing += std::abs(a.at(x, y).g - b.at(x, y).g) > 1e-4f * (1.0f + a.at(x, y).g) ? 1 : 0;
+      }
+    *meanA /= std::max(interior, 1);
+    *meanB /= std::max(interior, 1);
+    EXPECT_GT(interior, 1000);
+    return differing;
+  };
+  double a = 0.0, b = 0.0;
+  EXPECT_GT(interiorDifference(plain, shaded, &a, &b), 200);  // MSAA alone shades once per pixel
+  EXPECT_NEAR(b / a, 1.0, 0.05);
+  EXPECT_GT(interiorDifference(shaded, super, &a, &b), 20);  // smooth map: 16 samples change less
+  EXPECT_NEAR(b / a, 1.0, 0.05);
+  const ProgramRun refused = run("iblkit-view", quoted(fixture.bake) + " --headless -o " +
+                                                    quoted(dir / "x.exr") + " --supersample 3");
+  EXPECT_NE(refused.status, 0);
+  EXPECT_FALSE(fs::exists(dir / "x.exr"));
+}
+
 TEST(IblkitView, WritesTheToneMappedPng) {
   const fs::path dir = test::scratchDir();
   const Fixture fixture = makeFixture(dir);

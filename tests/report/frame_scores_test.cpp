@@ -70,5 +70,18 @@ TEST(FrameScores, GeometryMaskFromDepth) {
   EXPECT_EQ(geometryMask(depth), (std::vector<std::uint8_t>{0, 1, 0}));
 }
 
+TEST(FrameScores, ErodeMaskDropsTheRimAndTheBorder) {
+  // 5x4: a 3x3 block of ones at x 1..3, y 0..2 (touching the top border).
+  const std::vector<std::uint8_t> mask = {0, 1, 1, 1, 0,  //
+                                          0, 1, 1, 1, 0,  //
+                                          0, 1, 1, 1, 0,  //
+                                          0, 0, 0, 0, 0};
+  const std::vector<std::uint8_t> expected = {0, 0, 0, 0, 0,  //
+                                              0, 0, 1, 0, 0,  //
+                                              0, 0, 0, 0, 0,  //
+                                              0, 0, 0, 0, 0};
+  EXPECT_EQ(erodeMask(mask, 5, 4), expected);
+}
+
 }  // namespace
 }  // namespace iblkit

@@ -49,12 +49,23 @@ TEST(ReportClaims, SphereBoundsAndFailedFrames) {
   std::vector<CaseResult> cases = {caseOf("mirror_sphere", "sky", {{"mirror", 0.015}}),
                                    caseOf("mirror_sphere", "city", {{"mirror", 0.02}}),
                                    caseOf("diffuse_sphere", "sky", {{"sh", 0.05}})};
+  cases[2].sh9Truncation = 0.046;
   std::vector<Claim> claims = evaluateClaims(cases);
-  ASSERT_EQ(claims.size(), 2u);
+  ASSERT_EQ(claims.size(), 3u);
   EXPECT_TRUE(claims[0].holds);
   EXPECT_NEAR(claims[0].measured, 0.0175, 1e-12);
   EXPECT_FALSE(claims[1].holds);
   EXPECT_EQ(claims[1].bound, 0.03);
+  EXPECT_NE(claims[1].detail.find("SH9's own truncation error on the same normals averages 4.6%"), std::string::npos)
+      << claims[1].detail;
+  // What the sh frame adds beyond SH9: unknown (no sh frame scored) fails, 0.4% holds, 2% fails.
+  EXPECT_FALSE(claims[2].holds);
+  cases[2].shBeyondSh9 = 0.004;
+  claims = evaluateClaims(cases);
+  EXPECT_TRUE(claims[2].holds);
+  EXPECT_EQ(claims[2].detail, "largest under sky (error beyond SH9 on 16x16-pixel blocks)");
+  cases[2].shBeyondSh9 = 0.02;
+  EXPECT_FALSE(evaluateClaims(cases)[2].holds);
 
   cases[1].modes[0].failure = "3 NaN or infinite pixel values";
   claims = evaluateClaims(cases);
