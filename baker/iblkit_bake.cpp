@@ -1,8 +1,8 @@
 // iblkit-bake: precomputes what the real-time engine needs for a scene (docs/baker.md).
 //
 //   iblkit-bake SCENE [--env ENV] [--env-format latlong|mirrorball|angular] -o OUTDIR [--ao-rays N]
-//               [--ao-distance D] [--seed S] [--threads T] [--sh-window auto|none|BANDS]
-//               [--specular-samples N] [--lut-size N]
+//               [--ao-distance D] [--ao-falloff P] [--ao-area] [--bounces N] [--seed S] [--threads T]
+//               [--sh-window auto|none|BANDS] [--specular-samples N] [--lut-size N]
 //
 // OUTDIR/scene.glb  the whole flattened scene (world-space meshes, ground included, materials with
 //                   the scene's overrides applied, camera) with per-vertex visibility attributes
@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -50,6 +51,9 @@ struct Options {
   fs::path scene, environment, output;
   int aoRays = 256;
   float aoDistance = 0.0f;
+  float aoFalloff = 0.0f;
+  bool aoArea = false;
+  int bounces = 0;
   std::uint32_t seed = 0;
   int threads = 0;  // 0: every core
   std::string envFormat = "latlong";
@@ -97,6 +101,15 @@ void writeJson(const fs::path& file, const json& document) {
   std::ofstream stream(file);
   stream << document.dump(2) << '\n';
   if (!stream.flush()) fail(file, "cannot write file");
+}
+
+// The grey diffuse albedo of a mesh for --bounces: the Rec. 709 luminance of the Lambert lobe's
+// colour, baseColor * (1 - metallic) (material.h), clamped to [0, 1].
+float diffuseAlbedo(const Scene& scene, const Mesh& mesh) {
+  if (mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size()) return 0.0f;
+  const Material& material = scene.materials[std::size_t(mesh.material)];
+  const glm::vec3 diffuse = material.baseColor * (1.0f - material.metallic);
+  return std::clamp(glm::dot(diffuse, glm::vec3(0.2126f, 0.7152f, 0.0722f)), 0.0f, 1.0f);
 }
 
 // The sinc^4 window cutoff for SH9: automatic (the largest cutoff keeping irradiance >= 0), none
@@ -157,11 +170,19 @@ int bake(const Options& options) {
   settings.rayCount = options.aoRays;
   settings.maxDistance = options.aoDistance;
   settings.seed = options.seed;
+  settings.falloff = options.aoFalloff;
+  settings.areaSampling = options.aoArea;
+  settings.bounces = options.bounces;
+  if (options.bounces > 0)
+    for (const Mesh& mesh : scene.meshes) settings.albedo.push_back(diffuseAlbedo(scene, mesh));
   settings.progress = progressBar();
   VisibilityStatistics statistics;
   const std::vector<MeshVisibility> visibility = bakeVertexVisibility(scene.meshes, settings, &statistics);
   const double visibilitySeconds = stopwatch.lap();
   timings["visibility_s"] = visibilitySeconds;
+  timings["visibility_build_s"] = statistics.buildSeconds;
+  timings["visibility_rays_s"] = statistics.raySeconds;
+  timings["bounces_s"] = statistics.bounceSeconds;
   attachVisibilityAttributes(scene.meshes, visibility);
 
   std::size_t triangles = 0;
@@ -184,6 +205,9 @@ int bake(const Options& options) {
         {"parameters",
          {{"ao_rays", options.aoRays},
           {"ao_distance", options.aoDistance},
+          {"ao_falloff", options.aoFalloff},
+          {"ao_area", options.aoArea},
+          {"bounces", options.bounces},
           {"seed", options.seed},
           {"env_format", options.envFormat},
           {"environment_rotation_degrees", scene.environment.rotationDegrees},
@@ -198,8 +222,11 @@ int bake(const Options& options) {
           {"vertices", statistics.vertices},
           {"triangles", triangles},
           {"rays", statistics.rays},
+          {"bounce_rays", statistics.bounceRays},
           {"rejected_directions", statistics.rejected}}},
-        {"rays_per_second", visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0}};
+        {"rays_per_second", visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0},
+        {"trace_rays_per_second",
+         statistics.raySeconds > 0.0 ? double(statistics.rays) / statistics.raySeconds : 0.0}};
     writeJson(folder / "bake.json", report);
   });
   std::cout << kProgram << ": wrote " << options.output.string() << " (" << statistics.vertices
@@ -222,6 +249,15 @@ int main(int argc, char** argv) {
   app.add_option("--ao-distance", options.aoDistance,
                  "occluders beyond this distance are ignored; 0 = infinite")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--ao-falloff", options.aoFalloff,
+                 "occlusion falloff exponent p: a hit at distance t occludes by (1 - t / D)^p; 0 = off "
+                 "(needs --ao-distance D)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_flag("--ao-area", options.aoArea, "sample ray origins over each vertex's one-ring (large triangles)");
+  app.add_option("--bounces", options.bounces, "interreflection bounces added to the SH transfer")
+      ->check(CLI::Range(0, 16))
       ->capture_default_str();
   app.add_option("--seed", options.seed, "sample scrambling seed")->capture_default_str();
   app.add_option("--env-format", options.envFormat, "environment layout: latlong, mirrorball or angular")
