@@ -137,9 +137,54 @@ std::uint32_t specularSampleCount(float roughness, std::uint32_t maxSamples) {
   return std::clamp(scaled, std::min(128u, maxSamples), maxSamples);
 }
 
+namespace {
+
+// The point (sc, tc) of `face`'s plane at distance 1 from the centre (Table 8.19 inverted).
+glm::vec3 facePoint(int face, float sc, float tc) {
+  switch (face) {
+    case kCubeFacePositiveX: return {1.0f, -tc, -sc};
+    case kCubeFaceNegativeX: return {-1.0f, -tc, sc};
+    case kCubeFacePositiveY: return {sc, 1.0f, tc};
+    case kCubeFaceNegativeY: return {sc, -1.0f, -tc};
+    case kCubeFacePositiveZ: return {sc, -tc, 1.0f};
+    default: return {-sc, -tc, -1.0f};
+  }
+}
+
+// cubeFromRadiance(size, 2, radiance of `environment`) with the same arithmetic, parallel over the
+// rows of the faces: for a 2048 x 1024 map the 6.3 million lat-long lookups of the source cube
+// were a serial tenth of the chain's time.
+CubeMap sourceCube(const EnvironmentMap& environment, int size) {
+  constexpr int kSamplesPerAxis = 2;
+  CubeMap cube;
+  cube.size = size;
+  for (Image& face : cube.faces) face = Image(size, size);
+  const float n = static_cast<float>(kSamplesPerAxis);
+  tbb::parallel_for(0, 6 * size, [&](int row) {
+    const int face = row / size, y = row % size;
+    for (int x = 0; x < size; ++x) {
+      glm::vec3 sum(0.0f);
+      float weightSum = 0.0f;
+      for (int j = 0; j < kSamplesPerAxis; ++j) {
+        for (int i = 0; i < kSamplesPerAxis; ++i) {
+          const glm::vec2 ab =
+              2.0f * (glm::vec2(x, y) + (glm::vec2(i, j) + 0.5f) / n) / static_cast<float>(size) - 1.0f;
+          const float weight = std::pow(1.0f + glm::dot(ab, ab), -1.5f);
+          sum += weight * environment.radiance(glm::normalize(facePoint(face, ab.x, ab.y)));
+          weightSum += weight;
+        }
+      }
+      cube.faces[static_cast<std::size_t>(face)].at(x, y) = glm::vec4(sum / weightSum, 1.0f);
+    }
+  });
+  return cube;
+}
+
+}  // namespace
+
 CubeMapLevels specularSourceChain(const EnvironmentMap& environment, int size) {
-  return cubeMipChain(
-      cubeFromRadiance(size, 2, [&](const glm::vec3& direction) { return environment.radiance(direction); }));
+  if (size < 1) throw std::invalid_argument("specularSourceChain: size must be >= 1");
+  return cubeMipChain(sourceCube(environment, size));
 }
 
 namespace {
