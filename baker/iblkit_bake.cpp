@@ -30,6 +30,7 @@
 #include "baker/baked_scene_gltf.h"
 #include "baker/brdf_lut.h"
 #include "baker/environment_sh.h"
+#include "baker/irradiance_cube.h"
 #include "baker/output_directory.h"
 #include "baker/specular_prefilter.h"
 #include "baker/vertex_visibility.h"
@@ -126,8 +127,13 @@ float shWindowCutoff(const std::string& choice, const SphericalHarmonics9& sh) {
   throw Error("--sh-window: expected auto, none or a positive number of bands, got '" + choice + "'");
 }
 
-// The environment stages: env/sh9.json (SH9 radiance, windowed), env/specular.exr (GGX mip chain
-// as an OpenEXR cube map) and env/brdf_lut.exr (split-sum DFG table), written into `folder`.
+// Face size of env/irradiance.exr (irradiance is smooth: 16 is plenty, docs/prefilter.md).
+constexpr int kIrradianceCubeSize = 16;
+
+// The environment stages: env/sh9.json (SH9 radiance, windowed), env/irradiance.exr (brute-force
+// irradiance cube, and the SH9 irradiance's error against it in bake.json), env/specular.exr (GGX
+// mip chain as an OpenEXR cube map) and env/brdf_lut.exr (split-sum DFG table), written into
+// `folder`.
 json bakeEnvironment(const EnvironmentMap& environment, const Options& options, const fs::path& folder,
                      Stopwatch& stopwatch, json& timings) {
   fs::create_directories(folder / "env");
@@ -135,6 +141,10 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   const float cutoff = shWindowCutoff(options.shWindow, sh);
   writeSh9Json(folder / "env" / "sh9.json", sh, cutoff);
   timings["sh9_s"] = stopwatch.lap();
+  const CubeMap irradiance = irradianceCube(environment, kIrradianceCubeSize);
+  writeIrradianceCubeExr(folder / "env" / "irradiance.exr", irradiance);
+  const IrradianceError shError = shIrradianceError(irradiance, cutoff > 0.0f ? windowSh9(sh, cutoff) : sh);
+  timings["irradiance_s"] = stopwatch.lap();
   SpecularPrefilterOptions specularOptions;
   specularOptions.sampleCount = options.specularSamples;
   const SpecularCube specular = prefilterSpecular(environment, specularOptions);
@@ -143,6 +153,8 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   writeBrdfLutExr(folder / "env" / "brdf_lut.exr", computeBrdfLut(options.lutSize));
   timings["brdf_lut_s"] = stopwatch.lap();
   return {{"sh_window_cutoff", cutoff},
+          {"irradiance_cube_size", kIrradianceCubeSize},
+          {"sh9_irradiance_error", {{"mean_relative", shError.meanRelative}, {"max_relative", shError.maxRelative}}},
           {"specular_face_size", specular.levels.front().size},
           {"specular_roughness_per_level", specular.roughness},
           {"brdf_lut_size", options.lutSize}};
@@ -194,7 +206,7 @@ int bake(const Options& options) {
     json environmentReport = nullptr;
     if (environmentMap) {
       environmentReport = bakeEnvironment(*environmentMap, options, folder, stopwatch, timings);
-      for (const char* file : {"env/sh9.json", "env/specular.exr", "env/brdf_lut.exr"})
+      for (const char* file : {"env/sh9.json", "env/irradiance.exr", "env/specular.exr", "env/brdf_lut.exr"})
         outputs.push_back(file);
     }
     const json report = {

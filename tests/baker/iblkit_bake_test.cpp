@@ -167,8 +167,18 @@ TEST(IblkitBake, WritesTheEnvironmentStagesWhenThereIsAnEnvironment) {
                                &status);
   ASSERT_EQ(status, 0) << log;
   const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
-  EXPECT_EQ(report["outputs"], nlohmann::json({"scene.glb", "bake.json", "env/sh9.json", "env/specular.exr",
-                                               "env/brdf_lut.exr"}));
+  EXPECT_EQ(report["outputs"], nlohmann::json({"scene.glb", "bake.json", "env/sh9.json", "env/irradiance.exr",
+                                               "env/specular.exr", "env/brdf_lut.exr"}));
+  // The SH9 irradiance of this smooth sky is close to the brute-force cube, not exact (the bright
+  // spot has energy above band 2).
+  const float shError = report["environment"]["sh9_irradiance_error"]["mean_relative"];
+  EXPECT_GT(shError, 0.0f);
+  EXPECT_LT(shError, 0.2f);
+  ExrInfo irradianceInfo;
+  EXPECT_EQ(readExr(out / "env" / "irradiance.exr", &irradianceInfo).width(), 16);
+  EXPECT_EQ(irradianceInfo.envmap, EnvmapLayout::Cube);
+  for (const char* stage : {"sh9_s", "irradiance_s", "specular_s", "brdf_lut_s", "visibility_rays_s"})
+    EXPECT_GE(report["timings"][stage], 0.0) << stage;
   EXPECT_EQ(report["environment"]["specular_face_size"], 8);  // a quarter of the map's width
   EXPECT_EQ(report["environment"]["specular_roughness_per_level"].size(), 4u);
   const nlohmann::json sh = nlohmann::json::parse(std::ifstream(out / "env" / "sh9.json"));
