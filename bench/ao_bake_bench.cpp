@@ -1,11 +1,11 @@
 // AO bake cost (docs/benchmarks.md, "Baker"): how close the per-vertex visibility bake comes to
 // Embree's raw rtcOccluded1 throughput, and how its time grows with the vertex count.
 //
-//   BM_BakeBunny/2         bakeVertexVisibility of assets/scenes/bunny.json (the bunny and the
-//                          scene's ground), 256 rays per vertex, on 2 threads. items_per_second =
+//   BM_BakeBunny/T         bakeVertexVisibility of assets/scenes/bunny.json (the bunny and the
+//                          scene's ground), 256 rays per vertex, on T = 1 or 2 threads. items_per_second =
 //                          visibility rays per second, over the whole bake (scene build included).
-//   BM_ReplayBunnyRays/2   the very same rays (vertexVisibilityRays: same origins, directions and
-//                          order), replayed through rtcOccluded1 with Embree's C API on 2 threads
+//   BM_ReplayBunnyRays/T   the very same rays (vertexVisibilityRays: same origins, directions and
+//                          order), replayed through rtcOccluded1 with Embree's C API on T threads
 //                          in chunks of 64 vertices' rays: the ceiling for the bake's ray rate.
 //   BM_BakeSphere/N        a generated UV sphere of N rings (2 + (N - 1) 2N vertices) on a ground
 //                          square, 256 rays per vertex, 2 threads: time per vertex ("us_per_vertex")
@@ -67,7 +67,7 @@ void bake(benchmark::State& state, const std::vector<Mesh>& meshes, int threads)
 }
 
 void BM_BakeBunny(benchmark::State& state) { bake(state, bunnyMeshes(), static_cast<int>(state.range(0))); }
-BENCHMARK(BM_BakeBunny)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_BakeBunny)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 bool rawOccluded(RTCScene scene, const Ray& ray) {
   RTCIntersectContext context;
@@ -106,7 +106,7 @@ void BM_ReplayBunnyRays(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * rays.size()));
   state.counters["occluded_fraction"] = double(occluded) / double(rays.size());
 }
-BENCHMARK(BM_ReplayBunnyRays)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ReplayBunnyRays)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 Mesh meshFrom(const ProceduralMesh& shape, const std::string& name) {
   Mesh mesh;
