@@ -203,5 +203,34 @@ TEST(IblkitBake, BadShWindowIsRefusedWithoutOutput) {
   EXPECT_EQ(leftovers(root), 0);
 }
 
+TEST(IblkitBake, VisibilityOptionsAreRecorded) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out";
+  int status = 0;
+  const std::string log = bake(scene.string() + " -o " + out.string() +
+                                   " --ao-rays 16 --bounces 2 --ao-area --ao-distance 3 --ao-falloff 1",
+                               &status);
+  ASSERT_EQ(status, 0) << log;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+  EXPECT_EQ(report["parameters"]["bounces"], 2);
+  EXPECT_EQ(report["parameters"]["ao_area"], true);
+  EXPECT_EQ(report["parameters"]["ao_falloff"], 1.0);
+  EXPECT_EQ(report["parameters"]["ao_distance"], 3.0);
+  EXPECT_EQ(report["counts"]["bounce_rays"], 2 * report["counts"]["rays"].get<std::size_t>());
+  for (const char* stage : {"visibility_build_s", "visibility_rays_s", "bounces_s"})
+    EXPECT_GT(report["timings"][stage], 0.0) << stage;
+}
+
+TEST(IblkitBake, FalloffWithoutADistanceIsRefusedWithoutOutput) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out";
+  int status = 0;
+  const std::string log = bake(scene.string() + " -o " + out.string() + " --ao-falloff 2", &status);
+  EXPECT_EQ(status, 1);
+  EXPECT_EQ(log, "iblkit-bake: vertex visibility: a falloff needs a maximum distance (--ao-distance > 0)\n");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(leftovers(root), 0);
+}
+
 }  // namespace
 }  // namespace iblkit
