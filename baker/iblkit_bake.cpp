@@ -154,7 +154,8 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   timings["brdf_lut_s"] = stopwatch.lap();
   return {{"sh_window_cutoff", cutoff},
           {"irradiance_cube_size", kIrradianceCubeSize},
-          {"sh9_irradiance_error", {{"mean_relative", shError.meanRelative}, {"max_relative", shError.maxRelative}}},
+          {"sh9_irradiance_error",
+           {{"mean_relative", shError.meanRelative}, {"max_relative", shError.maxRelative}}},
           {"specular_face_size", specular.levels.front().size},
           {"specular_roughness_per_level", specular.roughness},
           {"brdf_lut_size", options.lutSize}};
@@ -267,7 +268,8 @@ int main(int argc, char** argv) {
                  "(needs --ao-distance D)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_flag("--ao-area", options.aoArea, "sample ray origins over each vertex's one-ring (large triangles)");
+  app.add_flag("--ao-area", options.aoArea,
+               "sample ray origins over each vertex's one-ring (large triangles)");
   app.add_option("--bounces", options.bounces, "interreflection bounces added to the SH transfer")
       ->check(CLI::Range(0, 16))
       ->capture_default_str();

@@ -124,7 +124,8 @@ class BorderedCubeChain {
     int size = 0, stride = 0;
     std::vector<glm::vec3> texels;  // 6 faces of stride x stride, row by row
     std::size_t index(int face, int x, int y) const {
-      return (std::size_t(face) * std::size_t(stride) + std::size_t(y)) * std::size_t(stride) + std::size_t(x);
+      return (std::size_t(face) * std::size_t(stride) + std::size_t(y)) * std::size_t(stride) +
+             std::size_t(x);
     }
   };
   std::vector<Level> levels_;
@@ -142,12 +143,18 @@ namespace {
 // The point (sc, tc) of `face`'s plane at distance 1 from the centre (Table 8.19 inverted).
 glm::vec3 facePoint(int face, float sc, float tc) {
   switch (face) {
-    case kCubeFacePositiveX: return {1.0f, -tc, -sc};
-    case kCubeFaceNegativeX: return {-1.0f, -tc, sc};
-    case kCubeFacePositiveY: return {sc, 1.0f, tc};
-    case kCubeFaceNegativeY: return {sc, -1.0f, -tc};
-    case kCubeFacePositiveZ: return {sc, -tc, 1.0f};
-    default: return {-sc, -tc, -1.0f};
+    case kCubeFacePositiveX:
+      return {1.0f, -tc, -sc};
+    case kCubeFaceNegativeX:
+      return {-1.0f, -tc, sc};
+    case kCubeFacePositiveY:
+      return {sc, 1.0f, tc};
+    case kCubeFaceNegativeY:
+      return {sc, -1.0f, -tc};
+    case kCubeFacePositiveZ:
+      return {sc, -tc, 1.0f};
+    default:
+      return {-sc, -tc, -1.0f};
   }
 }
 
@@ -191,7 +198,8 @@ namespace {
 
 CubeMap prefilterLevel(const BorderedCubeChain& source, int sourceSize, int size, float roughness,
                        std::uint32_t sampleCount) {
-  const std::vector<LobeSample> samples = lobeSamples(roughness, sampleCount, sourceSize, source.levelCount());
+  const std::vector<LobeSample> samples =
+      lobeSamples(roughness, sampleCount, sourceSize, source.levelCount());
   float weightSum = 0.0f;
   for (const LobeSample& sample : samples) weightSum += sample.NoL;
   CubeMap cube{size, {}};
@@ -237,10 +245,9 @@ SpecularCube prefilterSpecular(const EnvironmentMap& environment, const Specular
   for (int i = 0; i < levelCount; ++i) {
     const float roughness = static_cast<float>(i) / static_cast<float>(levelCount - 1);
     cube.roughness.push_back(roughness);
-    cube.levels.push_back(i == 0
-                              ? source[0]
-                              : prefilterLevel(bordered, baseSize, baseSize >> i, roughness,
-                                               specularSampleCount(roughness, options.sampleCount)));
+    cube.levels.push_back(i == 0 ? source[0]
+                                 : prefilterLevel(bordered, baseSize, baseSize >> i, roughness,
+                                                  specularSampleCount(roughness, options.sampleCount)));
   }
   return cube;
 }

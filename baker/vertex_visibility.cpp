@@ -138,8 +138,8 @@ class VertexSampler {
     const glm::vec3 point = w[2] * mesh_.positions[corner[0]] + w[1] * mesh_.positions[corner[1]] +
                             w[0] * mesh_.positions[corner[2]];
     const glm::vec3 faceNormal = rings_.normals[begin_ + k];
-    glm::vec3 normal = w[2] * mesh_.normals[corner[0]] + w[1] * mesh_.normals[corner[1]] +
-                       w[0] * mesh_.normals[corner[2]];
+    glm::vec3 normal =
+        w[2] * mesh_.normals[corner[0]] + w[1] * mesh_.normals[corner[1]] + w[0] * mesh_.normals[corner[2]];
     const float length = glm::length(normal);
     normal = length > 0.0f && std::isfinite(length) ? normal / length : faceNormal;
     ray.origin = offsetRayOrigin(point, faceNormal);
@@ -380,7 +380,8 @@ std::vector<Ray> vertexVisibilityRays(const std::vector<Mesh>& meshes, const Vis
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     const OneRings rings = oneRings(meshes[m]);
     for (std::size_t v = 0; v < meshes[m].vertexCount(); ++v) {
-      const VertexSampler sampler(meshes[m], rings, v, vertexSeed(settings.seed, m, v), settings.areaSampling);
+      const VertexSampler sampler(meshes[m], rings, v, vertexSeed(settings.seed, m, v),
+                                  settings.areaSampling);
       std::size_t rejected = 0;
       Ray ray;
       for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(settings.rayCount); ++i)

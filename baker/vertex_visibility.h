@@ -15,8 +15,8 @@
 // points into the surface the vertex lies on, and from an origin just off the vertex it could
 // slip past that triangle's edge. Such a direction is re-drawn as the same point of an
 // independently scrambled copy of the point set, up to kMaxRedraws times; a direction still
-// rejected then counts as occluded. Re-drawing (rather than counting as occluded) keeps a convex vertex at AO = 1: its
-// real hemisphere is open, only the tessellated one-ring clips the horizon.
+// rejected then counts as occluded. Re-drawing (rather than counting as occluded) keeps a convex vertex at AO
+// = 1: its real hemisphere is open, only the tessellated one-ring clips the horizon.
 //
 // Options (docs/baker.md): a distance falloff of the occlusion, area sampling of the ray origins
 // over the vertex's one-ring, and interreflected transfer (bounces).
@@ -87,8 +87,8 @@ struct MeshVisibility {
 
 struct VisibilityStatistics {
   std::size_t vertices = 0;
-  std::size_t rays = 0;      // occlusion rays traced
-  std::size_t rejected = 0;  // directions below the one-ring that were re-drawn or dropped
+  std::size_t rays = 0;        // occlusion rays traced
+  std::size_t rejected = 0;    // directions below the one-ring that were re-drawn or dropped
   std::size_t bounceRays = 0;  // closest-hit rays traced for the bounces
   // Wall-clock seconds of the stages: building Embree's scene, the visibility rays, the bounces.
   double buildSeconds = 0.0, raySeconds = 0.0, bounceSeconds = 0.0;

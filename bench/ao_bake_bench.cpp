@@ -15,7 +15,6 @@
 // Set IBLKIT_ASSETS to the folder holding scenes/, models/ and hdri/ (default: ./assets).
 
 #include <benchmark/benchmark.h>
-#include <embree3/rtcore.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
@@ -27,6 +26,7 @@
 #include <vector>
 
 #include "baker/vertex_visibility.h"
+#include "bench/raw_embree.h"
 #include "engine/core/procedural_mesh.h"
 #include "engine/core/scene.h"
 #include "raytrace/ray_scene.h"
@@ -55,7 +55,8 @@ void bake(benchmark::State& state, const std::vector<Mesh>& meshes, int threads)
   tbb::task_arena arena(threads);
   VisibilityStatistics statistics;
   for (auto _ : state) {
-    arena.execute([&] { benchmark::DoNotOptimize(bakeVertexVisibility(meshes, bakeSettings(), &statistics)); });
+    arena.execute(
+        [&] { benchmark::DoNotOptimize(bakeVertexVisibility(meshes, bakeSettings(), &statistics)); });
   }
   const auto vertices = double(statistics.vertices);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * statistics.rays));
@@ -68,19 +69,6 @@ void bake(benchmark::State& state, const std::vector<Mesh>& meshes, int threads)
 
 void BM_BakeBunny(benchmark::State& state) { bake(state, bunnyMeshes(), static_cast<int>(state.range(0))); }
 BENCHMARK(BM_BakeBunny)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
-
-bool rawOccluded(RTCScene scene, const Ray& ray) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay query{};
-  query.org_x = ray.origin.x, query.org_y = ray.origin.y, query.org_z = ray.origin.z;
-  query.dir_x = ray.direction.x, query.dir_y = ray.direction.y, query.dir_z = ray.direction.z;
-  query.tnear = 0.0f;
-  query.tfar = std::numeric_limits<float>::infinity();
-  query.mask = ~0u;
-  rtcOccluded1(scene, &context, &query);
-  return query.tfar == -std::numeric_limits<float>::infinity();
-}
 
 void BM_ReplayBunnyRays(benchmark::State& state) {
   const std::vector<Mesh>& meshes = bunnyMeshes();
@@ -108,20 +96,11 @@ void BM_ReplayBunnyRays(benchmark::State& state) {
 }
 BENCHMARK(BM_ReplayBunnyRays)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-Mesh meshFrom(const ProceduralMesh& shape, const std::string& name) {
-  Mesh mesh;
-  mesh.name = name;
-  mesh.positions = shape.positions;
-  mesh.normals = shape.normals;
-  mesh.indices = shape.indices;
-  return mesh;
-}
-
 void BM_BakeSphere(benchmark::State& state) {
   const int rings = static_cast<int>(state.range(0));
   const std::vector<Mesh> meshes = {
-      meshFrom(uvSphere(glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, rings, 2 * rings), "sphere"),
-      meshFrom(plane(glm::vec3(0.0f), 20.0f), "ground")};
+      toMesh(uvSphere(glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, rings, 2 * rings), "sphere"),
+      toMesh(plane(glm::vec3(0.0f), 20.0f), "ground")};
   bake(state, meshes, 2);
 }
 // 2,666 / 11,102 / 44,702 / 179,402 / 998,286 sphere vertices (plus the ground's 4).

@@ -12,7 +12,8 @@ OcclusionSample sampleAmbientOcclusion(const RayScene& rays, const glm::vec3& po
   OcclusionSample sample;
   sample.direction = Frame::fromZ(shadingNormal).toWorld(sampleCosineHemisphere(u));
   // The side of the surface the ray leaves into.
-  const glm::vec3 side = glm::dot(sample.direction, geometricNormal) > 0.0f ? geometricNormal : -geometricNormal;
+  const glm::vec3 side =
+      glm::dot(sample.direction, geometricNormal) > 0.0f ? geometricNormal : -geometricNormal;
   sample.escaped = !rays.occluded(offsetRayOrigin(position, side), sample.direction, 0.0f, maxDistance);
   return sample;
 }

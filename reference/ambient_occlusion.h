@@ -12,7 +12,7 @@
 namespace iblkit {
 
 struct OcclusionSample {
-  bool escaped = false;        // no geometry within the distance along the direction
+  bool escaped = false;       // no geometry within the distance along the direction
   glm::vec3 direction{0.0f};  // the unit direction traced (world space)
 };
 

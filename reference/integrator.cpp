@@ -200,8 +200,9 @@ void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSam
   const SurfacePoint point = scene_.surfacePoint(hit, -ray.direction);
   recordFirstHit(point, hit.t, result);
   ++result.rays;
-  const OcclusionSample sample = sampleAmbientOcclusion(rays, point.position, point.geometricNormal,
-                                                        point.shadingNormal, sampler.next2D(), settings_.aoDistance);
+  const OcclusionSample sample =
+      sampleAmbientOcclusion(rays, point.position, point.geometricNormal, point.shadingNormal,
+                             sampler.next2D(), settings_.aoDistance);
   if (!sample.escaped) return;
   result.radiance = glm::vec3(1.0f);
   result.unoccludedDirection = sample.direction;

@@ -11,15 +11,6 @@
 namespace iblkit {
 namespace {
 
-Mesh meshFrom(const ProceduralMesh& shape, const std::string& name) {
-  Mesh mesh;
-  mesh.name = name;
-  mesh.positions = shape.positions;
-  mesh.normals = shape.normals;
-  mesh.indices = shape.indices;
-  return mesh;
-}
-
 // A concave configuration: a floor grid meeting a tall wall (the box's +X face is x = 0) at a
 // right angle; floor vertices near the wall see the wall, which sees them back.
 std::vector<Mesh> floorAndWall() {
@@ -36,7 +27,7 @@ std::vector<Mesh> floorAndWall() {
       const std::uint32_t a = i * (kCells + 1) + j, b = a + kCells + 1, c = b + 1, d = a + 1;
       floor.indices.insert(floor.indices.end(), {a, b, c, a, c, d});
     }
-  return {floor, meshFrom(box(glm::vec3(-0.5f, 2.0f, 0.0f), glm::vec3(1.0f, 4.0f, 6.0f)), "wall")};
+  return {floor, toMesh(box(glm::vec3(-0.5f, 2.0f, 0.0f), glm::vec3(1.0f, 4.0f, 6.0f)), "wall")};
 }
 
 VisibilitySettings withBounces(int bounces, std::vector<float> albedo) {
@@ -54,7 +45,7 @@ TEST(InterreflectedTransfer, ConcaveCornerGainsTransferThatConverges) {
   const auto one = bakeVertexVisibility(meshes, withBounces(1, {0.8f, 0.8f}), &statistics);
   const auto two = bakeVertexVisibility(meshes, withBounces(2, {0.8f, 0.8f}));
   EXPECT_EQ(statistics.bounceRays, statistics.rays);  // one bounce re-traces every ray once
-  const std::size_t nearWall = 4 * 9;                   // the floor vertex at (0.01, 0, 0)
+  const std::size_t nearWall = 4 * 9;                 // the floor vertex at (0.01, 0, 0)
   ASSERT_LT(glm::distance(meshes[0].positions[nearWall], glm::vec3(0.01f, 0.0f, 0.0f)), 1e-6f);
   const float t0 = shadowed[0].transfer[nearWall][0], t1 = one[0].transfer[nearWall][0],
               t2 = two[0].transfer[nearWall][0];
@@ -83,7 +74,7 @@ TEST(InterreflectedTransfer, BlackSurfacesReflectNothing) {
 }
 
 TEST(InterreflectedTransfer, LoneConvexSphereIsUnchanged) {
-  const std::vector<Mesh> meshes = {meshFrom(uvSphere(glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 12, 24), "sphere")};
+  const std::vector<Mesh> meshes = {toMesh(uvSphere(glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 12, 24), "sphere")};
   VisibilityStatistics statistics;
   const auto shadowed = bakeVertexVisibility(meshes, withBounces(0, {}));
   const auto bounced = bakeVertexVisibility(meshes, withBounces(2, {1.0f}), &statistics);
@@ -97,7 +88,9 @@ TEST(InterreflectedTransfer, NeedsOneAlbedoPerMeshInRange) {
   const std::vector<Mesh> meshes = floorAndWall();
   EXPECT_EQ(test::errorMessage([&] { bakeVertexVisibility(meshes, withBounces(1, {0.5f})); }),
             "vertex visibility: bounces need one albedo per mesh: got 1 for 2 meshes");
-  EXPECT_EQ(test::errorMessage([&] { bakeVertexVisibility(meshes, withBounces(1, {0.5f, 1.5f})); }),
+  EXPECT_EQ(test::errorMessage([&] {
+              bakeVertexVisibility(meshes, withBounces(1, {0.5f, 1.5f}));
+            }),
             "vertex visibility: albedo 1.500000 is not in [0, 1]");
   EXPECT_EQ(test::errorMessage([&] { bakeVertexVisibility(meshes, withBounces(-1, {})); }),
             "vertex visibility: bounces must be >= 0");

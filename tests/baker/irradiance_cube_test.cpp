@@ -18,7 +18,8 @@ EnvironmentMap mapOf(int width, const std::function<glm::vec3(const glm::vec3&)>
 }
 
 TEST(IrradianceCube, ConstantSkyGivesPiTimesItsRadianceEverywhere) {
-  const CubeMap cube = irradianceCube(mapOf(64, [](const glm::vec3&) { return glm::vec3(0.5f, 1.0f, 2.0f); }), 4);
+  const CubeMap cube =
+      irradianceCube(mapOf(64, [](const glm::vec3&) { return glm::vec3(0.5f, 1.0f, 2.0f); }), 4);
   ASSERT_EQ(cube.size, 4);
   for (const Image& face : cube.faces)
     for (const glm::vec4& p : face.pixels()) {
@@ -35,7 +36,8 @@ TEST(IrradianceCube, ShErrorIsSmallForALowFrequencySkyAndLargeForASun) {
   EXPECT_LT(low.meanRelative, 0.01f);
   EXPECT_LT(low.maxRelative, 0.03f);
   const EnvironmentMap sun = mapOf(128, [](const glm::vec3& d) {
-    return glm::vec3(0.05f) + glm::vec3(200.0f) * glm::vec3(glm::dot(d, glm::normalize(glm::vec3(1, 1, 0))) > 0.99f);
+    return glm::vec3(0.05f) +
+           glm::vec3(200.0f) * glm::vec3(glm::dot(d, glm::normalize(glm::vec3(1, 1, 0))) > 0.99f);
   });
   const IrradianceError high = shIrradianceError(irradianceCube(sun, 8), projectEnvironmentSh9(sun));
   EXPECT_GT(high.maxRelative, 0.3f);

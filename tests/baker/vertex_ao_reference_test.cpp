@@ -23,38 +23,16 @@ namespace {
 
 constexpr int kRays = 256;
 
-Mesh meshFrom(const ProceduralMesh& shape, const std::string& name) {
-  Mesh mesh;
-  mesh.name = name;
-  mesh.positions = shape.positions;
-  mesh.normals = shape.normals;
-  mesh.indices = shape.indices;
-  return mesh;
-}
-
-// A square of side 2 * halfSize in the plane y = 0 facing +Y, cells x cells squares.
+// A square of side 2 * halfSize in the plane y = 0 facing +Y, cut into cells x cells squares.
 Mesh groundGrid(float halfSize, int cells) {
-  Mesh mesh;
-  mesh.name = "ground";
-  const float step = 2.0f * halfSize / float(cells);
-  for (int i = 0; i <= cells; ++i)
-    for (int j = 0; j <= cells; ++j) {
-      mesh.positions.emplace_back(-halfSize + step * float(j), 0.0f, -halfSize + step * float(i));
-      mesh.normals.emplace_back(0.0f, 1.0f, 0.0f);
-    }
-  const auto vertex = [cells](int i, int j) { return std::uint32_t(i * (cells + 1) + j); };
-  for (int i = 0; i < cells; ++i)
-    for (int j = 0; j < cells; ++j)
-      mesh.indices.insert(mesh.indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1),
-                                               vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
-  return mesh;
+  return toMesh(gridPlane(glm::vec3(0.0f), 2.0f * halfSize, cells), "ground");
 }
 
 // A sphere just above a ground grid (partly occluded vertices on both), and a box standing on the
 // ground beside it (flat faces, hard edges).
 std::vector<Mesh> testScene() {
-  return {meshFrom(uvSphere(glm::vec3(0.0f, 1.02f, 0.0f), 1.0f, 16, 32), "sphere"),
-          meshFrom(box(glm::vec3(1.6f, 0.5f, 0.3f), glm::vec3(0.6f, 1.0f, 0.8f)), "box"), groundGrid(3.0f, 24)};
+  return {toMesh(uvSphere(glm::vec3(0.0f, 1.02f, 0.0f), 1.0f, 16, 32), "sphere"),
+          toMesh(box(glm::vec3(1.6f, 0.5f, 0.3f), glm::vec3(0.6f, 1.0f, 0.8f)), "box"), groundGrid(3.0f, 24)};
 }
 
 // The reference's AO at every vertex: kRays samples of sampleAmbientOcclusion with PCG32 numbers,
@@ -69,8 +47,8 @@ std::vector<std::vector<float>> referenceAo(const std::vector<Mesh>& meshes, flo
       PCG32 rng(1234 + m, v);
       int escaped = 0;
       for (int i = 0; i < kRays; ++i)
-        escaped += sampleAmbientOcclusion(rays, meshes[m].positions[v], meshes[m].normals[v], meshes[m].normals[v],
-                                          rng.uniform2D(), maxDistance)
+        escaped += sampleAmbientOcclusion(rays, meshes[m].positions[v], meshes[m].normals[v],
+                                          meshes[m].normals[v], rng.uniform2D(), maxDistance)
                        .escaped;
       ao[m].push_back(float(escaped) / float(kRays));
     }
@@ -87,7 +65,8 @@ struct Comparison {
 // 1 where the normal approximation fails). Over all vertices: the mean difference (a bias
 // common to all vertices, such as a ray offset or hemisphere convention that differs) within 4
 // standard errors of the mean.
-Comparison compare(const std::vector<MeshVisibility>& baked, const std::vector<std::vector<float>>& reference) {
+Comparison compare(const std::vector<MeshVisibility>& baked,
+                   const std::vector<std::vector<float>>& reference) {
   Comparison c;
   double sumDifference = 0.0, sumVariance = 0.0;
   for (std::size_t m = 0; m < baked.size(); ++m)
@@ -114,8 +93,8 @@ VisibilitySettings bakeSettings(float maxDistance) {
 
 TEST(VertexAoReference, BakerMatchesTheReferenceTracersAoAtTheVertices) {
   const std::vector<Mesh> meshes = testScene();
-  const Comparison c =
-      compare(bakeVertexVisibility(meshes, bakeSettings(0.0f)), referenceAo(meshes, std::numeric_limits<float>::infinity()));
+  const Comparison c = compare(bakeVertexVisibility(meshes, bakeSettings(0.0f)),
+                               referenceAo(meshes, std::numeric_limits<float>::infinity()));
   // The scene must test something: many vertices neither fully open nor fully closed.
   EXPECT_GT(c.partlyOccluded, 150u);
   EXPECT_EQ(c.outliers, 0u) << "of " << c.vertices << " vertices";
@@ -134,8 +113,8 @@ TEST(VertexAoReference, AgreesWithAMaximumDistanceToo) {
 // reference without a limit.
 TEST(VertexAoReference, DetectsADifferentMaximumDistance) {
   const std::vector<Mesh> meshes = testScene();
-  const Comparison c =
-      compare(bakeVertexVisibility(meshes, bakeSettings(0.5f)), referenceAo(meshes, std::numeric_limits<float>::infinity()));
+  const Comparison c = compare(bakeVertexVisibility(meshes, bakeSettings(0.5f)),
+                               referenceAo(meshes, std::numeric_limits<float>::infinity()));
   EXPECT_GT(std::abs(c.meanDifference), c.meanDifferenceLimit);
 }
 

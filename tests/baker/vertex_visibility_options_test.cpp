@@ -12,15 +12,6 @@
 namespace iblkit {
 namespace {
 
-Mesh meshFrom(const ProceduralMesh& shape, const std::string& name) {
-  Mesh mesh;
-  mesh.name = name;
-  mesh.positions = shape.positions;
-  mesh.normals = shape.normals;
-  mesh.indices = shape.indices;
-  return mesh;
-}
-
 // A floor of 3 x 3 vertices (square cells of side 5, a vertex at the origin) under a ceiling whose
 // underside is the plane y = h, wide enough to be infinite within distance 1.
 std::vector<Mesh> floorUnderCeiling(float h) {
@@ -36,7 +27,7 @@ std::vector<Mesh> floorUnderCeiling(float h) {
       const std::uint32_t a = 3 * i + j, b = a + 3, c = a + 4, d = a + 1;
       floor.indices.insert(floor.indices.end(), {a, b, c, a, c, d});
     }
-  return {floor, meshFrom(box(glm::vec3(0.0f, h + 0.5f, 0.0f), glm::vec3(400.0f, 1.0f, 400.0f)), "ceiling")};
+  return {floor, toMesh(box(glm::vec3(0.0f, h + 0.5f, 0.0f), glm::vec3(400.0f, 1.0f, 400.0f)), "ceiling")};
 }
 
 constexpr std::size_t kCentre = 4;  // the floor vertex at the origin
@@ -58,11 +49,13 @@ VisibilitySettings settings(float maxDistance, float falloff, bool area = false)
 TEST(VisibilityFalloff, FloorUnderACeilingMatchesTheClosedForm) {
   const std::vector<Mesh> meshes = floorUnderCeiling(0.5f);
   const float c0 = 0.5f;
-  EXPECT_NEAR(bakeVertexVisibility(meshes, settings(1.0f, 0.0f))[0].ambientOcclusion[kCentre], c0 * c0, 0.01f);
+  EXPECT_NEAR(bakeVertexVisibility(meshes, settings(1.0f, 0.0f))[0].ambientOcclusion[kCentre], c0 * c0,
+              0.01f);
   EXPECT_NEAR(bakeVertexVisibility(meshes, settings(1.0f, 1.0f))[0].ambientOcclusion[kCentre],
               1.0f - (1.0f - c0) * (1.0f - c0), 0.01f);
   const float p2 = (1.0f - c0 * c0) - 4.0f * c0 * (1.0f - c0) + 2.0f * c0 * c0 * std::log(1.0f / c0);
-  EXPECT_NEAR(bakeVertexVisibility(meshes, settings(1.0f, 2.0f))[0].ambientOcclusion[kCentre], 1.0f - p2, 0.01f);
+  EXPECT_NEAR(bakeVertexVisibility(meshes, settings(1.0f, 2.0f))[0].ambientOcclusion[kCentre], 1.0f - p2,
+              0.01f);
 }
 
 TEST(VisibilityFalloff, NeedsAMaximumDistanceAndAValidExponent) {
@@ -83,19 +76,21 @@ TEST(VisibilityAreaSampling, UniformSurroundingsGiveThePointValue) {
 }
 
 TEST(VisibilityAreaSampling, LoneConvexSphereStaysOpen) {
-  const std::vector<Mesh> meshes = {meshFrom(uvSphere(glm::vec3(0.0f), 1.0f, 8, 16), "sphere")};
+  const std::vector<Mesh> meshes = {toMesh(uvSphere(glm::vec3(0.0f), 1.0f, 8, 16), "sphere")};
   VisibilitySettings s = settings(0.0f, 0.0f, true);
   s.rayCount = 256;
   const auto result = bakeVertexVisibility(meshes, s);
-  for (std::size_t v = 0; v < meshes[0].vertexCount(); ++v) EXPECT_EQ(result[0].ambientOcclusion[v], 1.0f) << v;
+  for (std::size_t v = 0; v < meshes[0].vertexCount(); ++v)
+    EXPECT_EQ(result[0].ambientOcclusion[v], 1.0f) << v;
 }
 
 // A big two-triangle floor whose corner at (-5, 0, -5) lies under a low slab covering x < -3.5:
 // at the corner nearly everything is blocked, but much of the corner's share of the floor (its
 // dual cell reaches the edge midpoints at x = 0) is not under the slab, which area sampling sees.
 TEST(VisibilityAreaSampling, LargeTrianglesAverageOverTheVertexsShare) {
-  const std::vector<Mesh> meshes = {meshFrom(plane(glm::vec3(0.0f), 10.0f), "floor"),
-                                    meshFrom(box(glm::vec3(-4.75f, 0.7f, 0.0f), glm::vec3(2.5f, 1.0f, 12.0f)), "slab")};
+  const std::vector<Mesh> meshes = {
+      toMesh(plane(glm::vec3(0.0f), 10.0f), "floor"),
+      toMesh(box(glm::vec3(-4.75f, 0.7f, 0.0f), glm::vec3(2.5f, 1.0f, 12.0f)), "slab")};
   std::size_t corner = 0;
   for (std::size_t v = 0; v < meshes[0].vertexCount(); ++v)
     if (meshes[0].positions[v].x < 0.0f && meshes[0].positions[v].z < 0.0f) corner = v;
@@ -111,7 +106,8 @@ TEST(VisibilityAreaSampling, SameSeedIsBitIdentical) {
   VisibilitySettings s = settings(1.0f, 0.0f, true);
   s.rayCount = 64;
   const auto first = bakeVertexVisibility(meshes, s), second = bakeVertexVisibility(meshes, s);
-  for (std::size_t m = 0; m < meshes.size(); ++m) EXPECT_EQ(first[m].ambientOcclusion, second[m].ambientOcclusion);
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+    EXPECT_EQ(first[m].ambientOcclusion, second[m].ambientOcclusion);
 }
 
 }  // namespace
