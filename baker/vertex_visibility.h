@@ -61,14 +61,17 @@ struct VisibilitySettings {
   // Diffuse albedo of each mesh, in [0, 1] (one grey value per mesh: the transfer vector is one
   // scalar per SH coefficient). Required (one per mesh) when bounces > 0.
   std::vector<float> albedo;
-  // Called with (vertices done, total vertices) from the worker threads while the bake runs,
-  // possibly concurrently: it must be thread-safe. May be empty.
+  // Called with (vertices done, total) from the worker threads while the bake runs, possibly
+  // concurrently: it must be thread-safe. May be empty. Each bounce pass visits every vertex
+  // again, so total = vertices * (1 + bounces).
   std::function<void(std::size_t, std::size_t)> progress;
 };
 
 // The visibility of every vertex of one mesh, in the mesh's vertex order.
 struct MeshVisibility {
   // Ambient occlusion: the fraction of cosine-weighted rays that escape, in [0, 1]; 1 = open sky.
+  // With a falloff, each ray counts by its visibility 1 - (1 - t / maxDistance)^p instead of 0 or 1
+  // (and so it does in the bent normal and the transfer).
   std::vector<float> ambientOcclusion;
   // Bent normal: the normalised mean of the escaping directions (the vertex normal when none
   // escapes). Unit length, world space.
@@ -94,7 +97,6 @@ struct VisibilityStatistics {
   double buildSeconds = 0.0, raySeconds = 0.0, bounceSeconds = 0.0;
 };
 
-// The progress callback's total is vertices * (1 + bounces).
 // Bakes every vertex of every mesh, all meshes occluding each other. Runs in parallel over the
 // vertices with TBB (the caller's task arena decides the thread count). Meshes must have one
 // unit normal per position (Scene loading guarantees it). Throws Error("vertex visibility: ...")
@@ -106,8 +108,8 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
                                                  VisibilityStatistics* statistics = nullptr);
 
 // The visibility rays bakeVertexVisibility traces (after one-ring rejection: the directions
-// dropped after kMaxRedraws are left out), vertex by vertex in the bake's order, each ending at
-// `settings.maxDistance` (or infinity): for benchmarks that replay them through Embree directly.
+// dropped after kMaxRedraws are left out), vertex by vertex in the bake's order, for benchmarks
+// that replay them through Embree directly (to settings.maxDistance, or infinity when it is 0).
 std::vector<Ray> vertexVisibilityRays(const std::vector<Mesh>& meshes, const VisibilitySettings& settings);
 
 }  // namespace iblkit
