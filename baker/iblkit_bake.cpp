@@ -1,8 +1,8 @@
 // iblkit-bake: precomputes what the real-time engine needs for a scene (docs/baker.md).
 //
 //   iblkit-bake SCENE [--env ENV] [--env-format latlong|mirrorball|angular] -o OUTDIR [--ao-rays N]
-//               [--ao-distance D] [--seed S] [--threads T] [--sh-window auto|none|BANDS]
-//               [--specular-samples N] [--lut-size N]
+//               [--ao-distance D] [--ao-falloff P] [--ao-area] [--bounces N] [--seed S] [--threads T]
+//               [--sh-window auto|none|BANDS] [--specular-samples N] [--lut-size N]
 //
 // OUTDIR/scene.glb  the whole flattened scene (world-space meshes, ground included, materials with
 //                   the scene's overrides applied, camera) with per-vertex visibility attributes
@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -29,6 +30,7 @@
 #include "baker/baked_scene_gltf.h"
 #include "baker/brdf_lut.h"
 #include "baker/environment_sh.h"
+#include "baker/irradiance_cube.h"
 #include "baker/output_directory.h"
 #include "baker/specular_prefilter.h"
 #include "baker/vertex_visibility.h"
@@ -50,6 +52,9 @@ struct Options {
   fs::path scene, environment, output;
   int aoRays = 256;
   float aoDistance = 0.0f;
+  float aoFalloff = 0.0f;
+  bool aoArea = false;
+  int bounces = 0;
   std::uint32_t seed = 0;
   int threads = 0;  // 0: every core
   std::string envFormat = "latlong";
@@ -99,6 +104,15 @@ void writeJson(const fs::path& file, const json& document) {
   if (!stream.flush()) fail(file, "cannot write file");
 }
 
+// The grey diffuse albedo of a mesh for --bounces: the Rec. 709 luminance of the Lambert lobe's
+// colour, baseColor * (1 - metallic) (material.h), clamped to [0, 1].
+float diffuseAlbedo(const Scene& scene, const Mesh& mesh) {
+  if (mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size()) return 0.0f;
+  const Material& material = scene.materials[std::size_t(mesh.material)];
+  const glm::vec3 diffuse = material.baseColor * (1.0f - material.metallic);
+  return std::clamp(glm::dot(diffuse, glm::vec3(0.2126f, 0.7152f, 0.0722f)), 0.0f, 1.0f);
+}
+
 // The sinc^4 window cutoff for SH9: automatic (the largest cutoff keeping irradiance >= 0), none
 // (0), or a number of bands.
 float shWindowCutoff(const std::string& choice, const SphericalHarmonics9& sh) {
@@ -113,8 +127,13 @@ float shWindowCutoff(const std::string& choice, const SphericalHarmonics9& sh) {
   throw Error("--sh-window: expected auto, none or a positive number of bands, got '" + choice + "'");
 }
 
-// The environment stages: env/sh9.json (SH9 radiance, windowed), env/specular.exr (GGX mip chain
-// as an OpenEXR cube map) and env/brdf_lut.exr (split-sum DFG table), written into `folder`.
+// Face size of env/irradiance.exr (irradiance is smooth: 16 is plenty, docs/prefilter.md).
+constexpr int kIrradianceCubeSize = 16;
+
+// The environment stages: env/sh9.json (SH9 radiance, windowed), env/irradiance.exr (brute-force
+// irradiance cube, and the SH9 irradiance's error against it in bake.json), env/specular.exr (GGX
+// mip chain as an OpenEXR cube map) and env/brdf_lut.exr (split-sum DFG table), written into
+// `folder`.
 json bakeEnvironment(const EnvironmentMap& environment, const Options& options, const fs::path& folder,
                      Stopwatch& stopwatch, json& timings) {
   fs::create_directories(folder / "env");
@@ -122,6 +141,10 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   const float cutoff = shWindowCutoff(options.shWindow, sh);
   writeSh9Json(folder / "env" / "sh9.json", sh, cutoff);
   timings["sh9_s"] = stopwatch.lap();
+  const CubeMap irradiance = irradianceCube(environment, kIrradianceCubeSize);
+  writeIrradianceCubeExr(folder / "env" / "irradiance.exr", irradiance);
+  const IrradianceError shError = shIrradianceError(irradiance, cutoff > 0.0f ? windowSh9(sh, cutoff) : sh);
+  timings["irradiance_s"] = stopwatch.lap();
   SpecularPrefilterOptions specularOptions;
   specularOptions.sampleCount = options.specularSamples;
   const SpecularCube specular = prefilterSpecular(environment, specularOptions);
@@ -130,6 +153,9 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   writeBrdfLutExr(folder / "env" / "brdf_lut.exr", computeBrdfLut(options.lutSize));
   timings["brdf_lut_s"] = stopwatch.lap();
   return {{"sh_window_cutoff", cutoff},
+          {"irradiance_cube_size", kIrradianceCubeSize},
+          {"sh9_irradiance_error",
+           {{"mean_relative", shError.meanRelative}, {"max_relative", shError.maxRelative}}},
           {"specular_face_size", specular.levels.front().size},
           {"specular_roughness_per_level", specular.roughness},
           {"brdf_lut_size", options.lutSize}};
@@ -157,11 +183,19 @@ int bake(const Options& options) {
   settings.rayCount = options.aoRays;
   settings.maxDistance = options.aoDistance;
   settings.seed = options.seed;
+  settings.falloff = options.aoFalloff;
+  settings.areaSampling = options.aoArea;
+  settings.bounces = options.bounces;
+  if (options.bounces > 0)
+    for (const Mesh& mesh : scene.meshes) settings.albedo.push_back(diffuseAlbedo(scene, mesh));
   settings.progress = progressBar();
   VisibilityStatistics statistics;
   const std::vector<MeshVisibility> visibility = bakeVertexVisibility(scene.meshes, settings, &statistics);
   const double visibilitySeconds = stopwatch.lap();
   timings["visibility_s"] = visibilitySeconds;
+  timings["visibility_build_s"] = statistics.buildSeconds;
+  timings["visibility_rays_s"] = statistics.raySeconds;
+  timings["bounces_s"] = statistics.bounceSeconds;
   attachVisibilityAttributes(scene.meshes, visibility);
 
   std::size_t triangles = 0;
@@ -173,7 +207,7 @@ int bake(const Options& options) {
     json environmentReport = nullptr;
     if (environmentMap) {
       environmentReport = bakeEnvironment(*environmentMap, options, folder, stopwatch, timings);
-      for (const char* file : {"env/sh9.json", "env/specular.exr", "env/brdf_lut.exr"})
+      for (const char* file : {"env/sh9.json", "env/irradiance.exr", "env/specular.exr", "env/brdf_lut.exr"})
         outputs.push_back(file);
     }
     const json report = {
@@ -186,6 +220,9 @@ int bake(const Options& options) {
         {"parameters",
          {{"ao_rays", options.aoRays},
           {"ao_distance", options.aoDistance},
+          {"ao_falloff", options.aoFalloff},
+          {"ao_area", options.aoArea},
+          {"bounces", options.bounces},
           {"seed", options.seed},
           {"env_format", options.envFormat},
           {"environment_rotation_degrees", scene.environment.rotationDegrees},
@@ -200,8 +237,11 @@ int bake(const Options& options) {
           {"vertices", statistics.vertices},
           {"triangles", triangles},
           {"rays", statistics.rays},
+          {"bounce_rays", statistics.bounceRays},
           {"rejected_directions", statistics.rejected}}},
-        {"rays_per_second", visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0}};
+        {"rays_per_second", visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0},
+        {"trace_rays_per_second",
+         statistics.raySeconds > 0.0 ? double(statistics.rays) / statistics.raySeconds : 0.0}};
     writeJson(folder / "bake.json", report);
   });
   std::cout << kProgram << ": wrote " << options.output.string() << " (" << statistics.vertices
@@ -224,6 +264,16 @@ int main(int argc, char** argv) {
   app.add_option("--ao-distance", options.aoDistance,
                  "occluders beyond this distance are ignored; 0 = infinite")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--ao-falloff", options.aoFalloff,
+                 "occlusion falloff exponent p: a hit at distance t occludes by (1 - t / D)^p; 0 = off "
+                 "(needs --ao-distance D)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_flag("--ao-area", options.aoArea,
+               "sample ray origins over each vertex's one-ring (large triangles)");
+  app.add_option("--bounces", options.bounces, "interreflection bounces added to the SH transfer")
+      ->check(CLI::Range(0, 16))
       ->capture_default_str();
   app.add_option("--seed", options.seed, "sample scrambling seed")->capture_default_str();
   app.add_option("--env-format", options.envFormat, "environment layout: latlong, mirrorball or angular")

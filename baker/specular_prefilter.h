@@ -47,7 +47,8 @@ struct SpecularCube {
 std::uint32_t specularSampleCount(float roughness, std::uint32_t maxSamples);
 
 // The source of the convolution: `environment` (rotation and intensity applied) on a size x size
-// cube (cubeFromRadiance, 2x2 samples per texel) and its box-filtered mip chain.
+// cube (cubeFromRadiance's values, 2x2 samples per texel, computed in parallel) and its
+// box-filtered mip chain.
 CubeMapLevels specularSourceChain(const EnvironmentMap& environment, int size);
 
 // One prefiltered size x size cube for perceptual roughness `roughness` in (0, 1], from a source

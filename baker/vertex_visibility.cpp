@@ -3,7 +3,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <limits>
@@ -45,18 +47,21 @@ std::uint32_t redrawSeed(std::uint32_t seed, std::uint32_t draw) {
   return static_cast<std::uint32_t>(mixBits((std::uint64_t(draw) << 32) | seed) >> 32);
 }
 
-// The unit normals of the triangles around each vertex, in compressed rows: the normals of
-// vertex v are normals[start[v] .. start[v + 1]). Zero-area triangles have no plane and are left
-// out.
+// The triangles around each vertex, in compressed rows: those of vertex v are entries
+// start[v] .. start[v + 1]) of `triangles` (triangle index), `normals` (unit plane normal) and
+// `areas`. Zero-area triangles have no plane and are left out.
 struct OneRings {
   std::vector<std::size_t> start;
   std::vector<glm::vec3> normals;
+  std::vector<std::uint32_t> triangles;
+  std::vector<float> areas;
 };
 
 OneRings oneRings(const Mesh& mesh) {
   OneRings rings;
   const std::size_t triangles = mesh.triangleCount();
   std::vector<glm::vec3> faceNormals(triangles);
+  std::vector<float> faceAreas(triangles);
   std::vector<bool> flat(triangles);
   for (std::size_t t = 0; t < triangles; ++t) {
     const glm::vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
@@ -65,15 +70,23 @@ OneRings oneRings(const Mesh& mesh) {
     const float length = glm::length(n);
     flat[t] = !(length > 0.0f) || !std::isfinite(length);
     faceNormals[t] = flat[t] ? glm::vec3(0.0f) : n / length;
+    faceAreas[t] = flat[t] ? 0.0f : 0.5f * length;
   }
   rings.start.assign(mesh.vertexCount() + 1, 0);
   for (std::size_t i = 0; i < mesh.indices.size(); ++i)
     if (!flat[i / 3]) ++rings.start[mesh.indices[i] + 1];
   for (std::size_t v = 0; v < mesh.vertexCount(); ++v) rings.start[v + 1] += rings.start[v];
   rings.normals.resize(rings.start.back());
+  rings.triangles.resize(rings.start.back());
+  rings.areas.resize(rings.start.back());
   std::vector<std::size_t> fill(rings.start.begin(), rings.start.end() - 1);
-  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
-    if (!flat[i / 3]) rings.normals[fill[mesh.indices[i]]++] = faceNormals[i / 3];
+  for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+    if (flat[i / 3]) continue;
+    const std::size_t slot = fill[mesh.indices[i]]++;
+    rings.normals[slot] = faceNormals[i / 3];
+    rings.triangles[slot] = static_cast<std::uint32_t>(i / 3);
+    rings.areas[slot] = faceAreas[i / 3];
+  }
   return rings;
 }
 
@@ -81,6 +94,95 @@ bool aboveOneRing(const glm::vec3& direction, const glm::vec3* normals, std::siz
   for (std::size_t i = 0; i < count; ++i)
     if (!(glm::dot(direction, normals[i]) > 0.0f)) return false;
   return true;
+}
+
+// Everything needed to draw the rays of one vertex.
+class VertexSampler {
+ public:
+  VertexSampler(const Mesh& mesh, const OneRings& rings, std::size_t vertex, std::uint32_t seed, bool area)
+      : mesh_(mesh),
+        vertex_(static_cast<std::uint32_t>(vertex)),
+        begin_(rings.start[vertex]),
+        size_(rings.start[vertex + 1] - rings.start[vertex]),
+        rings_(rings),
+        seed_(seed),
+        frame_(Frame::fromZ(mesh.normals[vertex])),
+        origin_(offsetRayOrigin(mesh.positions[vertex], mesh.normals[vertex])) {
+    for (std::size_t k = 0; k < size_; ++k) ringArea_ += rings.areas[begin_ + k];
+    area_ = area && size_ > 0 && ringArea_ > 0.0f && std::isfinite(ringArea_);
+  }
+
+  // The i-th ray; false when every draw was rejected (it then counts as occluded). Adds the
+  // rejected draws to `rejected`.
+  bool ray(std::uint32_t i, Ray& ray, std::size_t& rejected) const {
+    if (!area_) {
+      ray.origin = origin_;
+      return direction(i, frame_, rings_.normals.data() + begin_, size_, ray.direction, rejected);
+    }
+    // The origin: a point of the vertex's barycentric dual cell. A hash of (seed, i) gives its
+    // random numbers (the Sobol points stay with the directions: index i of another scramble
+    // would tie the origin's stratum to the direction's).
+    const std::uint64_t h = mixBits((std::uint64_t(redrawSeed(seed_, kMaxRedraws + 1)) << 32) | i);
+    float target = float(h >> 40) * 0x1p-24f * ringArea_;
+    std::size_t k = 0;
+    while (k + 1 < size_ && target >= rings_.areas[begin_ + k]) target -= rings_.areas[begin_ + k++];
+    const float reuse = std::clamp(target / rings_.areas[begin_ + k], 0.0f, 0x1.fffffep-1f);
+    const glm::vec2 b = sampleUniformTriangle({reuse, float((h >> 16) & 0xffffffu) * 0x1p-24f});
+    float w[3] = {b.x, b.y, 1.0f - b.x - b.y};
+    std::sort(w, w + 3);  // the vertex takes the largest coordinate, the other two either order
+    const std::uint32_t t = rings_.triangles[begin_ + k];
+    std::uint32_t corner[3] = {mesh_.indices[3 * std::size_t(t)], mesh_.indices[3 * std::size_t(t) + 1],
+                               mesh_.indices[3 * std::size_t(t) + 2]};
+    while (corner[0] != vertex_) std::rotate(corner, corner + 1, corner + 3);
+    if (h & 1u) std::swap(corner[1], corner[2]);
+    const glm::vec3 point = w[2] * mesh_.positions[corner[0]] + w[1] * mesh_.positions[corner[1]] +
+                            w[0] * mesh_.positions[corner[2]];
+    const glm::vec3 faceNormal = rings_.normals[begin_ + k];
+    glm::vec3 normal =
+        w[2] * mesh_.normals[corner[0]] + w[1] * mesh_.normals[corner[1]] + w[0] * mesh_.normals[corner[2]];
+    const float length = glm::length(normal);
+    normal = length > 0.0f && std::isfinite(length) ? normal / length : faceNormal;
+    ray.origin = offsetRayOrigin(point, faceNormal);
+    return direction(i, Frame::fromZ(normal), &faceNormal, 1, ray.direction, rejected);
+  }
+
+ private:
+  // Direction i about `frame`, re-drawn while below one of the planes.
+  bool direction(std::uint32_t i, const Frame& frame, const glm::vec3* planes, std::size_t planeCount,
+                 glm::vec3& direction, std::size_t& rejected) const {
+    for (std::uint32_t draw = 0; draw <= kMaxRedraws; ++draw) {
+      direction = frame.toWorld(
+          sampleCosineHemisphere(owenScrambledSobol02(i, draw == 0 ? seed_ : redrawSeed(seed_, draw))));
+      if (aboveOneRing(direction, planes, planeCount)) return true;
+      ++rejected;
+    }
+    return false;
+  }
+
+  const Mesh& mesh_;
+  std::uint32_t vertex_;
+  std::size_t begin_, size_;
+  const OneRings& rings_;
+  std::uint32_t seed_;
+  bool area_ = false;
+  float ringArea_ = 0.0f;
+  Frame frame_;
+  glm::vec3 origin_;
+};
+
+float rayLength(const VisibilitySettings& settings) {
+  return settings.maxDistance > 0.0f ? settings.maxDistance : std::numeric_limits<float>::infinity();
+}
+
+// How much a ray is blocked, in [0, 1] (1 - visibility), and what it hit when `hit` is given.
+// rtcOccluded1 alone when neither the hit nor the distance (falloff) is needed.
+float rayOcclusion(const RayScene& scene, const Ray& ray, float tmax, float falloff, Hit* hit) {
+  if (falloff <= 0.0f && !hit) return scene.occluded(ray.origin, ray.direction, 0.0f, tmax) ? 1.0f : 0.0f;
+  const Hit h = scene.intersect(ray, 0.0f, tmax);
+  if (hit) *hit = h;
+  if (!h.hit) return 0.0f;
+  if (falloff <= 0.0f) return 1.0f;
+  return std::pow(std::clamp(1.0f - h.t / tmax, 0.0f, 1.0f), falloff);
 }
 
 struct VertexResult {
@@ -91,42 +193,61 @@ struct VertexResult {
   std::size_t rays, rejected;
 };
 
-VertexResult vertexVisibility(const RayScene& scene, const glm::vec3& position, const glm::vec3& normal,
-                              const glm::vec3* ringNormals, std::size_t ringSize, std::uint32_t seed,
+VertexResult vertexVisibility(const RayScene& scene, const VertexSampler& sampler, const glm::vec3& normal,
                               const VisibilitySettings& settings) {
-  const float tmax =
-      settings.maxDistance > 0.0f ? settings.maxDistance : std::numeric_limits<float>::infinity();
+  const float tmax = rayLength(settings);
   const auto count = static_cast<std::uint32_t>(settings.rayCount);
-  const Frame frame = Frame::fromZ(normal);
-  const glm::vec3 origin = offsetRayOrigin(position, normal);
-
   VertexResult result{};
   glm::vec3 escapedSum(0.0f);
-  std::uint32_t escaped = 0;
+  float escaped = 0.0f;
+  Ray ray;
   for (std::uint32_t i = 0; i < count; ++i) {
-    glm::vec3 direction(0.0f);
-    bool valid = false;
-    for (std::uint32_t draw = 0; draw <= kMaxRedraws && !valid; ++draw) {
-      direction = frame.toWorld(
-          sampleCosineHemisphere(owenScrambledSobol02(i, draw == 0 ? seed : redrawSeed(seed, draw))));
-      valid = aboveOneRing(direction, ringNormals, ringSize);
-      result.rejected += valid ? 0 : 1;
-    }
-    if (!valid) continue;
+    if (!sampler.ray(i, ray, result.rejected)) continue;
     ++result.rays;
-    if (scene.occluded(origin, direction, 0.0f, tmax)) continue;
-    ++escaped;
-    escapedSum += direction;
-    const ShBasis9 basis = shBasis9(direction);
-    for (int k = 0; k < kShCoefficients; ++k) result.transfer[k] += basis[k];
+    const float visible = 1.0f - rayOcclusion(scene, ray, tmax, settings.falloff, nullptr);
+    if (visible <= 0.0f) continue;
+    escaped += visible;
+    escapedSum += visible * ray.direction;
+    const ShBasis9 basis = shBasis9(ray.direction);
+    for (int k = 0; k < kShCoefficients; ++k) result.transfer[k] += visible * basis[k];
   }
-  result.ambientOcclusion = float(escaped) / float(count);
+  result.ambientOcclusion = escaped / float(count);
   const float transferWeight = glm::pi<float>() / float(count);
   for (float& t : result.transfer) t *= transferWeight;
   const float sumLength = glm::length(escapedSum);
   result.bentNormal = sumLength > 0.0f ? escapedSum / sumLength : normal;
-  result.bentNormalLength = escaped > 0 ? sumLength / float(escaped) : 0.0f;
+  result.bentNormalLength = escaped > 0.0f ? sumLength / escaped : 0.0f;
   return result;
+}
+
+// One bounce of interreflected transfer at a vertex (VisibilitySettings::bounces): albedo / N
+// times the sum over its blocked rays of the previous bounce's transfer at the front-face hit
+// (weighted by how much the ray is blocked when there is a falloff).
+ShBasis9 vertexBounce(const RayScene& scene, const VertexSampler& sampler,
+                      const std::vector<std::vector<ShBasis9>>& previous, const std::vector<Mesh>& meshes,
+                      float albedo, const VisibilitySettings& settings, std::size_t& rays) {
+  const float tmax = rayLength(settings);
+  const auto count = static_cast<std::uint32_t>(settings.rayCount);
+  ShBasis9 gathered{};
+  Ray ray;
+  std::size_t rejected = 0;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (!sampler.ray(i, ray, rejected)) continue;
+    ++rays;
+    Hit hit;
+    const float blocked = rayOcclusion(scene, ray, tmax, settings.falloff, &hit);
+    if (blocked <= 0.0f || !(glm::dot(ray.direction, hit.geometricNormal) < 0.0f)) continue;
+    const Mesh& mesh = meshes[hit.geomId];
+    const std::uint32_t* corner = &mesh.indices[3 * std::size_t(hit.primId)];
+    const float w[3] = {1.0f - hit.barycentrics.x - hit.barycentrics.y, hit.barycentrics.x,
+                        hit.barycentrics.y};
+    for (int c = 0; c < 3; ++c) {
+      const ShBasis9& t = previous[hit.geomId][corner[c]];
+      for (int k = 0; k < kShCoefficients; ++k) gathered[k] += blocked * w[c] * t[k];
+    }
+  }
+  for (float& t : gathered) t *= albedo / float(count);
+  return gathered;
 }
 
 void checkInput(const std::vector<Mesh>& meshes, const VisibilitySettings& settings) {
@@ -135,11 +256,32 @@ void checkInput(const std::vector<Mesh>& meshes, const VisibilitySettings& setti
          "ray count " + std::to_string(settings.rayCount) + " is not in 1.." + std::to_string(kMaxRayCount));
   if (!(settings.maxDistance >= 0.0f) || !std::isfinite(settings.maxDistance))
     fail("vertex visibility", "maximum distance must be finite and >= 0 (0 = infinite)");
+  if (!(settings.falloff >= 0.0f) || !std::isfinite(settings.falloff))
+    fail("vertex visibility", "falloff exponent must be finite and >= 0");
+  if (settings.falloff > 0.0f && settings.maxDistance <= 0.0f)
+    fail("vertex visibility", "a falloff needs a maximum distance (--ao-distance > 0)");
+  if (settings.bounces < 0) fail("vertex visibility", "bounces must be >= 0");
+  if (settings.bounces > 0) {
+    if (settings.albedo.size() != meshes.size())
+      fail("vertex visibility", "bounces need one albedo per mesh: got " +
+                                    std::to_string(settings.albedo.size()) + " for " +
+                                    std::to_string(meshes.size()) + " meshes");
+    for (float a : settings.albedo)
+      if (!(a >= 0.0f && a <= 1.0f))
+        fail("vertex visibility", "albedo " + std::to_string(a) + " is not in [0, 1]");
+  }
   for (std::size_t m = 0; m < meshes.size(); ++m)
     if (meshes[m].normals.size() != meshes[m].positions.size())
       fail("vertex visibility", "mesh " + std::to_string(m) + " has " +
                                     std::to_string(meshes[m].normals.size()) + " normals for " +
                                     std::to_string(meshes[m].positions.size()) + " vertices");
+}
+
+double secondsSince(std::chrono::steady_clock::time_point& last) {
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - last).count();
+  last = now;
+  return seconds;
 }
 
 }  // namespace
@@ -148,18 +290,27 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
                                                  const VisibilitySettings& settings,
                                                  VisibilityStatistics* statistics) {
   checkInput(meshes, settings);
+  auto clock = std::chrono::steady_clock::now();
+  VisibilityStatistics counts;
   RayScene scene;
   for (const Mesh& mesh : meshes) scene.addTriangleMesh(mesh.positions, mesh.indices);
   scene.commit();
+  counts.buildSeconds = secondsSince(clock);
 
   std::size_t totalVertices = 0;
   for (const Mesh& mesh : meshes) totalVertices += mesh.vertexCount();
+  const std::size_t totalWork = totalVertices * std::size_t(1 + settings.bounces);
   std::vector<MeshVisibility> results(meshes.size());
-  std::atomic<std::size_t> done{0}, rays{0}, rejected{0};
+  std::vector<OneRings> rings(meshes.size());
+  std::atomic<std::size_t> done{0}, rays{0}, rejected{0}, bounceRays{0};
+  const auto report = [&](std::size_t vertices) {
+    const std::size_t finished = done += vertices;
+    if (settings.progress) settings.progress(finished, totalWork);
+  };
 
   tbb::parallel_for(std::size_t(0), meshes.size(), [&](std::size_t m) {
     const Mesh& mesh = meshes[m];
-    const OneRings rings = oneRings(mesh);
+    rings[m] = oneRings(mesh);
     MeshVisibility& out = results[m];
     out.ambientOcclusion.resize(mesh.vertexCount());
     out.bentNormals.resize(mesh.vertexCount());
@@ -169,10 +320,9 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         std::size_t rangeRays = 0, rangeRejected = 0;
                         for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                          const VertexResult r = vertexVisibility(scene, mesh.positions[v], mesh.normals[v],
-                                                                  rings.normals.data() + rings.start[v],
-                                                                  rings.start[v + 1] - rings.start[v],
-                                                                  vertexSeed(settings.seed, m, v), settings);
+                          const VertexSampler sampler(mesh, rings[m], v, vertexSeed(settings.seed, m, v),
+                                                      settings.areaSampling);
+                          const VertexResult r = vertexVisibility(scene, sampler, mesh.normals[v], settings);
                           out.ambientOcclusion[v] = r.ambientOcclusion;
                           out.bentNormals[v] = r.bentNormal;
                           out.bentNormalLengths[v] = r.bentNormalLength;
@@ -182,13 +332,63 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
                         }
                         rays += rangeRays;
                         rejected += rangeRejected;
-                        const std::size_t finished = done += range.size();
-                        if (settings.progress) settings.progress(finished, totalVertices);
+                        report(range.size());
                       });
   });
+  counts.raySeconds = secondsSince(clock);
 
-  if (statistics) *statistics = {totalVertices, rays.load(), rejected.load()};
+  // Interreflected transfer: `previous` holds bounce b - 1 (the shadowed transfer for b = 1).
+  std::vector<std::vector<ShBasis9>> previous;
+  if (settings.bounces > 0)
+    for (const MeshVisibility& r : results) previous.push_back(r.transfer);
+  for (int bounce = 1; bounce <= settings.bounces; ++bounce) {
+    std::vector<std::vector<ShBasis9>> next(meshes.size());
+    tbb::parallel_for(std::size_t(0), meshes.size(), [&](std::size_t m) {
+      const Mesh& mesh = meshes[m];
+      next[m].resize(mesh.vertexCount());
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertexCount(), kVertexGrain),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          std::size_t rangeRays = 0;
+                          for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                            const VertexSampler sampler(mesh, rings[m], v, vertexSeed(settings.seed, m, v),
+                                                        settings.areaSampling);
+                            next[m][v] = vertexBounce(scene, sampler, previous, meshes, settings.albedo[m],
+                                                      settings, rangeRays);
+                          }
+                          bounceRays += rangeRays;
+                          report(range.size());
+                        });
+    });
+    for (std::size_t m = 0; m < meshes.size(); ++m)
+      for (std::size_t v = 0; v < next[m].size(); ++v)
+        for (int k = 0; k < kShCoefficients; ++k) results[m].transfer[v][k] += next[m][v][k];
+    previous = std::move(next);
+  }
+  counts.bounceSeconds = secondsSince(clock);
+
+  counts.vertices = totalVertices;
+  counts.rays = rays.load();
+  counts.rejected = rejected.load();
+  counts.bounceRays = bounceRays.load();
+  if (statistics) *statistics = counts;
   return results;
+}
+
+std::vector<Ray> vertexVisibilityRays(const std::vector<Mesh>& meshes, const VisibilitySettings& settings) {
+  checkInput(meshes, settings);
+  std::vector<Ray> rays;
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const OneRings rings = oneRings(meshes[m]);
+    for (std::size_t v = 0; v < meshes[m].vertexCount(); ++v) {
+      const VertexSampler sampler(meshes[m], rings, v, vertexSeed(settings.seed, m, v),
+                                  settings.areaSampling);
+      std::size_t rejected = 0;
+      Ray ray;
+      for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(settings.rayCount); ++i)
+        if (sampler.ray(i, ray, rejected)) rays.push_back(ray);
+    }
+  }
+  return rays;
 }
 
 }  // namespace iblkit

@@ -15,8 +15,11 @@
 // points into the surface the vertex lies on, and from an origin just off the vertex it could
 // slip past that triangle's edge. Such a direction is re-drawn as the same point of an
 // independently scrambled copy of the point set, up to kMaxRedraws times; a direction still
-// rejected then counts as occluded. Re-drawing (rather than counting as occluded) keeps a convex vertex at AO = 1: its
-// real hemisphere is open, only the tessellated one-ring clips the horizon.
+// rejected then counts as occluded. Re-drawing (rather than counting as occluded) keeps a convex vertex at AO
+// = 1: its real hemisphere is open, only the tessellated one-ring clips the horizon.
+//
+// Options (docs/baker.md): a distance falloff of the occlusion, area sampling of the ray origins
+// over the vertex's one-ring, and interreflected transfer (bounces).
 
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +28,7 @@
 #include <vector>
 
 #include "engine/core/mesh.h"
+#include "engine/core/ray.h"
 #include "engine/core/spherical_harmonics.h"
 
 namespace iblkit {
@@ -36,14 +40,38 @@ struct VisibilitySettings {
   int rayCount = 256;        // rays per vertex, >= 1 (a power of two keeps the Sobol points a net)
   float maxDistance = 0.0f;  // an occluder farther than this (world units) is ignored; 0 = infinite
   std::uint32_t seed = 0;    // scrambling seed: the same seed gives bit-identical results
-  // Called with (vertices done, total vertices) from the worker threads while the bake runs,
-  // possibly concurrently: it must be thread-safe. May be empty.
+  // Distance falloff exponent p >= 0 (needs maxDistance > 0 when p > 0): a ray blocked at
+  // distance t occludes by (1 - t / maxDistance)^p, so near occluders count fully and those near
+  // maxDistance hardly at all. 0 = off: every occluder within maxDistance occludes fully.
+  float falloff = 0.0f;
+  // Area sampling: ray i starts at a point of the vertex's barycentric dual cell (the part of each
+  // one-ring triangle where the vertex's barycentric coordinate is the largest, a third of the
+  // triangle, chosen in proportion to area), about the interpolated normal there, and directions
+  // below that triangle's plane are re-drawn. The result is the mean visibility of the surface
+  // the vertex stands for instead of the visibility at the vertex itself: smoother for large
+  // triangles whose vertices sit in creases. A vertex without a one-ring triangle is sampled at
+  // the vertex.
+  bool areaSampling = false;
+  // Interreflected transfer (Sloan, Kautz and Snyder 2002, section 5, "interreflected diffuse
+  // transfer"): each bounce b adds, for every occluded ray of a vertex, the transfer of bounce
+  // b - 1 interpolated at the point the ray hits (front faces only), times albedo / pi, integrated
+  // with the same rays (albedo / N times the sum over the N rays). 0 = shadowed transfer only.
+  // The ambient occlusion and bent normals are not changed.
+  int bounces = 0;
+  // Diffuse albedo of each mesh, in [0, 1] (one grey value per mesh: the transfer vector is one
+  // scalar per SH coefficient). Required (one per mesh) when bounces > 0.
+  std::vector<float> albedo;
+  // Called with (vertices done, total) from the worker threads while the bake runs, possibly
+  // concurrently: it must be thread-safe. May be empty. Each bounce pass visits every vertex
+  // again, so total = vertices * (1 + bounces).
   std::function<void(std::size_t, std::size_t)> progress;
 };
 
 // The visibility of every vertex of one mesh, in the mesh's vertex order.
 struct MeshVisibility {
   // Ambient occlusion: the fraction of cosine-weighted rays that escape, in [0, 1]; 1 = open sky.
+  // With a falloff, each ray counts by its visibility 1 - (1 - t / maxDistance)^p instead of 0 or 1
+  // (and so it does in the bent normal and the transfer).
   std::vector<float> ambientOcclusion;
   // Bent normal: the normalised mean of the escaping directions (the vertex normal when none
   // escapes). Unit length, world space.
@@ -62,17 +90,26 @@ struct MeshVisibility {
 
 struct VisibilityStatistics {
   std::size_t vertices = 0;
-  std::size_t rays = 0;      // occlusion rays traced
-  std::size_t rejected = 0;  // directions below the one-ring that were re-drawn or dropped
+  std::size_t rays = 0;        // occlusion rays traced
+  std::size_t rejected = 0;    // directions below the one-ring that were re-drawn or dropped
+  std::size_t bounceRays = 0;  // closest-hit rays traced for the bounces
+  // Wall-clock seconds of the stages: building Embree's scene, the visibility rays, the bounces.
+  double buildSeconds = 0.0, raySeconds = 0.0, bounceSeconds = 0.0;
 };
 
 // Bakes every vertex of every mesh, all meshes occluding each other. Runs in parallel over the
 // vertices with TBB (the caller's task arena decides the thread count). Meshes must have one
 // unit normal per position (Scene loading guarantees it). Throws Error("vertex visibility: ...")
-// for a ray count below 1, a negative or non-finite maxDistance, or missing normals, and the
+// for a ray count below 1, a negative or non-finite maxDistance, a falloff without a maximum
+// distance, negative bounces, a missing or out-of-range albedo, or missing normals, and the
 // RayScene errors for bad geometry (no triangles, non-finite positions).
 std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes,
                                                  const VisibilitySettings& settings,
                                                  VisibilityStatistics* statistics = nullptr);
+
+// The visibility rays bakeVertexVisibility traces (after one-ring rejection: the directions
+// dropped after kMaxRedraws are left out), vertex by vertex in the bake's order, for benchmarks
+// that replay them through Embree directly (to settings.maxDistance, or infinity when it is 0).
+std::vector<Ray> vertexVisibilityRays(const std::vector<Mesh>& meshes, const VisibilitySettings& settings);
 
 }  // namespace iblkit

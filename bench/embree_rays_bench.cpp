@@ -25,6 +25,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/raw_embree.h"
 #include "engine/core/procedural_mesh.h"
 #include "raytrace/ray_offset.h"
 #include "raytrace/ray_scene.h"
@@ -108,34 +109,6 @@ const BenchScene& benchScene() {
     return s;
   }();
   return scene;
-}
-
-bool rawOccluded(RTCScene scene, const Ray& ray) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay query{};
-  query.org_x = ray.origin.x, query.org_y = ray.origin.y, query.org_z = ray.origin.z;
-  query.dir_x = ray.direction.x, query.dir_y = ray.direction.y, query.dir_z = ray.direction.z;
-  query.tnear = 0.0f;
-  query.tfar = kInfinity;
-  query.mask = ~0u;
-  rtcOccluded1(scene, &context, &query);
-  return query.tfar == -kInfinity;
-}
-
-bool rawIntersect(RTCScene scene, const Ray& ray) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit query{};
-  query.ray.org_x = ray.origin.x, query.ray.org_y = ray.origin.y, query.ray.org_z = ray.origin.z;
-  query.ray.dir_x = ray.direction.x, query.ray.dir_y = ray.direction.y, query.ray.dir_z = ray.direction.z;
-  query.ray.tnear = 0.0f;
-  query.ray.tfar = kInfinity;
-  query.ray.mask = ~0u;
-  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &context, &query);
-  return query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
 }
 
 enum class Load { kAmbientOcclusion, kCamera };

@@ -8,6 +8,7 @@
 #include "engine/core/frame.h"
 #include "engine/core/sampling.h"
 #include "raytrace/ray_offset.h"
+#include "reference/ambient_occlusion.h"
 
 namespace iblkit {
 
@@ -198,13 +199,13 @@ void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSam
   }
   const SurfacePoint point = scene_.surfacePoint(hit, -ray.direction);
   recordFirstHit(point, hit.t, result);
-  const glm::vec3 direction =
-      Frame::fromZ(point.shadingNormal).toWorld(sampleCosineHemisphere(sampler.next2D()));
   ++result.rays;
-  const glm::vec3 origin = offsetRayOrigin(point.position, sideFacing(point.geometricNormal, direction));
-  if (rays.occluded(origin, direction, 0.0f, settings_.aoDistance)) return;
+  const OcclusionSample sample =
+      sampleAmbientOcclusion(rays, point.position, point.geometricNormal, point.shadingNormal,
+                             sampler.next2D(), settings_.aoDistance);
+  if (!sample.escaped) return;
   result.radiance = glm::vec3(1.0f);
-  result.unoccludedDirection = direction;
+  result.unoccludedDirection = sample.direction;
 }
 
 }  // namespace iblkit

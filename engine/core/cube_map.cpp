@@ -129,6 +129,10 @@ glm::vec3 sampleCubeBilinear(const CubeMap& cube, const glm::vec3& direction) {
   return glm::mix(top, bottom, f.y);
 }
 
+glm::vec3 cubeTexelSeamless(const CubeMap& cube, int face, int x, int y) {
+  return seamlessTexel(cube, face, x, y);
+}
+
 CubeMap cubeFromRadiance(int size, int samplesPerAxis, const RadianceFunction& radiance) {
   if (size < 1 || samplesPerAxis < 1)
     throw std::invalid_argument("cubeFromRadiance: size and samplesPerAxis must be >= 1");

@@ -66,6 +66,11 @@ float cubeTexelSolidAngle(int size, int x, int y);
 // A non-finite direction gives NaN.
 glm::vec3 sampleCubeBilinear(const CubeMap& cube, const glm::vec3& direction);
 
+// The texel sampleCubeBilinear reads for tap (x, y) of `face`, x and y in [-1, size]: the face's
+// own texel inside, the adjacent face's across an edge, the mean of three beyond a corner. For
+// copies of the faces with a one-texel border (the baker's specular prefilter).
+glm::vec3 cubeTexelSeamless(const CubeMap& cube, int face, int x, int y);
+
 // Renders a cube map of `radiance`: each texel is the solid-angle-weighted mean of
 // samplesPerAxis^2 stratified samples (weight (1 + sc^2 + tc^2)^(-3/2), the solid angle per unit
 // face area). Alpha is 1. Throws std::invalid_argument unless size and samplesPerAxis are >= 1.

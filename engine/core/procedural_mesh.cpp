@@ -81,6 +81,25 @@ ProceduralMesh plane(glm::vec3 center, float size) {
   return mesh;
 }
 
+ProceduralMesh gridPlane(glm::vec3 center, float size, int cells) {
+  requireFinite("gridPlane", "center", center);
+  requirePositive("gridPlane", "size", size);
+  if (cells < 1) fail("gridPlane", "cells must be >= 1");
+  const float h = 0.5f * size, step = size / static_cast<float>(cells);
+  ProceduralMesh mesh;
+  for (int i = 0; i <= cells; ++i)
+    for (int j = 0; j <= cells; ++j)
+      mesh.positions.push_back(
+          center + glm::vec3(-h + step * static_cast<float>(j), 0.0f, -h + step * static_cast<float>(i)));
+  mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
+  const auto vertex = [cells](int i, int j) { return static_cast<uint32_t>(i * (cells + 1) + j); };
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j)  // counter-clockwise seen from +Y (x right, z towards the viewer)
+      mesh.indices.insert(mesh.indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1),
+                                               vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+  return mesh;
+}
+
 ProceduralMesh box(glm::vec3 center, glm::vec3 size) {
   requireFinite("box", "center", center);
   requirePositive("box", "size.x", size.x);
@@ -105,6 +124,16 @@ ProceduralMesh box(glm::vec3 center, glm::vec3 size) {
       mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     }
   }
+  return mesh;
+}
+
+Mesh toMesh(const ProceduralMesh& shape, const std::string& name, int material) {
+  Mesh mesh;
+  mesh.name = name;
+  mesh.positions = shape.positions;
+  mesh.normals = shape.normals;
+  mesh.indices = shape.indices;
+  mesh.material = material;
   return mesh;
 }
 

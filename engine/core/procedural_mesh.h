@@ -7,7 +7,10 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
+
+#include "engine/core/mesh.h"
 
 namespace iblkit {
 
@@ -27,8 +30,17 @@ ProceduralMesh uvSphere(glm::vec3 center, float radius, int rings, int segments)
 // vertices, 2 triangles.
 ProceduralMesh plane(glm::vec3 center, float size);
 
+// The same square cut into cells x cells squares of two triangles each (cells >= 1), for
+// per-vertex tests that need vertices inside the square: (cells + 1)^2 vertices, row by row from
+// -Z to +Z, each row from -X to +X.
+ProceduralMesh gridPlane(glm::vec3 center, float size, int cells);
+
 // Axis-aligned box with edge lengths `size`, centred on `center`. Each face has its own 4
 // vertices so the normals are the flat face normals: 24 vertices, 12 triangles.
 ProceduralMesh box(glm::vec3 center, glm::vec3 size);
+
+// The shape as a scene mesh (positions, normals, indices; no texture coordinates) called `name`
+// with material index `material`.
+Mesh toMesh(const ProceduralMesh& shape, const std::string& name, int material = 0);
 
 }  // namespace iblkit

@@ -13,21 +13,11 @@
 namespace iblkit {
 namespace {
 
-Mesh meshFrom(const ProceduralMesh& shape, const std::string& name, int material) {
-  Mesh mesh;
-  mesh.name = name;
-  mesh.positions = shape.positions;
-  mesh.normals = shape.normals;
-  mesh.indices = shape.indices;
-  mesh.material = material;
-  return mesh;
-}
-
 // Two meshes (a sphere with texture coordinates and two custom attributes, and a ground), two
 // materials (one emitting brighter than glTF's [0, 1] emissiveFactor) and a camera.
 Scene bakedScene() {
   Scene scene;
-  Mesh sphere = meshFrom(uvSphere(glm::vec3(0.5f, 1.0f, -0.25f), 0.75f, 6, 8), "sphere", 1);
+  Mesh sphere = toMesh(uvSphere(glm::vec3(0.5f, 1.0f, -0.25f), 0.75f, 6, 8), "sphere", 1);
   for (std::size_t v = 0; v < sphere.vertexCount(); ++v) {
     sphere.texcoords.emplace_back(float(v) / 64.0f, 1.0f - float(v) / 128.0f);
     sphere.attributes["_AO"].data.push_back(float(v) / float(sphere.vertexCount()));
@@ -35,7 +25,7 @@ Scene bakedScene() {
   }
   sphere.attributes["_AO"].componentCount = 1;
   sphere.attributes["_SHT0"].componentCount = 3;
-  Mesh ground = meshFrom(plane(glm::vec3(0.0f), 10.0f), "ground", 0);
+  Mesh ground = toMesh(plane(glm::vec3(0.0f), 10.0f), "ground", 0);
   ground.isGround = true;
   scene.meshes = {sphere, ground};
   Material grey;

@@ -167,8 +167,18 @@ TEST(IblkitBake, WritesTheEnvironmentStagesWhenThereIsAnEnvironment) {
                                &status);
   ASSERT_EQ(status, 0) << log;
   const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
-  EXPECT_EQ(report["outputs"], nlohmann::json({"scene.glb", "bake.json", "env/sh9.json", "env/specular.exr",
-                                               "env/brdf_lut.exr"}));
+  EXPECT_EQ(report["outputs"], nlohmann::json({"scene.glb", "bake.json", "env/sh9.json", "env/irradiance.exr",
+                                               "env/specular.exr", "env/brdf_lut.exr"}));
+  // The SH9 irradiance of this smooth sky is close to the brute-force cube, not exact (the bright
+  // spot has energy above band 2).
+  const float shError = report["environment"]["sh9_irradiance_error"]["mean_relative"];
+  EXPECT_GT(shError, 0.0f);
+  EXPECT_LT(shError, 0.2f);
+  ExrInfo irradianceInfo;
+  EXPECT_EQ(readExr(out / "env" / "irradiance.exr", &irradianceInfo).width(), 16);
+  EXPECT_EQ(irradianceInfo.envmap, EnvmapLayout::Cube);
+  for (const char* stage : {"sh9_s", "irradiance_s", "specular_s", "brdf_lut_s", "visibility_rays_s"})
+    EXPECT_GE(report["timings"][stage], 0.0) << stage;
   EXPECT_EQ(report["environment"]["specular_face_size"], 8);  // a quarter of the map's width
   EXPECT_EQ(report["environment"]["specular_roughness_per_level"].size(), 4u);
   const nlohmann::json sh = nlohmann::json::parse(std::ifstream(out / "env" / "sh9.json"));
@@ -189,6 +199,35 @@ TEST(IblkitBake, BadShWindowIsRefusedWithoutOutput) {
       bake(scene.string() + " --env " + env.string() + " -o " + out.string() + " --sh-window wide", &status);
   EXPECT_EQ(status, 1);
   EXPECT_EQ(log, "iblkit-bake: --sh-window: expected auto, none or a positive number of bands, got 'wide'\n");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(leftovers(root), 0);
+}
+
+TEST(IblkitBake, VisibilityOptionsAreRecorded) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out";
+  int status = 0;
+  const std::string log = bake(scene.string() + " -o " + out.string() +
+                                   " --ao-rays 16 --bounces 2 --ao-area --ao-distance 3 --ao-falloff 1",
+                               &status);
+  ASSERT_EQ(status, 0) << log;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+  EXPECT_EQ(report["parameters"]["bounces"], 2);
+  EXPECT_EQ(report["parameters"]["ao_area"], true);
+  EXPECT_EQ(report["parameters"]["ao_falloff"], 1.0);
+  EXPECT_EQ(report["parameters"]["ao_distance"], 3.0);
+  EXPECT_EQ(report["counts"]["bounce_rays"], 2 * report["counts"]["rays"].get<std::size_t>());
+  for (const char* stage : {"visibility_build_s", "visibility_rays_s", "bounces_s"})
+    EXPECT_GT(report["timings"][stage], 0.0) << stage;
+}
+
+TEST(IblkitBake, FalloffWithoutADistanceIsRefusedWithoutOutput) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out";
+  int status = 0;
+  const std::string log = bake(scene.string() + " -o " + out.string() + " --ao-falloff 2", &status);
+  EXPECT_EQ(status, 1);
+  EXPECT_EQ(log, "iblkit-bake: vertex visibility: a falloff needs a maximum distance (--ao-distance > 0)\n");
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(leftovers(root), 0);
 }

@@ -12,32 +12,9 @@
 namespace iblkit {
 namespace {
 
-Mesh meshFrom(const ProceduralMesh& shape, const std::string& name) {
-  Mesh mesh;
-  mesh.name = name;
-  mesh.positions = shape.positions;
-  mesh.normals = shape.normals;
-  mesh.indices = shape.indices;
-  return mesh;
-}
-
-// A square of side 2 * halfSize in the plane y = 0 facing +Y, cut into cells x cells squares, so
-// it has vertices at every multiple of 2 * halfSize / cells.
+// A square of side 2 * halfSize in the plane y = 0 facing +Y, cut into cells x cells squares.
 Mesh groundGrid(float halfSize, int cells) {
-  Mesh mesh;
-  mesh.name = "ground";
-  const float step = 2.0f * halfSize / float(cells);
-  for (int i = 0; i <= cells; ++i)
-    for (int j = 0; j <= cells; ++j) {
-      mesh.positions.emplace_back(-halfSize + step * float(j), 0.0f, -halfSize + step * float(i));
-      mesh.normals.emplace_back(0.0f, 1.0f, 0.0f);
-    }
-  const auto vertex = [cells](int i, int j) { return std::uint32_t(i * (cells + 1) + j); };
-  for (int i = 0; i < cells; ++i)
-    for (int j = 0; j < cells; ++j)  // counter-clockwise seen from +Y (x right, z towards the viewer)
-      mesh.indices.insert(mesh.indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1),
-                                               vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
-  return mesh;
+  return toMesh(gridPlane(glm::vec3(0.0f), 2.0f * halfSize, cells), "ground");
 }
 
 std::size_t closestVertex(const Mesh& mesh, const glm::vec3& point) {
@@ -56,7 +33,7 @@ std::vector<Mesh> floorAtWall() {
   floor.positions = {{d, 0, 0}, {d, 0, 5}, {5, 0, 5}, {5, 0, -5}, {d, 0, -5}};
   floor.normals.assign(5, glm::vec3(0, 1, 0));
   floor.indices = {0, 1, 2, 0, 2, 3, 0, 3, 4};
-  return {floor, meshFrom(box(glm::vec3(-0.5f, 10.0f, 0.0f), glm::vec3(1.0f, 20.0f, 40.0f)), "wall")};
+  return {floor, toMesh(box(glm::vec3(-0.5f, 10.0f, 0.0f), glm::vec3(1.0f, 20.0f, 40.0f)), "wall")};
 }
 
 VisibilitySettings withRays(int rays, std::uint32_t seed = 0) {
@@ -67,7 +44,7 @@ VisibilitySettings withRays(int rays, std::uint32_t seed = 0) {
 }
 
 TEST(VertexVisibility, LoneConvexSphereIsOpenWithBentNormalsAlongTheNormals) {
-  const std::vector<Mesh> meshes = {meshFrom(uvSphere(glm::vec3(0.3f, 1.0f, -2.0f), 1.5f, 24, 48), "sphere")};
+  const std::vector<Mesh> meshes = {toMesh(uvSphere(glm::vec3(0.3f, 1.0f, -2.0f), 1.5f, 24, 48), "sphere")};
   VisibilityStatistics statistics;
   const auto result = bakeVertexVisibility(meshes, withRays(1024), &statistics);
   ASSERT_EQ(result.size(), 1u);
@@ -107,7 +84,7 @@ TEST(VertexVisibility, MaximumDistanceIgnoresFartherOccluders) {
 
 TEST(VertexVisibility, UnoccludedTransferIsTheClampedCosineConvolution) {
   // A lone square tilted so its normal is a generic direction: no coefficient vanishes by symmetry.
-  Mesh quad = meshFrom(plane(glm::vec3(0.0f), 2.0f), "quad");
+  Mesh quad = toMesh(plane(glm::vec3(0.0f), 2.0f), "quad");
   transformMesh(quad, glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1.0f, 0.2f, -0.6f))));
   const glm::vec3 n = quad.normals[2];
   const auto result = bakeVertexVisibility({quad}, withRays(4096));
@@ -135,7 +112,7 @@ TEST(VertexVisibility, ShadowedTransferOfTheFloorAtTheWallLosesTheWallSide) {
 }
 
 TEST(VertexVisibility, SphereOnTheGroundDarkensTheContactRegion) {
-  const std::vector<Mesh> meshes = {meshFrom(uvSphere(glm::vec3(0.0f, 1.05f, 0.0f), 1.0f, 16, 32), "sphere"),
+  const std::vector<Mesh> meshes = {toMesh(uvSphere(glm::vec3(0.0f, 1.05f, 0.0f), 1.0f, 16, 32), "sphere"),
                                     groundGrid(10.0f, 40)};
   const auto result = bakeVertexVisibility(meshes, withRays(256));
   const std::size_t top = 0, bottom = meshes[0].vertexCount() - 1;  // uvSphere's poles
@@ -153,7 +130,7 @@ TEST(VertexVisibility, SphereOnTheGroundDarkensTheContactRegion) {
 }
 
 TEST(VertexVisibility, SameSeedIsBitIdenticalAndAnotherSeedDiffers) {
-  const std::vector<Mesh> meshes = {meshFrom(uvSphere(glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 8, 16), "sphere"),
+  const std::vector<Mesh> meshes = {toMesh(uvSphere(glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 8, 16), "sphere"),
                                     groundGrid(3.0f, 12)};
   const auto first = bakeVertexVisibility(meshes, withRays(64, 7));
   const auto second = bakeVertexVisibility(meshes, withRays(64, 7));
@@ -174,7 +151,7 @@ TEST(VertexVisibility, SameSeedIsBitIdenticalAndAnotherSeedDiffers) {
 
 TEST(VertexVisibility, FullyEnclosedVertexKeepsItsNormalAndZeroLength) {
   // A floor vertex inside a closed box: every ray hits the box.
-  std::vector<Mesh> meshes = {groundGrid(0.5f, 2), meshFrom(box(glm::vec3(0.0f), glm::vec3(4.0f)), "box")};
+  std::vector<Mesh> meshes = {groundGrid(0.5f, 2), toMesh(box(glm::vec3(0.0f), glm::vec3(4.0f)), "box")};
   const auto result = bakeVertexVisibility(meshes, withRays(64));
   const std::size_t centre = closestVertex(meshes[0], glm::vec3(0.0f));
   EXPECT_EQ(result[0].ambientOcclusion[centre], 0.0f);

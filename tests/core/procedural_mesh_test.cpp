@@ -99,6 +99,24 @@ TEST(ProceduralMesh, PlaneFacesUp) {
   EXPECT_DOUBLE_EQ(area(mesh), 16.0);
 }
 
+TEST(ProceduralMesh, GridPlaneFacesUpWithInnerVertices) {
+  const ProceduralMesh mesh = gridPlane(glm::vec3(1.0f, 2.0f, 3.0f), 4.0f, 4);
+  ASSERT_EQ(mesh.positions.size(), 25u);
+  ASSERT_EQ(mesh.indices.size(), 4u * 4u * 6u);
+  EXPECT_EQ(mesh.positions[0], glm::vec3(-1.0f, 2.0f, 1.0f));  // row 0 at -Z, from -X
+  EXPECT_EQ(mesh.positions[12], glm::vec3(1.0f, 2.0f, 3.0f));  // the centre
+  EXPECT_EQ(mesh.positions[24], glm::vec3(3.0f, 2.0f, 5.0f));
+  for (const glm::vec3& n : mesh.normals) EXPECT_EQ(n, glm::vec3(0.0f, 1.0f, 0.0f));
+  expectWindingAgreesWithNormals(mesh);
+  EXPECT_DOUBLE_EQ(area(mesh), 16.0);
+  const Mesh scene = toMesh(mesh, "grid", 3);
+  EXPECT_EQ(scene.name, "grid");
+  EXPECT_EQ(scene.material, 3);
+  EXPECT_EQ(scene.positions, mesh.positions);
+  EXPECT_EQ(scene.normals, mesh.normals);
+  EXPECT_EQ(scene.indices, mesh.indices);
+}
+
 TEST(ProceduralMesh, BoxVolumeAreaAndFaceNormals) {
   const glm::vec3 center(-1.0f, 0.5f, 2.0f), size(1.0f, 2.0f, 4.0f);
   const ProceduralMesh mesh = box(center, size);

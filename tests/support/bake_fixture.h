@@ -26,16 +26,6 @@ inline EnvironmentMap testSky(int width = 64) {
   return EnvironmentMap::fromImage(latLongFromRadiance(width, width / 2, 2, testSkyRadiance), "test sky");
 }
 
-inline Mesh meshFromProcedural(const ProceduralMesh& shape, const std::string& name, int material) {
-  Mesh mesh;
-  mesh.name = name;
-  mesh.positions = shape.positions;
-  mesh.normals = shape.normals;
-  mesh.indices = shape.indices;
-  mesh.material = material;
-  return mesh;
-}
-
 struct TestBakeOptions {
   Material sphereMaterial{};
   bool ground = false;
@@ -49,10 +39,10 @@ inline BakedScene makeTestBake(const TestBakeOptions& options) {
   BakedScene bake;
   Scene& scene = bake.scene;
   scene.meshes.push_back(
-      meshFromProcedural(uvSphere(glm::vec3(0.0f), 1.0f, options.rings, options.segments), "sphere", 0));
+      toMesh(uvSphere(glm::vec3(0.0f), 1.0f, options.rings, options.segments), "sphere", 0));
   scene.materials.push_back(options.sphereMaterial);
   if (options.ground) {
-    Mesh ground = meshFromProcedural(plane(glm::vec3(0.0f, -1.0f, 0.0f), 8.0f), "ground", 1);
+    Mesh ground = toMesh(plane(glm::vec3(0.0f, -1.0f, 0.0f), 8.0f), "ground", 1);
     ground.isGround = true;
     scene.meshes.push_back(ground);
     Material grey;
