@@ -80,6 +80,18 @@ BrdfSample Integrator::sampleReflection(const Material& material, const glm::vec
   return sample;
 }
 
+Hit Integrator::intersect(const Ray& ray) const {
+  if (recorder_) [[unlikely]]
+    recorder_->record({ray.origin, 0.0f, ray.direction, kInfinity, false});
+  return scene_.rays().intersect(ray, 0.0f, kInfinity);
+}
+
+bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax) const {
+  if (recorder_) [[unlikely]]
+    recorder_->record({origin, 0.0f, direction, tmax, true});
+  return scene_.rays().occluded(origin, direction, 0.0f, tmax);
+}
+
 CameraSample Integrator::trace(const Ray& cameraRay, PixelSampler& sampler) const {
   CameraSample result;
   if (settings_.kind == IntegratorKind::AmbientOcclusion)
@@ -119,24 +131,23 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
   const bool sampleLights = strategy != EnvSampling::Brdf;
   const bool combine = strategy == EnvSampling::Mis;
   const int maxDepth = settings_.kind == IntegratorKind::Direct ? 1 : settings_.maxDepth;
-  const RayScene& rays = scene_.rays();
 
   glm::vec3 throughput(1.0f);
   float previousPdf = 0.0f;   // BRDF pdf of the ray being traced
   bool previousDelta = true;  // the camera ray, like a mirror ray, sees the environment directly
   for (int depth = 0;; ++depth) {
-    const Hit hit = rays.intersect(ray, 0.0f, kInfinity);
+    const Hit hit = intersect(ray);
     ++result.rays;
     if (!hit.hit) {
       // The environment seen by a BRDF-sampled ray counts when BRDF sampling is a strategy of
       // its own (brdf), MIS-weighted against the light strategy (mis), or fully after a delta
       // bounce, which no light strategy can reach.
-      float weight = 0.0f;
-      if (previousDelta || strategy == EnvSampling::Brdf)
-        weight = 1.0f;
-      else if (combine)
-        weight = powerHeuristic(previousPdf, environmentSampler_.pdf(ray.direction));
-      if (weight > 0.0f) result.radiance += throughput * weight * environment_.radiance(ray.direction);
+      if (previousDelta || strategy == EnvSampling::Brdf) {
+        result.radiance += throughput * environment_.radiance(ray.direction);
+      } else if (combine) {
+        const EnvironmentSampler::Lookup seen = environmentSampler_.lookup(ray.direction);
+        result.radiance += throughput * powerHeuristic(previousPdf, seen.pdf) * seen.radiance;
+      }
       return;
     }
 
@@ -164,7 +175,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
         const glm::vec3 f = evalReflection(material, n, wo, light.direction);
         if (maxComponent(f) > 0.0f) {
           ++result.rays;
-          if (!rays.occluded(offsetRayOrigin(point.position, ng), light.direction, 0.0f, kInfinity)) {
+          if (!occluded(offsetRayOrigin(point.position, ng), light.direction, kInfinity)) {
             const float weight =
                 combine ? powerHeuristic(light.pdf, pdfReflection(material, n, wo, light.direction)) : 1.0f;
             result.radiance += throughput * f * light.radiance * (cosTheta * weight / light.pdf);
@@ -189,8 +200,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
 }
 
 void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSample& result) const {
-  const RayScene& rays = scene_.rays();
-  const Hit hit = rays.intersect(ray, 0.0f, kInfinity);
+  const Hit hit = intersect(ray);
   ++result.rays;
   if (!hit.hit) {
     result.radiance = glm::vec3(1.0f);
@@ -202,7 +212,7 @@ void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSam
       Frame::fromZ(point.shadingNormal).toWorld(sampleCosineHemisphere(sampler.next2D()));
   ++result.rays;
   const glm::vec3 origin = offsetRayOrigin(point.position, sideFacing(point.geometricNormal, direction));
-  if (rays.occluded(origin, direction, 0.0f, settings_.aoDistance)) return;
+  if (occluded(origin, direction, settings_.aoDistance)) return;
   result.radiance = glm::vec3(1.0f);
   result.unoccludedDirection = direction;
 }

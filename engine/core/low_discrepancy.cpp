@@ -44,12 +44,29 @@ std::uint32_t dimensionSeed(std::uint32_t seed, std::uint32_t dimension) {
 
 // Sobol's second dimension as a 32-bit binary fraction: the xor of the direction numbers selected
 // by the bits of index, with v_1 = 0.1b and v_(k+1) = v_k xor (v_k >> 1) (Pascal's triangle mod 2).
-std::uint32_t sobolSecondDimensionBits(std::uint32_t index) {
-  std::uint32_t result = 0;
-  for (std::uint32_t v = 0x80000000u; index != 0; index >>= 1, v ^= v >> 1) {
-    if (index & 1u) result ^= v;
+// The xor is linear, so it is taken a byte of the index at a time from four 256-entry tables (the
+// reference tracer draws scrambled, hence full 32-bit, indices for every camera sample: a loop
+// over 32 bits cost more than the rest of the point).
+struct SobolSecondDimensionTables {
+  std::uint32_t byByte[4][256];
+  SobolSecondDimensionTables() {
+    std::uint32_t directions[32];
+    std::uint32_t v = 0x80000000u;
+    for (int bit = 0; bit < 32; ++bit, v ^= v >> 1) directions[bit] = v;
+    for (int byte = 0; byte < 4; ++byte)
+      for (std::uint32_t value = 0; value < 256; ++value) {
+        std::uint32_t result = 0;
+        for (int bit = 0; bit < 8; ++bit)
+          if (value & (1u << bit)) result ^= directions[8 * byte + bit];
+        byByte[byte][value] = result;
+      }
   }
-  return result;
+};
+
+std::uint32_t sobolSecondDimensionBits(std::uint32_t index) {
+  static const SobolSecondDimensionTables tables;
+  return tables.byByte[0][index & 0xffu] ^ tables.byByte[1][(index >> 8) & 0xffu] ^
+         tables.byByte[2][(index >> 16) & 0xffu] ^ tables.byByte[3][index >> 24];
 }
 
 }  // namespace

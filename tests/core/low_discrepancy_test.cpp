@@ -5,6 +5,7 @@
 #include <functional>
 #include <vector>
 
+#include "engine/core/rng.h"
 #include "support/chi2.h"
 
 namespace iblkit {
@@ -58,6 +59,20 @@ TEST(Sobol02, FirstPoints) {
                                 {0.75f, 0.25f},   {0.125f, 0.625f}, {0.625f, 0.125f},
                                 {0.375f, 0.375f}, {0.875f, 0.875f}, {0.0625f, 0.9375f}};
   for (std::uint32_t i = 0; i < std::size(expected); ++i) EXPECT_EQ(sobol02(i), expected[i]) << "index " << i;
+}
+
+// The second dimension of full 32-bit indices (the reference tracer's shuffled indices) is the
+// xor of the direction numbers v_1 = 0.1b, v_(k+1) = v_k xor (v_k >> 1) its bits select, taken
+// here bit by bit.
+TEST(Sobol02, SecondDimensionOfLargeIndicesFollowsTheRecurrence) {
+  PCG32 rng(3, 5);
+  for (int i = 0; i < 10000; ++i) {
+    const std::uint32_t index = i < 32 ? (1u << i) | 1u : rng.nextUInt32();
+    std::uint32_t bits = 0, v = 0x80000000u;
+    for (std::uint32_t rest = index; rest != 0; rest >>= 1, v ^= v >> 1)
+      if (rest & 1u) bits ^= v;
+    ASSERT_EQ(sobol02(index).y, unitFloatFromBits(bits)) << "index " << index;
+  }
 }
 
 TEST(Sobol02, EveryAlignedBlockIsANet) {
