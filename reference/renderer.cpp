@@ -101,8 +101,9 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
                   for (int x = tx * kTileSize; x < std::min(w, (tx + 1) * kTileSize); ++x) {
                     const auto pixel = static_cast<std::uint32_t>(y * w + x);
                     PixelSums& s = sums[pixel];
+                    const PixelSeeds seeds(settings.seed, pixel);
                     for (int i = first; i < last; ++i) {
-                      PixelSampler sampler(settings.seed, pixel, static_cast<std::uint32_t>(i));
+                      PixelSampler sampler(seeds, static_cast<std::uint32_t>(i));
                       const glm::vec2 raster = glm::vec2(x, y) + filter.sample(sampler.next2D());
                       const CameraSample c = integrator.trace(camera.primaryRay(raster, w, h), sampler);
                       const glm::dvec3 radiance(c.radiance);

@@ -84,6 +84,24 @@ TEST(Sobol02, EveryAlignedBlockIsANet) {
   }
 }
 
+// The fast form (reversals cancelled, reversed table) is the defining one: the first coordinate is
+// the scrambled radical inverse, the second owenScramble of the Sobol bits with the second
+// dimension seed; and the seed-hashing overload gives the same points.
+TEST(Sobol02, ScrambledPointsFollowTheirDefinition) {
+  PCG32 rng(11, 2);
+  for (int i = 0; i < 10000; ++i) {
+    const std::uint32_t index = rng.nextUInt32() >> (i % 32), seed = rng.nextUInt32();
+    const Sobol02Scramble scramble = sobol02Scramble(seed);
+    const glm::vec2 p = owenScrambledSobol02(index, scramble);
+    ASSERT_EQ(p, owenScrambledSobol02(index, seed));
+    ASSERT_EQ(p.x, owenScrambledRadicalInverseBase2(index, seed)) << index;
+    std::uint32_t bits = 0, v = 0x80000000u;
+    for (std::uint32_t rest = index; rest != 0; rest >>= 1, v ^= v >> 1)
+      if (rest & 1u) bits ^= v;
+    ASSERT_EQ(p.y, unitFloatFromBits(owenScramble(bits, scramble.dimensionSeeds[1]))) << index;
+  }
+}
+
 TEST(Sobol02, OwenScramblingKeepsTheNetsAndIsSeeded) {
   for (const std::uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
     for (int m = 1; m <= 10; ++m) {
