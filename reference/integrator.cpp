@@ -61,20 +61,20 @@ Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environme
       environmentSampler_(environmentSampler),
       settings_(settings) {}
 
-glm::vec3 Integrator::evalReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
-                                     const glm::vec3& wi) const {
-  if (!settings_.phong) return evalBrdf(material, n, wo, wi);
+glm::vec3 Integrator::evalReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+                                     const glm::vec3& wo, const glm::vec3& wi) const {
+  if (brdf) return brdf->eval(wi);
   return material.baseColor * evalPhongLobe(*settings_.phong, n, wo, wi);
 }
 
-float Integrator::pdfReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+float Integrator::pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, const glm::vec3& wo,
                                 const glm::vec3& wi) const {
-  return settings_.phong ? pdfPhongLobe(*settings_.phong, n, wo, wi) : pdfBrdf(material, n, wo, wi);
+  return brdf ? brdf->pdf(wi) : pdfPhongLobe(*settings_.phong, n, wo, wi);
 }
 
-BrdfSample Integrator::sampleReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
-                                        glm::vec2 u, float uLobe) const {
-  if (!settings_.phong) return sampleBrdf(material, n, wo, u, uLobe);
+BrdfSample Integrator::sampleReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+                                        const glm::vec3& wo, glm::vec2 u, float uLobe) const {
+  if (brdf) return brdf->sample(u, uLobe);
   BrdfSample sample = samplePhongLobe(*settings_.phong, n, wo, u);
   sample.weight *= material.baseColor;
   return sample;
@@ -165,6 +165,10 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
     const float uLobe = sampler.next1D();
     const float uRoulette = sampler.next1D();
     const glm::vec3 n = point.shadingNormal, ng = point.geometricNormal;
+    // The glTF BRDF at this vertex, prepared once for its eval, pdf and sample calls (none with --phong).
+    std::optional<BrdfAtPoint> gltfBrdf;
+    if (!settings_.phong) gltfBrdf.emplace(material, n, wo);
+    const BrdfAtPoint* brdf = gltfBrdf ? &*gltfBrdf : nullptr;
 
     if (sampleLights) {
       const LightSample light = sampleLight(n, uLight);
@@ -172,19 +176,19 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
       // Directions below the triangle's plane are blocked by the surface itself.
       if (light.pdf > 0.0f && cosTheta > 0.0f && glm::dot(light.direction, ng) > 0.0f &&
           maxComponent(light.radiance) > 0.0f) {
-        const glm::vec3 f = evalReflection(material, n, wo, light.direction);
+        const glm::vec3 f = evalReflection(brdf, material, n, wo, light.direction);
         if (maxComponent(f) > 0.0f) {
           ++result.rays;
           if (!occluded(offsetRayOrigin(point.position, ng), light.direction, kInfinity)) {
             const float weight =
-                combine ? powerHeuristic(light.pdf, pdfReflection(material, n, wo, light.direction)) : 1.0f;
+                combine ? powerHeuristic(light.pdf, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
             result.radiance += throughput * f * light.radiance * (cosTheta * weight / light.pdf);
           }
         }
       }
     }
 
-    const BrdfSample scattered = sampleReflection(material, n, wo, uBrdf, uLobe);
+    const BrdfSample scattered = sampleReflection(brdf, material, n, wo, uBrdf, uLobe);
     if (!scattered.valid()) return;
     throughput *= scattered.weight;
     previousPdf = scattered.pdf;

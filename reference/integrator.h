@@ -94,13 +94,13 @@ class Integrator {
   };
   // The environment strategy's direction at a point with shading normal n (not for brdf).
   LightSample sampleLight(const glm::vec3& n, glm::vec2 u) const;
-  // The surface reflection model: the glTF BRDF, or the Phong lobe when settings_.phong is set.
-  glm::vec3 evalReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
-                           const glm::vec3& wi) const;
-  float pdfReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
-                      const glm::vec3& wi) const;
-  BrdfSample sampleReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo, glm::vec2 u,
-                              float uLobe) const;
+  // The surface reflection model: the glTF BRDF prepared at the vertex (`brdf`), or, when it is
+  // null (settings_.phong set), the Phong lobe.
+  glm::vec3 evalReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+                           const glm::vec3& wo, const glm::vec3& wi) const;
+  float pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi) const;
+  BrdfSample sampleReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+                              const glm::vec3& wo, glm::vec2 u, float uLobe) const;
   // RayScene::intersect / occluded, logged when a recorder is set.
   Hit intersect(const Ray& ray) const;
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax) const;
