@@ -59,7 +59,7 @@ constexpr int kStrategyCount = static_cast<int>(std::size(kStrategies));
 struct Options {
   std::filesystem::path scene, assets, cache = "build/sampling_study", outDir = "docs/benchmarks", update;
   std::vector<std::string> maps{"sky:sunny", "studio:studio", "venice:soft"};
-  int width = 160, height = 90, maxSpp = 64, referenceSpp = 1024, threads = 2;
+  int width = 160, height = 90, maxSpp = 64, referenceSpp = 4096, threads = 2;
 };
 
 struct MapResult {

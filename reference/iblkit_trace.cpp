@@ -78,6 +78,7 @@ int run(const Options& options, const CLI::App& app) {
   integratorSettings.envSampling = parseEnvSampling(options.envSampling);
   integratorSettings.maxDepth = options.maxDepth;
   integratorSettings.aoDistance = options.aoDistance;
+  const PixelFilterKind filter = parsePixelFilter(options.filter);
   if (options.phongExponent) {
     if (!std::isfinite(*options.phongExponent) || *options.phongExponent < 0.0f)
       fail("--phong", "exponent must be finite and >= 0");
@@ -97,7 +98,7 @@ int run(const Options& options, const CLI::App& app) {
   settings.timeSeconds = options.timeSeconds;
   settings.seed = options.seed;
   settings.threads = options.threads;
-  settings.filter = parsePixelFilter(options.filter);
+  settings.filter = filter;
 
   const std::filesystem::path environmentFile =
       options.environment.empty() ? scene.environment.file : options.environment;
