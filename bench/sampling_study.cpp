@@ -181,7 +181,8 @@ std::string markdownTable(const Options& options, const std::vector<MapResult>& 
   std::ostringstream md;
   md << "Scene `bunny.json` (path integrator, max depth 16), " << options.width << " x " << options.height
      << ", " << options.threads << " threads. relMSE (score/image_metrics.h, epsilon 0.01) against "
-     << options.referenceSpp << " spp of `mis` with another seed; \"floor\" is the reference's own expected "
+     << options.referenceSpp
+     << " spp of `mis` with another seed; \"floor\" is the reference's own expected "
         "relMSE (from its variance), included in every score.\n\n";
   md << "Ratio cosine / mis (relMSE at equal spp), per map: ";
   for (std::size_t m = 0; m < results.size(); ++m) {
@@ -197,7 +198,8 @@ std::string markdownTable(const Options& options, const std::vector<MapResult>& 
   }
   md << ".\n";
   for (const MapResult& r : results) {
-    md << "\n**" << r.name << "** (" << r.label << "), reference floor " << number(r.referenceFloor) << "\n\n";
+    md << "\n**" << r.name << "** (" << r.label << "), reference floor " << number(r.referenceFloor)
+       << "\n\n";
     md << "| strategy |";
     for (const int spp : levels) md << " " << spp << " spp |";
     md << " us / sample | cosine / strategy |\n|---|";
@@ -225,7 +227,8 @@ std::string svgPlot(const Options& options, const std::vector<MapResult>& result
   const double width = kPanelWidth * static_cast<double>(results.size()) + 130;
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << kPanelHeight
-      << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+      << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" "
+         "fill=\"white\"/>\n";
   const double xMax = std::log2(static_cast<double>(levels.back()));
   for (std::size_t m = 0; m < results.size(); ++m) {
     const MapResult& r = results[m];
@@ -241,15 +244,15 @@ std::string svgPlot(const Options& options, const std::vector<MapResult>& result
     const auto py = [&](double v) {
       return kTop + (decadeHi - std::log10(v)) / std::max(1, decadeHi - decadeLo) * plotHeight;
     };
-    svg << "<text x=\"" << x0 + plotWidth / 2 << "\" y=\"18\" text-anchor=\"middle\" font-size=\"13\">" << r.name
-        << " (" << r.label << ")</text>\n";
-    svg << "<rect x=\"" << x0 << "\" y=\"" << kTop << "\" width=\"" << plotWidth << "\" height=\"" << plotHeight
-        << "\" fill=\"none\" stroke=\"black\"/>\n";
+    svg << "<text x=\"" << x0 + plotWidth / 2 << "\" y=\"18\" text-anchor=\"middle\" font-size=\"13\">"
+        << r.name << " (" << r.label << ")</text>\n";
+    svg << "<rect x=\"" << x0 << "\" y=\"" << kTop << "\" width=\"" << plotWidth << "\" height=\""
+        << plotHeight << "\" fill=\"none\" stroke=\"black\"/>\n";
     for (int d = decadeLo; d <= decadeHi; ++d) {
       const double y = py(std::pow(10.0, d));
       svg << "<line x1=\"" << x0 << "\" x2=\"" << x0 + plotWidth << "\" y1=\"" << y << "\" y2=\"" << y
-          << "\" stroke=\"#ddd\"/><text x=\"" << x0 - 4 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">1e" << d
-          << "</text>\n";
+          << "\" stroke=\"#ddd\"/><text x=\"" << x0 - 4 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">1e"
+          << d << "</text>\n";
     }
     for (std::size_t i = 0; i < levels.size(); ++i) {
       const double x = px(static_cast<int>(i));
@@ -263,7 +266,8 @@ std::string svgPlot(const Options& options, const std::vector<MapResult>& result
       svg << "<text transform=\"translate(14 " << kTop + plotHeight / 2
           << ") rotate(-90)\" text-anchor=\"middle\">relMSE</text>\n";
     for (int s = 0; s < kStrategyCount; ++s) {
-      svg << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << kStrategies[s].colour << "\" points=\"";
+      svg << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << kStrategies[s].colour
+          << "\" points=\"";
       for (std::size_t i = 0; i < levels.size(); ++i)
         if (r.relMse[s][i] > 0.0) svg << px(static_cast<int>(i)) << "," << py(r.relMse[s][i]) << " ";
       svg << "\"/>\n";
@@ -304,7 +308,8 @@ int run(const Options& options) {
   if (options.width < 1 || options.height < 1 || options.maxSpp < 1 || options.referenceSpp < 1)
     fail("sampling_study", "sizes and sample counts must be positive");
   if (!std::filesystem::is_directory(options.outDir)) fail(options.outDir, "folder does not exist");
-  const Scene scene = loadScene(options.scene.empty() ? options.assets / "scenes" / "bunny.json" : options.scene);
+  const Scene scene =
+      loadScene(options.scene.empty() ? options.assets / "scenes" / "bunny.json" : options.scene);
   std::vector<MapResult> results;
   for (const std::string& entry : options.maps) {
     const std::size_t colon = entry.find(':');
@@ -331,7 +336,8 @@ int main(int argc, char** argv) {
   Options options;
   const char* assets = std::getenv("IBLKIT_ASSETS");
   options.assets = assets && *assets ? assets : "assets";
-  CLI::App app{"sampling_study: relMSE of each environment-sampling strategy against spp (docs/benchmarks.md)"};
+  CLI::App app{
+      "sampling_study: relMSE of each environment-sampling strategy against spp (docs/benchmarks.md)"};
   app.add_option("--assets", options.assets, "assets folder (default $IBLKIT_ASSETS or ./assets)");
   app.add_option("--scene", options.scene, "scene (default ASSETS/scenes/bunny.json)");
   app.add_option("--maps", options.maps, "maps in ASSETS/hdri as NAME[:LABEL]")->delimiter(',');

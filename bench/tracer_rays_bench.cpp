@@ -114,7 +114,8 @@ void BM_Render(benchmark::State& state) {
   for (auto _ : state) {
     const RenderResult result = render(*t.integrator, t.camera, settings);
     rays += result.rays;
-    if (result.rays != t.rays.size()) state.SkipWithError("render traced a different number of rays than recorded");
+    if (result.rays != t.rays.size())
+      state.SkipWithError("render traced a different number of rays than recorded");
   }
   state.SetItemsProcessed(static_cast<int64_t>(rays));
   state.counters["rays"] = static_cast<double>(t.rays.size());
@@ -130,7 +131,8 @@ void BM_Replay(benchmark::State& state) {
       return tbb::parallel_reduce(
           tbb::blocked_range<std::size_t>(0, t.rays.size(), 1024), std::size_t(0),
           [&](const tbb::blocked_range<std::size_t>& range, std::size_t count) {
-            for (std::size_t i = range.begin(); i != range.end(); ++i) count += replay(scene, t.rays[i]) ? 1 : 0;
+            for (std::size_t i = range.begin(); i != range.end(); ++i)
+              count += replay(scene, t.rays[i]) ? 1 : 0;
             return count;
           },
           std::plus<>());

@@ -98,7 +98,8 @@ class Integrator {
   // null (settings_.phong set), the Phong lobe.
   glm::vec3 evalReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
                            const glm::vec3& wo, const glm::vec3& wi) const;
-  float pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi) const;
+  float pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, const glm::vec3& wo,
+                      const glm::vec3& wi) const;
   BrdfSample sampleReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
                               const glm::vec3& wo, glm::vec2 u, float uLobe) const;
   // RayScene::intersect / occluded, logged when a recorder is set.

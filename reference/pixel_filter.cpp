@@ -22,7 +22,8 @@ std::vector<float> gaussianTable() {
   const float floor = gaussian(r);
   std::vector<float> table(n);
   for (int i = 0; i < n; ++i) {
-    const float a = -r + 2.0f * r * static_cast<float>(i) / n, b = -r + 2.0f * r * static_cast<float>(i + 1) / n;
+    const float a = -r + 2.0f * r * static_cast<float>(i) / n,
+                b = -r + 2.0f * r * static_cast<float>(i + 1) / n;
     const float mean = (gaussian(a) + 4.0f * gaussian(0.5f * (a + b)) + gaussian(b)) / 6.0f;
     table[static_cast<std::size_t>(i)] = std::max(0.0f, mean - floor);
   }

@@ -27,7 +27,7 @@ struct RenderSettings {
   // > 0: render passes of samplesPerPixel until this many seconds have passed (at least one).
   double timeSeconds = 0.0;
   std::uint32_t seed = 0;
-  int threads = 0;  // 0: all hardware threads
+  int threads = 0;                                // 0: all hardware threads
   PixelFilterKind filter = PixelFilterKind::Box;  // pixel_filter.h
 };
 

@@ -148,7 +148,9 @@ BrdfAtPoint::BrdfAtPoint(const Material& material, const glm::vec3& n, const glm
   pSpecular_ = specularProbability(lobes_, woLocal_.z);
 }
 
-glm::vec3 BrdfAtPoint::eval(const glm::vec3& wi) const { return evalLocal(lobes_, woLocal_, frame_.toLocal(wi)); }
+glm::vec3 BrdfAtPoint::eval(const glm::vec3& wi) const {
+  return evalLocal(lobes_, woLocal_, frame_.toLocal(wi));
+}
 
 float BrdfAtPoint::pdf(const glm::vec3& wi) const {
   return pdfLocal(lobes_, woLocal_, frame_.toLocal(wi), pSpecular_);

@@ -99,13 +99,16 @@ glm::vec2 owenScrambledSobol02(std::uint32_t index, std::uint32_t seed) {
   return owenScrambledSobol02(index, sobol02Scramble(seed));
 }
 
-Sobol02Scramble sobol02Scramble(std::uint32_t seed) { return {{dimensionSeed(seed, 0), dimensionSeed(seed, 1)}}; }
+Sobol02Scramble sobol02Scramble(std::uint32_t seed) {
+  return {{dimensionSeed(seed, 0), dimensionSeed(seed, 1)}};
+}
 
 // owenScramble(bits, s) is reverseBits(laineKarrasPermutation(reverseBits(bits), s)); the first
 // coordinate's bits are reverseBits(index) and the second's reversal comes from its own table, so
 // the inner reversals cancel.
 glm::vec2 owenScrambledSobol02(std::uint32_t index, const Sobol02Scramble& scramble) {
-  const std::uint32_t reversedSecond = SobolSecondDimensionTables::lookup(sobolTables().reversedByByte, index);
+  const std::uint32_t reversedSecond =
+      SobolSecondDimensionTables::lookup(sobolTables().reversedByByte, index);
   return {unitFloatFromBits(reverseBits(laineKarrasPermutation(index, scramble.dimensionSeeds[0]))),
           unitFloatFromBits(reverseBits(laineKarrasPermutation(reversedSecond, scramble.dimensionSeeds[1])))};
 }

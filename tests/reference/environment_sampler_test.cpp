@@ -142,7 +142,8 @@ TEST(EnvironmentSampler, LookupAndSampleRadianceAgreeWithTheMap) {
     const glm::vec3 w = sampleUniformSphere(rng.uniform2D());
     const EnvironmentSampler::Lookup seen = sampler.lookup(w);
     ASSERT_EQ(seen.pdf, sampler.pdf(w));
-    for (int c = 0; c < 3; ++c) ASSERT_NEAR(seen.radiance[c], map.radiance(w)[c], 1e-4f * (1.0f + map.radiance(w)[c]));
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(seen.radiance[c], map.radiance(w)[c], 1e-4f * (1.0f + map.radiance(w)[c]));
     const EnvironmentSampler::Sample s = sampler.sample(rng.uniform2D());
     for (int c = 0; c < 3; ++c)
       ASSERT_NEAR(s.radiance[c], map.radiance(s.direction)[c], 1e-3f * (1.0f + map.radiance(s.direction)[c]));

@@ -91,7 +91,8 @@ TEST_F(IblkitTrace, BrokenAndBlackEnvironmentsRenderWithoutNaN) {
 TEST_F(IblkitTrace, GaussianFilterSoftensEdges) {
   std::string output;
   ASSERT_EQ(trace("scene.json -o box.exr --mask box_mask.exr --spp 16 --filter box", &output), 0) << output;
-  ASSERT_EQ(trace("scene.json -o gauss.exr --mask gauss_mask.exr --spp 16 --filter gaussian", &output), 0) << output;
+  ASSERT_EQ(trace("scene.json -o gauss.exr --mask gauss_mask.exr --spp 16 --filter gaussian", &output), 0)
+      << output;
   const auto partial = [](const Image& mask) {
     int count = 0;
     for (const glm::vec4& m : mask.pixels()) count += m.r > 0.0f && m.r < 1.0f;

@@ -41,7 +41,9 @@ TEST(PixelFilter, GaussianSamplesFollowItsPdf) {
 TEST(PixelFilter, GaussianPdfIsTheTruncatedGaussian) {
   const PixelFilter gaussian(PixelFilterKind::Gaussian);
   const double sigma = PixelFilter::kGaussianSigma, r = PixelFilter::kGaussianRadius;
-  const auto g = [&](double x) { return std::exp(-x * x / (2.0 * sigma * sigma)) - std::exp(-r * r / (2.0 * sigma * sigma)); };
+  const auto g = [&](double x) {
+    return std::exp(-x * x / (2.0 * sigma * sigma)) - std::exp(-r * r / (2.0 * sigma * sigma));
+  };
   double integral = 0.0;
   constexpr int kSteps = 100000;
   for (int i = 0; i < kSteps; ++i) integral += g(-r + 2.0 * r * (i + 0.5) / kSteps) * 2.0 * r / kSteps;
@@ -68,7 +70,8 @@ TEST(PixelFilter, GaussianRenderBlursTheSilhouette) {
     const RenderScene renderScene(std::move(scene));
     const EnvironmentMap environment = EnvironmentMap::constant(glm::vec3(1.0f));
     const EnvironmentSampler sampler(environment);
-    const Integrator integrator(renderScene, environment, sampler, test::integratorOf(IntegratorKind::Direct));
+    const Integrator integrator(renderScene, environment, sampler,
+                                test::integratorOf(IntegratorKind::Direct));
     RenderSettings settings;
     settings.width = settings.height = 32;
     settings.samplesPerPixel = 64;
@@ -86,7 +89,8 @@ TEST(PixelFilter, GaussianRenderBlursTheSilhouette) {
 TEST(PixelFilter, ParsesNamesAndRefusesOthers) {
   EXPECT_EQ(parsePixelFilter("box"), PixelFilterKind::Box);
   EXPECT_EQ(parsePixelFilter("gaussian"), PixelFilterKind::Gaussian);
-  EXPECT_EQ(test::errorMessage([] { parsePixelFilter("tent"); }), "--filter: unknown filter 'tent' (box or gaussian)");
+  EXPECT_EQ(test::errorMessage([] { parsePixelFilter("tent"); }),
+            "--filter: unknown filter 'tent' (box or gaussian)");
 }
 
 }  // namespace

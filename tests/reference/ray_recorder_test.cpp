@@ -55,7 +55,8 @@ TEST(RayRecorder, RecordsEveryRayTracedWithoutChangingTheImage) {
   // camera rays that hit the sphere or ground (mask or depth non-zero) are among them.
   std::size_t hits = 0;
   for (const RecordedRay& ray : rays)
-    if (!ray.occlusion) hits += f.renderScene.rays().intersect({ray.origin, ray.direction}, ray.tmin, ray.tmax).hit;
+    if (!ray.occlusion)
+      hits += f.renderScene.rays().intersect({ray.origin, ray.direction}, ray.tmin, ray.tmax).hit;
   EXPECT_GT(hits, 0u);
 
   // Off again: nothing more is recorded; clear() empties it.
