@@ -90,7 +90,8 @@ TEST(PiecewiseConstant1D, GuidedSearchFindsTheCellOfAFullSearch) {
         if (u >= 0.0f && u < 1.0f) us.push_back(u);
     for (const float u : us) {
       const int full = static_cast<int>(std::upper_bound(cdf.begin(), cdf.end(), u) - cdf.begin()) - 1;
-      ASSERT_EQ(d.sample(u).offset, std::clamp(full, 0, n - 1)) << "trial " << trial << ", n " << n << ", u " << u;
+      ASSERT_EQ(d.sample(u).offset, std::clamp(full, 0, n - 1))
+          << "trial " << trial << ", n " << n << ", u " << u;
     }
   }
 }
