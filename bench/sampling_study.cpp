@@ -6,10 +6,12 @@
 // ..., --max-spp, and scores every render by its relMSE (score/image_metrics.h) against a
 // high-spp MIS render of the same map (rendered once with another seed and cached as OpenEXR in
 // --cache). Also measures the time per camera sample of each strategy. Writes a markdown table
-// (--out-dir/sampling_study.md), a log-log plot of relMSE against spp, one panel per map and one
-// line per strategy (--out-dir/sampling_study.svg), and, with --update FILE, replaces the text
-// between the lines "<!-- sampling-study:begin -->" and "<!-- sampling-study:end -->" of FILE
-// with the table.
+// (--out-dir/NAME.md), a log-log plot of relMSE against spp, one panel per map and one line per
+// strategy (--out-dir/NAME.svg), and, with --update FILE, replaces the text between the lines
+// "<!-- NAME:begin -->" and "<!-- NAME:end -->" of FILE with the table; NAME is --name
+// (default sampling_study). --phong E gives every surface the modified Phong lobe of exponent E
+// (the second material model, a glossy lobe that BRDF sampling follows) instead of the
+// scene's glTF materials.
 //
 // The reference has noise of its own: the expected relMSE of a test render against it is the
 // test's own plus the reference's, which the reference's per-pixel variance estimates (the
@@ -22,6 +24,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -41,8 +44,6 @@ namespace iblkit {
 namespace {
 
 constexpr std::uint32_t kReferenceSeed = 0x5eed5eedU;
-constexpr const char* kBeginMarker = "<!-- sampling-study:begin -->";
-constexpr const char* kEndMarker = "<!-- sampling-study:end -->";
 
 struct Strategy {
   const char* name;
@@ -60,6 +61,15 @@ struct Options {
   std::filesystem::path scene, assets, cache = "build/sampling_study", outDir = "docs/benchmarks", update;
   std::vector<std::string> maps{"sky:sunny", "studio:studio", "venice:soft"};
   int width = 160, height = 90, maxSpp = 64, referenceSpp = 4096, threads = 2;
+  std::optional<float> phong;
+  std::string name = "sampling_study";
+
+  IntegratorSettings integratorSettings(EnvSampling sampling) const {
+    IntegratorSettings settings;
+    settings.envSampling = sampling;
+    if (phong) settings.phong = PhongLobe{*phong};
+    return settings;
+  }
 };
 
 struct MapResult {
@@ -124,7 +134,8 @@ MapResult studyMap(const Options& options, const Scene& baseScene, const std::st
 
   // The reference, cached by map, size and sample count.
   const std::string key = name + "_" + std::to_string(options.width) + "x" + std::to_string(options.height) +
-                          "_" + std::to_string(options.referenceSpp) + "spp";
+                          "_" + std::to_string(options.referenceSpp) + "spp" +
+                          (options.phong ? "_phong" + format("%g", *options.phong) : std::string());
   const std::filesystem::path referenceFile = options.cache / ("reference_" + key + ".exr");
   const std::filesystem::path varianceFile = options.cache / ("reference_" + key + "_variance.exr");
   Image reference, variance;
@@ -135,7 +146,7 @@ MapResult studyMap(const Options& options, const Scene& baseScene, const std::st
   } else {
     std::printf("%s: rendering the reference, %d spp mis\n", name.c_str(), options.referenceSpp);
     std::fflush(stdout);
-    const Integrator integrator(scene, environment, sampler, IntegratorSettings{});
+    const Integrator integrator(scene, environment, sampler, options.integratorSettings(EnvSampling::Mis));
     RenderSettings referenceSettings = settings;
     referenceSettings.samplesPerPixel = options.referenceSpp;
     referenceSettings.seed = kReferenceSeed;
@@ -153,9 +164,7 @@ MapResult studyMap(const Options& options, const Scene& baseScene, const std::st
 
   const std::vector<int> levels = sppLevels(options.maxSpp);
   for (const Strategy& strategy : kStrategies) {
-    IntegratorSettings integratorSettings;
-    integratorSettings.envSampling = strategy.sampling;
-    const Integrator integrator(scene, environment, sampler, integratorSettings);
+    const Integrator integrator(scene, environment, sampler, options.integratorSettings(strategy.sampling));
     std::vector<double> scores;
     double seconds = 0.0, samples = 0.0;
     for (std::size_t level = 0; level < levels.size(); ++level) {
@@ -179,8 +188,11 @@ MapResult studyMap(const Options& options, const Scene& baseScene, const std::st
 std::string markdownTable(const Options& options, const std::vector<MapResult>& results) {
   const std::vector<int> levels = sppLevels(options.maxSpp);
   std::ostringstream md;
-  md << "Scene `bunny.json` (path integrator, max depth 16), " << options.width << " x " << options.height
-     << ", " << options.threads << " threads. relMSE (score/image_metrics.h, epsilon 0.01) against "
+  md << "Scene `bunny.json` ("
+     << (options.phong ? "every surface the modified Phong lobe of exponent " + format("%g", *options.phong)
+                       : std::string("its own materials"))
+     << "; path integrator, max depth 16), " << options.width << " x " << options.height << ", "
+     << options.threads << " threads. relMSE (score/image_metrics.h, epsilon 0.01) against "
      << options.referenceSpp
      << " spp of `mis` with another seed; \"floor\" is the reference's own expected "
         "relMSE (from its variance), included in every score.\n\n";
@@ -290,24 +302,29 @@ void writeText(const std::filesystem::path& file, const std::string& text) {
   if (!stream) fail(file, "cannot write");
 }
 
-// Replaces the lines between the markers of `file` with `text`.
-void updateSection(const std::filesystem::path& file, const std::string& text) {
+// `file`'s text with the text between the markers of section `name` replaced by `text`; fails
+// (before anything is rendered, when called with an empty text first) if the section is missing.
+std::string withSection(const std::filesystem::path& file, const std::string& name, const std::string& text) {
+  const std::string beginMarker = "<!-- " + name + ":begin -->", endMarker = "<!-- " + name + ":end -->";
   std::ifstream in(file, std::ios::binary);
   if (!in) fail(file, "cannot read");
   std::ostringstream whole;
   whole << in.rdbuf();
   const std::string content = whole.str();
-  const std::size_t begin = content.find(kBeginMarker), end = content.find(kEndMarker);
+  const std::size_t begin = content.find(beginMarker), end = content.find(endMarker);
   if (begin == std::string::npos || end == std::string::npos || end < begin)
-    fail(file, std::string("has no ") + kBeginMarker + " ... " + kEndMarker + " section");
-  const std::size_t afterBegin = begin + std::string(kBeginMarker).size();
-  writeText(file, content.substr(0, afterBegin) + "\n" + text + content.substr(end));
+    fail(file, "has no " + beginMarker + " ... " + endMarker + " section");
+  const std::size_t afterBegin = begin + beginMarker.size();
+  return content.substr(0, afterBegin) + "\n" + text + content.substr(end);
 }
 
 int run(const Options& options) {
   if (options.width < 1 || options.height < 1 || options.maxSpp < 1 || options.referenceSpp < 1)
     fail("sampling_study", "sizes and sample counts must be positive");
+  if (options.phong && !(std::isfinite(*options.phong) && *options.phong >= 0.0f))
+    fail("--phong", "exponent must be finite and >= 0");
   if (!std::filesystem::is_directory(options.outDir)) fail(options.outDir, "folder does not exist");
+  if (!options.update.empty()) withSection(options.update, options.name, "");
   const Scene scene =
       loadScene(options.scene.empty() ? options.assets / "scenes" / "bunny.json" : options.scene);
   std::vector<MapResult> results;
@@ -321,9 +338,9 @@ int run(const Options& options) {
                 number(results.back().referenceFloor).c_str());
   }
   const std::string table = markdownTable(options, results);
-  writeText(options.outDir / "sampling_study.md", "# Sampling study\n\n" + table);
-  writeText(options.outDir / "sampling_study.svg", svgPlot(options, results));
-  if (!options.update.empty()) updateSection(options.update, table);
+  writeText(options.outDir / (options.name + ".md"), "# Sampling study\n\n" + table);
+  writeText(options.outDir / (options.name + ".svg"), svgPlot(options, results));
+  if (!options.update.empty()) writeText(options.update, withSection(options.update, options.name, table));
   std::printf("%s", table.c_str());
   return 0;
 }
@@ -347,7 +364,10 @@ int main(int argc, char** argv) {
   app.add_option("--reference-spp", options.referenceSpp, "samples per pixel of the reference");
   app.add_option("--threads", options.threads, "worker threads");
   app.add_option("--cache", options.cache, "folder of the cached references");
-  app.add_option("--out-dir", options.outDir, "where sampling_study.md and sampling_study.svg go");
+  app.add_option("--out-dir", options.outDir, "where NAME.md and NAME.svg go");
+  app.add_option("--name", options.name,
+                 "name of the outputs and of the --update section (default sampling_study)");
+  app.add_option("--phong", options.phong, "every surface uses the modified Phong lobe of this exponent");
   app.add_option("--update", options.update, "markdown file whose sampling-study section gets the table");
   CLI11_PARSE(app, argc, argv);
   try {
