@@ -70,17 +70,24 @@ EnvironmentSampler::Sample EnvironmentSampler::sample(glm::vec2 u) const {
   const float sinTheta = std::hypot(mapDirection.x, mapDirection.z);
   Sample out;
   out.direction = map_.toWorldDirection(mapDirection);
-  out.radiance = map_.radiance(out.direction);
+  // The bilinear lookup at the sampled (u, v) itself: map_.radiance(out.direction) would find the
+  // same point again through two arctangents.
+  out.radiance = map_.intensity() * sampleLatLongBilinear(map_.image(), s.p);
   out.pdf = sinTheta > 0.0f ? s.pdf / (kTwoPiSquared * sinTheta) : 0.0f;
   return out;
 }
 
-float EnvironmentSampler::pdf(const glm::vec3& worldDirection) const {
+float EnvironmentSampler::pdf(const glm::vec3& worldDirection) const { return lookup(worldDirection).pdf; }
+
+EnvironmentSampler::Lookup EnvironmentSampler::lookup(const glm::vec3& worldDirection) const {
   const glm::vec3 mapDirection = glm::normalize(map_.toMapDirection(worldDirection));
+  const glm::vec2 uv = latLongUv(mapDirection);
+  Lookup out;
+  out.radiance = map_.intensity() * sampleLatLongBilinear(map_.image(), uv);
   // hypot(x, z), not sqrt(1 - y^2): stays non-zero for directions a float step from a pole.
   const float sinTheta = std::hypot(mapDirection.x, mapDirection.z);
-  if (sinTheta <= 0.0f) return 0.0f;
-  return distribution_.pdf(latLongUv(mapDirection)) / (kTwoPiSquared * sinTheta);
+  if (sinTheta > 0.0f) out.pdf = distribution_.pdf(uv) / (kTwoPiSquared * sinTheta);
+  return out;
 }
 
 }  // namespace iblkit

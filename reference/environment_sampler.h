@@ -38,6 +38,13 @@ class EnvironmentSampler {
   Sample sample(glm::vec2 u) const;
   // Density per steradian of sampling world direction w (any non-zero length).
   float pdf(const glm::vec3& worldDirection) const;
+  // map.radiance(w) and pdf(w) together, from one lat-long lookup (what a path that escapes in
+  // direction w needs for its MIS weight).
+  struct Lookup {
+    glm::vec3 radiance{0.0f};
+    float pdf = 0.0f;
+  };
+  Lookup lookup(const glm::vec3& worldDirection) const;
 
   // True when the map is black everywhere: the sampler then samples uniformly in (u, v).
   bool isBlack() const { return black_; }

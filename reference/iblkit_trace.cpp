@@ -30,7 +30,7 @@ struct Options {
   std::filesystem::path environment;
   float environmentRotation = 0.0f, environmentIntensity = 1.0f;
   bool misCompensation = false;
-  std::string integrator = "path", envSampling = "mis";
+  std::string integrator = "path", envSampling = "mis", filter = "box";
   int maxDepth = 16;
   float aoDistance = std::numeric_limits<float>::infinity();
   int samplesPerPixel = 64;
@@ -78,6 +78,7 @@ int run(const Options& options, const CLI::App& app) {
   integratorSettings.envSampling = parseEnvSampling(options.envSampling);
   integratorSettings.maxDepth = options.maxDepth;
   integratorSettings.aoDistance = options.aoDistance;
+  const PixelFilterKind filter = parsePixelFilter(options.filter);
   if (options.phongExponent) {
     if (!std::isfinite(*options.phongExponent) || *options.phongExponent < 0.0f)
       fail("--phong", "exponent must be finite and >= 0");
@@ -97,6 +98,7 @@ int run(const Options& options, const CLI::App& app) {
   settings.timeSeconds = options.timeSeconds;
   settings.seed = options.seed;
   settings.threads = options.threads;
+  settings.filter = filter;
 
   const std::filesystem::path environmentFile =
       options.environment.empty() ? scene.environment.file : options.environment;
@@ -169,6 +171,7 @@ int main(int argc, char** argv) {
   app.add_option("--time", options.timeSeconds, "render passes of --spp until this many seconds have passed");
   app.add_option("--width", options.width, "image width (default: the scene's)");
   app.add_option("--height", options.height, "image height (default: the scene's)");
+  app.add_option("--filter", options.filter, "pixel filter: box or gaussian (sigma 0.5 px, radius 1.5 px)");
   app.add_option("--seed", options.seed, "random seed");
   app.add_option("--threads", options.threads, "worker threads (0: all)");
   try {

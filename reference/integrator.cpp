@@ -62,23 +62,35 @@ Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environme
       environmentSampler_(environmentSampler),
       settings_(settings) {}
 
-glm::vec3 Integrator::evalReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
-                                     const glm::vec3& wi) const {
-  if (!settings_.phong) return evalBrdf(material, n, wo, wi);
+glm::vec3 Integrator::evalReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+                                     const glm::vec3& wo, const glm::vec3& wi) const {
+  if (brdf) return brdf->eval(wi);
   return material.baseColor * evalPhongLobe(*settings_.phong, n, wo, wi);
 }
 
-float Integrator::pdfReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+float Integrator::pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, const glm::vec3& wo,
                                 const glm::vec3& wi) const {
-  return settings_.phong ? pdfPhongLobe(*settings_.phong, n, wo, wi) : pdfBrdf(material, n, wo, wi);
+  return brdf ? brdf->pdf(wi) : pdfPhongLobe(*settings_.phong, n, wo, wi);
 }
 
-BrdfSample Integrator::sampleReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
-                                        glm::vec2 u, float uLobe) const {
-  if (!settings_.phong) return sampleBrdf(material, n, wo, u, uLobe);
+BrdfSample Integrator::sampleReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+                                        const glm::vec3& wo, glm::vec2 u, float uLobe) const {
+  if (brdf) return brdf->sample(u, uLobe);
   BrdfSample sample = samplePhongLobe(*settings_.phong, n, wo, u);
   sample.weight *= material.baseColor;
   return sample;
+}
+
+Hit Integrator::intersect(const Ray& ray) const {
+  if (recorder_) [[unlikely]]
+    recorder_->record({ray.origin, 0.0f, ray.direction, kInfinity, false});
+  return scene_.rays().intersect(ray, 0.0f, kInfinity);
+}
+
+bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax) const {
+  if (recorder_) [[unlikely]]
+    recorder_->record({origin, 0.0f, direction, tmax, true});
+  return scene_.rays().occluded(origin, direction, 0.0f, tmax);
 }
 
 CameraSample Integrator::trace(const Ray& cameraRay, PixelSampler& sampler) const {
@@ -120,24 +132,23 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
   const bool sampleLights = strategy != EnvSampling::Brdf;
   const bool combine = strategy == EnvSampling::Mis;
   const int maxDepth = settings_.kind == IntegratorKind::Direct ? 1 : settings_.maxDepth;
-  const RayScene& rays = scene_.rays();
 
   glm::vec3 throughput(1.0f);
   float previousPdf = 0.0f;   // BRDF pdf of the ray being traced
   bool previousDelta = true;  // the camera ray, like a mirror ray, sees the environment directly
   for (int depth = 0;; ++depth) {
-    const Hit hit = rays.intersect(ray, 0.0f, kInfinity);
+    const Hit hit = intersect(ray);
     ++result.rays;
     if (!hit.hit) {
       // The environment seen by a BRDF-sampled ray counts when BRDF sampling is a strategy of
       // its own (brdf), MIS-weighted against the light strategy (mis), or fully after a delta
       // bounce, which no light strategy can reach.
-      float weight = 0.0f;
-      if (previousDelta || strategy == EnvSampling::Brdf)
-        weight = 1.0f;
-      else if (combine)
-        weight = powerHeuristic(previousPdf, environmentSampler_.pdf(ray.direction));
-      if (weight > 0.0f) result.radiance += throughput * weight * environment_.radiance(ray.direction);
+      if (previousDelta || strategy == EnvSampling::Brdf) {
+        result.radiance += throughput * environment_.radiance(ray.direction);
+      } else if (combine) {
+        const EnvironmentSampler::Lookup seen = environmentSampler_.lookup(ray.direction);
+        result.radiance += throughput * powerHeuristic(previousPdf, seen.pdf) * seen.radiance;
+      }
       return;
     }
 
@@ -155,6 +166,10 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
     const float uLobe = sampler.next1D();
     const float uRoulette = sampler.next1D();
     const glm::vec3 n = point.shadingNormal, ng = point.geometricNormal;
+    // The glTF BRDF at this vertex, prepared once for its eval, pdf and sample calls (none with --phong).
+    std::optional<BrdfAtPoint> gltfBrdf;
+    if (!settings_.phong) gltfBrdf.emplace(material, n, wo);
+    const BrdfAtPoint* brdf = gltfBrdf ? &*gltfBrdf : nullptr;
 
     if (sampleLights) {
       const LightSample light = sampleLight(n, uLight);
@@ -162,19 +177,19 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
       // Directions below the triangle's plane are blocked by the surface itself.
       if (light.pdf > 0.0f && cosTheta > 0.0f && glm::dot(light.direction, ng) > 0.0f &&
           maxComponent(light.radiance) > 0.0f) {
-        const glm::vec3 f = evalReflection(material, n, wo, light.direction);
+        const glm::vec3 f = evalReflection(brdf, material, n, wo, light.direction);
         if (maxComponent(f) > 0.0f) {
           ++result.rays;
-          if (!rays.occluded(offsetRayOrigin(point.position, ng), light.direction, 0.0f, kInfinity)) {
+          if (!occluded(offsetRayOrigin(point.position, ng), light.direction, kInfinity)) {
             const float weight =
-                combine ? powerHeuristic(light.pdf, pdfReflection(material, n, wo, light.direction)) : 1.0f;
+                combine ? powerHeuristic(light.pdf, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
             result.radiance += throughput * f * light.radiance * (cosTheta * weight / light.pdf);
           }
         }
       }
     }
 
-    const BrdfSample scattered = sampleReflection(material, n, wo, uBrdf, uLobe);
+    const BrdfSample scattered = sampleReflection(brdf, material, n, wo, uBrdf, uLobe);
     if (!scattered.valid()) return;
     throughput *= scattered.weight;
     previousPdf = scattered.pdf;
@@ -190,8 +205,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
 }
 
 void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSample& result) const {
-  const RayScene& rays = scene_.rays();
-  const Hit hit = rays.intersect(ray, 0.0f, kInfinity);
+  const Hit hit = intersect(ray);
   ++result.rays;
   if (!hit.hit) {
     result.radiance = glm::vec3(1.0f);
@@ -201,7 +215,7 @@ void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSam
   recordFirstHit(point, hit.t, result);
   ++result.rays;
   const OcclusionSample sample =
-      sampleAmbientOcclusion(rays, point.position, point.geometricNormal, point.shadingNormal,
+      sampleAmbientOcclusion(scene_.rays(), point.position, point.geometricNormal, point.shadingNormal,
                              sampler.next2D(), settings_.aoDistance);
   if (!sample.escaped) return;
   result.radiance = glm::vec3(1.0f);

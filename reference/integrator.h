@@ -29,6 +29,7 @@
 #include "engine/core/ray.h"
 #include "reference/environment_sampler.h"
 #include "reference/pixel_sampler.h"
+#include "reference/ray_recorder.h"
 #include "reference/render_scene.h"
 
 namespace iblkit {
@@ -78,6 +79,10 @@ class Integrator {
 
   const IntegratorSettings& settings() const { return settings_; }
 
+  // Logs every ray traced from now on into `recorder` (nullptr: stop; the default). The recorder
+  // must outlive the integrator's use of it. For the ray-replay benchmark only.
+  void recordRays(RayRecorder* recorder) { recorder_ = recorder; }
+
   // What the camera ray (unit direction) sees, with random numbers from `sampler`.
   CameraSample trace(const Ray& cameraRay, PixelSampler& sampler) const;
 
@@ -89,13 +94,17 @@ class Integrator {
   };
   // The environment strategy's direction at a point with shading normal n (not for brdf).
   LightSample sampleLight(const glm::vec3& n, glm::vec2 u) const;
-  // The surface reflection model: the glTF BRDF, or the Phong lobe when settings_.phong is set.
-  glm::vec3 evalReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
-                           const glm::vec3& wi) const;
-  float pdfReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo,
+  // The surface reflection model: the glTF BRDF prepared at the vertex (`brdf`), or, when it is
+  // null (settings_.phong set), the Phong lobe.
+  glm::vec3 evalReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+                           const glm::vec3& wo, const glm::vec3& wi) const;
+  float pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, const glm::vec3& wo,
                       const glm::vec3& wi) const;
-  BrdfSample sampleReflection(const Material& material, const glm::vec3& n, const glm::vec3& wo, glm::vec2 u,
-                              float uLobe) const;
+  BrdfSample sampleReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+                              const glm::vec3& wo, glm::vec2 u, float uLobe) const;
+  // RayScene::intersect / occluded, logged when a recorder is set.
+  Hit intersect(const Ray& ray) const;
+  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax) const;
   void traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& result) const;
   void traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSample& result) const;
 
@@ -103,6 +112,7 @@ class Integrator {
   const EnvironmentMap& environment_;
   const EnvironmentSampler& environmentSampler_;
   IntegratorSettings settings_;
+  RayRecorder* recorder_ = nullptr;
 };
 
 }  // namespace iblkit

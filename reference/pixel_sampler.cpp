@@ -19,20 +19,29 @@ std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b) {
   return lowbias32(a ^ lowbias32(b + 0x9e3779b9U));
 }
 
-PixelSampler::PixelSampler(std::uint32_t seed, std::uint32_t pixelIndex, std::uint32_t sampleIndex)
-    : pixelSeed_(hashCombine(seed, pixelIndex)),
+PixelSeeds::PixelSeeds(std::uint32_t seed, std::uint32_t pixelIndex)
+    : pixelIndex_(pixelIndex), pixelSeed_(hashCombine(seed, pixelIndex)) {
+  for (int pair = 0; pair < kPixelSobolPairs; ++pair) {
+    const std::uint32_t pairSeed = hashCombine(pixelSeed_, 0x50b01u + static_cast<std::uint32_t>(pair));
+    shuffleSeeds_[pair] = hashCombine(pairSeed, 1u);
+    scrambles_[pair] = sobol02Scramble(pairSeed);
+  }
+}
+
+PixelSampler::PixelSampler(const PixelSeeds& pixel, std::uint32_t sampleIndex)
+    : pixel_(pixel),
       sampleIndex_(sampleIndex),
-      rng_(hashCombine(pixelSeed_, sampleIndex), pixelIndex) {}
+      rng_(hashCombine(pixel.pixelSeed_, sampleIndex), pixel.pixelIndex_) {}
 
 glm::vec2 PixelSampler::next2D() {
   if (pair_ < kSobolPairs) {
-    const std::uint32_t pairSeed = hashCombine(pixelSeed_, 0x50b01u + static_cast<std::uint32_t>(pair_++));
     // Burley 2020, "Practical Hash-based Owen Scrambling" (JCGT 9(4)), section 4: each pair
     // shuffles the index by its own nested uniform scramble. With one index for all pairs they are
     // correlated: the samples landing in one part of the pixel would all get their light
     // directions from one part of the sphere.
-    const std::uint32_t shuffledIndex = owenScramble(sampleIndex_, hashCombine(pairSeed, 1u));
-    return owenScrambledSobol02(shuffledIndex, pairSeed);
+    const int pair = pair_++;
+    const std::uint32_t shuffledIndex = owenScramble(sampleIndex_, pixel_.shuffleSeeds_[pair]);
+    return owenScrambledSobol02(shuffledIndex, pixel_.scrambles_[pair]);
   }
   return rng_.uniform2D();
 }

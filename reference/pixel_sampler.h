@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "engine/core/low_discrepancy.h"
 #include "engine/core/rng.h"
 
 namespace iblkit {
@@ -20,12 +21,30 @@ namespace iblkit {
 // per-pixel and per-dimension seeds.
 std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b);
 
+// Number of leading 2D draws of a camera sample taken from the scrambled Sobol sequence.
+inline constexpr int kPixelSobolPairs = 3;
+
+// The part of a PixelSampler's keys that depends only on (seed, pixel): the hashes that scramble
+// and shuffle each Sobol pair. The renderer computes it once per pixel instead of once per sample.
+class PixelSeeds {
+ public:
+  PixelSeeds(std::uint32_t seed, std::uint32_t pixelIndex);
+
+ private:
+  friend class PixelSampler;
+  std::uint32_t pixelIndex_, pixelSeed_;
+  std::uint32_t shuffleSeeds_[kPixelSobolPairs];
+  Sobol02Scramble scrambles_[kPixelSobolPairs];
+};
+
 class PixelSampler {
  public:
-  // Number of leading 2D draws taken from the scrambled Sobol sequence.
-  static constexpr int kSobolPairs = 3;
+  static constexpr int kSobolPairs = kPixelSobolPairs;
 
-  PixelSampler(std::uint32_t seed, std::uint32_t pixelIndex, std::uint32_t sampleIndex);
+  PixelSampler(std::uint32_t seed, std::uint32_t pixelIndex, std::uint32_t sampleIndex)
+      : PixelSampler(PixelSeeds(seed, pixelIndex), sampleIndex) {}
+  // The same numbers as PixelSampler(seed, pixelIndex, sampleIndex) for the seeds of (seed, pixelIndex).
+  PixelSampler(const PixelSeeds& pixel, std::uint32_t sampleIndex);
 
   // The next point in [0,1)^2.
   glm::vec2 next2D();
@@ -34,7 +53,7 @@ class PixelSampler {
   float next1D() { return rng_.uniformFloat(); }
 
  private:
-  std::uint32_t pixelSeed_;
+  PixelSeeds pixel_;
   std::uint32_t sampleIndex_;
   int pair_ = 0;
   PCG32 rng_;

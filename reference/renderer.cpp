@@ -85,6 +85,7 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
   const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
   const double tileCount = static_cast<double>(tilesX) * tilesY;
 
+  const PixelFilter filter(settings.filter);
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   int samples = 0;
   do {
@@ -100,9 +101,10 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
                   for (int x = tx * kTileSize; x < std::min(w, (tx + 1) * kTileSize); ++x) {
                     const auto pixel = static_cast<std::uint32_t>(y * w + x);
                     PixelSums& s = sums[pixel];
+                    const PixelSeeds seeds(settings.seed, pixel);
                     for (int i = first; i < last; ++i) {
-                      PixelSampler sampler(settings.seed, pixel, static_cast<std::uint32_t>(i));
-                      const glm::vec2 raster = glm::vec2(x, y) + sampler.next2D();
+                      PixelSampler sampler(seeds, static_cast<std::uint32_t>(i));
+                      const glm::vec2 raster = glm::vec2(x, y) + filter.sample(sampler.next2D());
                       const CameraSample c = integrator.trace(camera.primaryRay(raster, w, h), sampler);
                       const glm::dvec3 radiance(c.radiance);
                       s.radiance += radiance;

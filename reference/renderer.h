@@ -1,5 +1,6 @@
 #pragma once
-// The tile renderer: camera samples per pixel, averaged with a box filter, over TBB-parallel
+// The tile renderer: camera samples per pixel, averaged with a box or Gaussian filter (by filter
+// importance sampling, pixel_filter.h), over TBB-parallel
 // 16 x 16 tiles. Each sample's random numbers depend only on (seed, pixel, sample index)
 // (PixelSampler), and each pixel is summed by one task in sample order, so the images are
 // identical for a given seed whatever the thread count.
@@ -10,6 +11,7 @@
 #include "engine/core/camera.h"
 #include "engine/core/image.h"
 #include "reference/integrator.h"
+#include "reference/pixel_filter.h"
 
 namespace iblkit {
 
@@ -25,7 +27,8 @@ struct RenderSettings {
   // > 0: render passes of samplesPerPixel until this many seconds have passed (at least one).
   double timeSeconds = 0.0;
   std::uint32_t seed = 0;
-  int threads = 0;  // 0: all hardware threads
+  int threads = 0;                                // 0: all hardware threads
+  PixelFilterKind filter = PixelFilterKind::Box;  // pixel_filter.h
 };
 
 struct RenderResult {
@@ -45,8 +48,10 @@ struct RenderResult {
 using RenderProgress = std::function<void(double fraction, double seconds)>;
 
 // Renders through `camera`; pixel (i, j) averages primary rays through raster positions
-// (i, j) + u, u uniform in the pixel (a box filter). Throws Error("render: ...") for sizes outside
-// 1..kMaxImageSide, sample counts outside 1..kMaxSamplesPerPixel or a negative thread count.
+// (i, j) + PixelFilter(settings.filter).sample(u): u uniform in the pixel for the box filter, or
+// spread over the neighbours by the Gaussian's density (filter importance sampling).
+// Throws Error("render: ...") for sizes outside 1..kMaxImageSide, sample counts outside
+// 1..kMaxSamplesPerPixel or a negative thread count.
 RenderResult render(const Integrator& integrator, const Camera& camera, const RenderSettings& settings,
                     const RenderProgress& progress = {});
 

@@ -24,18 +24,7 @@ glm::vec3 schlickFresnel(const glm::vec3& f0, const glm::vec3& f90, float cosThe
   return f0 + (f90 - f0) * (m2 * m2 * m);
 }
 
-// The material's lobes in the form the formulas use (docs/material-model.md).
-struct Lobes {
-  glm::vec3 baseColor{0.0f};
-  float metallic = 0.0f;
-  float specular = 0.0f;
-  glm::vec3 dielectricF0{0.0f};   // min(0.04 specularColor, 1), before the specular factor
-  glm::vec3 f0{0.0f}, f90{0.0f};  // the specular layer's Fresnel endpoints, metal and dielectric mixed
-  float alpha = 1.0f;
-  bool delta = false;        // mirror: alpha < kDeltaAlpha
-  bool hasDiffuse = false;   // the diffuse term is non-zero somewhere
-  bool hasSpecular = false;  // the specular term is non-zero somewhere
-};
+using Lobes = BrdfLobes;
 
 Lobes lobesOf(const Material& material) {
   Lobes l;
@@ -152,6 +141,23 @@ float pdfBrdf(const Material& material, const glm::vec3& n, const glm::vec3& wo,
   const Lobes lobes = lobesOf(material);
   const glm::vec3 woLocal = frame.toLocal(wo);
   return pdfLocal(lobes, woLocal, frame.toLocal(wi), specularProbability(lobes, woLocal.z));
+}
+
+BrdfAtPoint::BrdfAtPoint(const Material& material, const glm::vec3& n, const glm::vec3& wo)
+    : frame_(Frame::fromZ(n)), woLocal_(frame_.toLocal(wo)), lobes_(lobesOf(material)) {
+  pSpecular_ = specularProbability(lobes_, woLocal_.z);
+}
+
+glm::vec3 BrdfAtPoint::eval(const glm::vec3& wi) const {
+  return evalLocal(lobes_, woLocal_, frame_.toLocal(wi));
+}
+
+float BrdfAtPoint::pdf(const glm::vec3& wi) const {
+  return pdfLocal(lobes_, woLocal_, frame_.toLocal(wi), pSpecular_);
+}
+
+BrdfSample BrdfAtPoint::sample(glm::vec2 u, float uLobe) const {
+  return toWorld(sampleLocal(lobes_, woLocal_, u, uLobe), frame_);
 }
 
 float specularLobeProbability(const Material& material, float cosThetaO) {

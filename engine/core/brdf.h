@@ -30,6 +30,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/core/frame.h"
 #include "engine/core/material.h"
 
 namespace iblkit {
@@ -54,6 +55,38 @@ BrdfSample sampleBrdf(const Material& material, const glm::vec3& n, const glm::v
                       float uLobe);
 // The pdf (per steradian) with which sampleBrdf returns the non-delta direction wi.
 float pdfBrdf(const Material& material, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi);
+
+// The material's lobes in the form the formulas use (docs/material-model.md); BrdfAtPoint keeps
+// one so that it is derived once per shading point.
+struct BrdfLobes {
+  glm::vec3 baseColor{0.0f};
+  float metallic = 0.0f;
+  float specular = 0.0f;
+  glm::vec3 dielectricF0{0.0f};   // min(0.04 specularColor, 1), before the specular factor
+  glm::vec3 f0{0.0f}, f90{0.0f};  // the specular layer's Fresnel endpoints, metal and dielectric mixed
+  float alpha = 1.0f;
+  bool delta = false;        // mirror: alpha < kDeltaAlpha
+  bool hasDiffuse = false;   // the diffuse term is non-zero somewhere
+  bool hasSpecular = false;  // the specular term is non-zero somewhere
+};
+
+// The BRDF of one material at one shading point seen from one direction wo, with what the three
+// functions above would each derive again (the lobes, the shading frame, wo in it, the lobe
+// probability) derived once: eval, pdf and sample return exactly evalBrdf, pdfBrdf and
+// sampleBrdf's results for the same arguments. For a path tracer's vertex, which calls all three.
+class BrdfAtPoint {
+ public:
+  BrdfAtPoint(const Material& material, const glm::vec3& n, const glm::vec3& wo);
+  glm::vec3 eval(const glm::vec3& wi) const;
+  float pdf(const glm::vec3& wi) const;
+  BrdfSample sample(glm::vec2 u, float uLobe) const;
+
+ private:
+  Frame frame_;
+  glm::vec3 woLocal_;
+  BrdfLobes lobes_;
+  float pSpecular_ = 0.0f;
+};
 
 // Probability that sampleBrdf picks the specular lobe at cos(theta_o) = n.wo: the reflectances
 // both lobes would have if the microfacet normal were n, Es = lum(F(n.wo)) for the specular layer

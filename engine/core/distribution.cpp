@@ -53,12 +53,27 @@ PiecewiseConstant1D::PiecewiseConstant1D(std::span<const float> f) : f_(f.begin(
     cdf_[i] = static_cast<float>(c);
   }
   cdf_[n] = 1.0f;
+  // Guide table (Chen and Asau 1974, "On Generating Random Variates from an Empirical
+  // Distribution"): guide_[k] is the last cell whose CDF start is <= k / n, so sample() searches
+  // only the few cells between two guide entries instead of the whole CDF.
+  guide_.resize(n + 1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const float threshold = static_cast<float>(k) / static_cast<float>(n);
+    guide_[k] = static_cast<int>(std::upper_bound(cdf_.begin(), cdf_.end(), threshold) - cdf_.begin()) - 1;
+  }
+  guide_[n] = static_cast<int>(n);
 }
 
 PiecewiseConstant1D::Sample PiecewiseConstant1D::sample(float u) const {
   u = std::clamp(u, 0.0f, kOneMinusEpsilon);
   // The last cell whose CDF start is <= u: its CDF end is > u, so it has non-zero probability.
-  const auto upper = std::upper_bound(cdf_.begin(), cdf_.end(), u);
+  // Searched between the guide entries one cell below and two above u's (a margin for the
+  // rounding of u * n): every CDF value before the first is <= u and the one after the last is
+  // > u, so the result is that of a search over the whole CDF.
+  const int n = size(), g = cellOf(u, n);
+  const int first = guide_[static_cast<std::size_t>(std::max(g - 1, 0))];
+  const int last = std::min(guide_[static_cast<std::size_t>(std::min(g + 2, n))] + 2, n + 1);
+  const auto upper = std::upper_bound(cdf_.begin() + first, cdf_.begin() + last, u);
   const int offset = std::clamp(static_cast<int>(upper - cdf_.begin()) - 1, 0, size() - 1);
   const float width = cdf_[offset + 1] - cdf_[offset];
   const float du = width > 0.0f ? std::min((u - cdf_[offset]) / width, kOneMinusEpsilon) : 0.0f;

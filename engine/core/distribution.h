@@ -34,12 +34,15 @@ class PiecewiseConstant1D {
   float invert(float x) const;
 
   int size() const { return static_cast<int>(f_.size()); }
+  // The CDF at the cell boundaries: size() + 1 values from 0 to 1.
+  std::span<const float> cdf() const { return cdf_; }
   // Integral of the function over [0, 1] (the mean of the values).
   float integral() const { return integral_; }
 
  private:
   std::vector<float> f_;
   std::vector<float> cdf_;  // size() + 1 entries, cdf_[0] = 0, cdf_.back() = 1
+  std::vector<int> guide_;  // size() + 1 entries: where sample() starts searching (see there)
   float integral_ = 0.0f;
 };
 

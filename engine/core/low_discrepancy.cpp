@@ -44,12 +44,39 @@ std::uint32_t dimensionSeed(std::uint32_t seed, std::uint32_t dimension) {
 
 // Sobol's second dimension as a 32-bit binary fraction: the xor of the direction numbers selected
 // by the bits of index, with v_1 = 0.1b and v_(k+1) = v_k xor (v_k >> 1) (Pascal's triangle mod 2).
-std::uint32_t sobolSecondDimensionBits(std::uint32_t index) {
-  std::uint32_t result = 0;
-  for (std::uint32_t v = 0x80000000u; index != 0; index >>= 1, v ^= v >> 1) {
-    if (index & 1u) result ^= v;
+// The xor is linear, so it is taken a byte of the index at a time from four 256-entry tables (the
+// reference tracer draws scrambled, hence full 32-bit, indices for every camera sample: a loop
+// over 32 bits cost more than the rest of the point). A second set of tables holds the same
+// fractions bit-reversed (xor commutes with reversal), which is what the Owen scramble takes.
+struct SobolSecondDimensionTables {
+  std::uint32_t byByte[4][256];
+  std::uint32_t reversedByByte[4][256];
+  SobolSecondDimensionTables() {
+    std::uint32_t directions[32];
+    std::uint32_t v = 0x80000000u;
+    for (int bit = 0; bit < 32; ++bit, v ^= v >> 1) directions[bit] = v;
+    for (int byte = 0; byte < 4; ++byte)
+      for (std::uint32_t value = 0; value < 256; ++value) {
+        std::uint32_t result = 0;
+        for (int bit = 0; bit < 8; ++bit)
+          if (value & (1u << bit)) result ^= directions[8 * byte + bit];
+        byByte[byte][value] = result;
+        reversedByByte[byte][value] = reverseBits(result);
+      }
   }
-  return result;
+  static std::uint32_t lookup(const std::uint32_t (&table)[4][256], std::uint32_t index) {
+    return table[0][index & 0xffu] ^ table[1][(index >> 8) & 0xffu] ^ table[2][(index >> 16) & 0xffu] ^
+           table[3][index >> 24];
+  }
+};
+
+const SobolSecondDimensionTables& sobolTables() {
+  static const SobolSecondDimensionTables tables;
+  return tables;
+}
+
+std::uint32_t sobolSecondDimensionBits(std::uint32_t index) {
+  return SobolSecondDimensionTables::lookup(sobolTables().byByte, index);
 }
 
 }  // namespace
@@ -69,8 +96,21 @@ glm::vec2 sobol02(std::uint32_t index) {
 }
 
 glm::vec2 owenScrambledSobol02(std::uint32_t index, std::uint32_t seed) {
-  return {unitFloatFromBits(owenScramble(reverseBits(index), dimensionSeed(seed, 0))),
-          unitFloatFromBits(owenScramble(sobolSecondDimensionBits(index), dimensionSeed(seed, 1)))};
+  return owenScrambledSobol02(index, sobol02Scramble(seed));
+}
+
+Sobol02Scramble sobol02Scramble(std::uint32_t seed) {
+  return {{dimensionSeed(seed, 0), dimensionSeed(seed, 1)}};
+}
+
+// owenScramble(bits, s) is reverseBits(laineKarrasPermutation(reverseBits(bits), s)); the first
+// coordinate's bits are reverseBits(index) and the second's reversal comes from its own table, so
+// the inner reversals cancel.
+glm::vec2 owenScrambledSobol02(std::uint32_t index, const Sobol02Scramble& scramble) {
+  const std::uint32_t reversedSecond =
+      SobolSecondDimensionTables::lookup(sobolTables().reversedByByte, index);
+  return {unitFloatFromBits(reverseBits(laineKarrasPermutation(index, scramble.dimensionSeeds[0]))),
+          unitFloatFromBits(reverseBits(laineKarrasPermutation(reversedSecond, scramble.dimensionSeeds[1])))};
 }
 
 glm::vec2 hammersley(std::uint32_t index, std::uint32_t count) {

@@ -39,6 +39,14 @@ float owenScrambledRadicalInverseBase2(std::uint32_t index, std::uint32_t seed);
 glm::vec2 sobol02(std::uint32_t index);
 // The same point with both coordinates Owen-scrambled by independent hashes of (seed, dimension).
 glm::vec2 owenScrambledSobol02(std::uint32_t index, std::uint32_t seed);
+// The two per-dimension scrambling seeds owenScrambledSobol02 hashes out of `seed`, for callers
+// that draw many points with one seed: owenScrambledSobol02(i, sobol02Scramble(seed)) ==
+// owenScrambledSobol02(i, seed), without hashing the seed again for every point.
+struct Sobol02Scramble {
+  std::uint32_t dimensionSeeds[2] = {0, 0};
+};
+Sobol02Scramble sobol02Scramble(std::uint32_t seed);
+glm::vec2 owenScrambledSobol02(std::uint32_t index, const Sobol02Scramble& scramble);
 
 // Point `index` of the Hammersley set of `count` points: (index / count, radical inverse).
 glm::vec2 hammersley(std::uint32_t index, std::uint32_t count);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -63,6 +64,35 @@ TEST(PiecewiseConstant1D, NeverSamplesZeroCellsAndInvertRoundTrips) {
     ASSERT_GT(s.pdf, 0.0f);
     ASSERT_FLOAT_EQ(s.pdf, d.pdf(s.x));
     ASSERT_NEAR(d.invert(s.x), u, 1e-5f);
+  }
+}
+
+// sample() searches only near its guide entry; the cell it finds must be the one a binary search
+// of the whole CDF finds: the last cell whose CDF start is <= u. Peaked functions (a sun among dim
+// texels: many cells share a guide entry), runs of zeros and random ones; u at and just around
+// the CDF values themselves.
+TEST(PiecewiseConstant1D, GuidedSearchFindsTheCellOfAFullSearch) {
+  PCG32 rng(17, 3);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 1 + static_cast<int>(rng.uniformFloat() * 600.0f);
+    std::vector<float> f(static_cast<std::size_t>(n));
+    for (float& v : f) {
+      const float r = rng.uniformFloat();
+      v = trial % 3 == 0 ? (r < 0.01f ? 1e5f : 0.01f * r) : trial % 3 == 1 ? (r < 0.5f ? 0.0f : r) : r;
+    }
+    const PiecewiseConstant1D d(f);
+    const std::span<const float> cdf = d.cdf();
+    ASSERT_EQ(cdf.size(), static_cast<std::size_t>(n) + 1);
+    std::vector<float> us;
+    for (int i = 0; i < 2000; ++i) us.push_back(rng.uniformFloat());
+    for (const float c : cdf)
+      for (const float u : {c, std::nextafter(c, 0.0f), std::nextafter(c, 1.0f)})
+        if (u >= 0.0f && u < 1.0f) us.push_back(u);
+    for (const float u : us) {
+      const int full = static_cast<int>(std::upper_bound(cdf.begin(), cdf.end(), u) - cdf.begin()) - 1;
+      ASSERT_EQ(d.sample(u).offset, std::clamp(full, 0, n - 1))
+          << "trial " << trial << ", n " << n << ", u " << u;
+    }
   }
 }
 

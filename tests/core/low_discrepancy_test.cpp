@@ -5,6 +5,7 @@
 #include <functional>
 #include <vector>
 
+#include "engine/core/rng.h"
 #include "support/chi2.h"
 
 namespace iblkit {
@@ -60,12 +61,44 @@ TEST(Sobol02, FirstPoints) {
   for (std::uint32_t i = 0; i < std::size(expected); ++i) EXPECT_EQ(sobol02(i), expected[i]) << "index " << i;
 }
 
+// The second dimension of full 32-bit indices (the reference tracer's shuffled indices) is the
+// xor of the direction numbers v_1 = 0.1b, v_(k+1) = v_k xor (v_k >> 1) its bits select, taken
+// here bit by bit.
+TEST(Sobol02, SecondDimensionOfLargeIndicesFollowsTheRecurrence) {
+  PCG32 rng(3, 5);
+  for (int i = 0; i < 10000; ++i) {
+    const std::uint32_t index = i < 32 ? (1u << i) | 1u : rng.nextUInt32();
+    std::uint32_t bits = 0, v = 0x80000000u;
+    for (std::uint32_t rest = index; rest != 0; rest >>= 1, v ^= v >> 1)
+      if (rest & 1u) bits ^= v;
+    ASSERT_EQ(sobol02(index).y, unitFloatFromBits(bits)) << "index " << index;
+  }
+}
+
 TEST(Sobol02, EveryAlignedBlockIsANet) {
   for (int m = 1; m <= 10; ++m) {
     for (std::uint32_t block = 0; block < 3; ++block) {
       EXPECT_TRUE(isZeroMTwoNet(points(block << m, m, [](std::uint32_t i) { return sobol02(i); }), m))
           << "m = " << m << ", block " << block;
     }
+  }
+}
+
+// The fast form (reversals cancelled, reversed table) is the defining one: the first coordinate is
+// the scrambled radical inverse, the second owenScramble of the Sobol bits with the second
+// dimension seed; and the seed-hashing overload gives the same points.
+TEST(Sobol02, ScrambledPointsFollowTheirDefinition) {
+  PCG32 rng(11, 2);
+  for (int i = 0; i < 10000; ++i) {
+    const std::uint32_t index = rng.nextUInt32() >> (i % 32), seed = rng.nextUInt32();
+    const Sobol02Scramble scramble = sobol02Scramble(seed);
+    const glm::vec2 p = owenScrambledSobol02(index, scramble);
+    ASSERT_EQ(p, owenScrambledSobol02(index, seed));
+    ASSERT_EQ(p.x, owenScrambledRadicalInverseBase2(index, seed)) << index;
+    std::uint32_t bits = 0, v = 0x80000000u;
+    for (std::uint32_t rest = index; rest != 0; rest >>= 1, v ^= v >> 1)
+      if (rest & 1u) bits ^= v;
+    ASSERT_EQ(p.y, unitFloatFromBits(owenScramble(bits, scramble.dimensionSeeds[1]))) << index;
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "engine/core/environment_map_file.h"
 #include "engine/core/latlong.h"
+#include "engine/core/sampling.h"
 #include "support/chi2.h"
 #include "support/test_paths.h"
 
@@ -129,6 +130,24 @@ TEST(EnvironmentSampler, SampledPdfMatchesPdfAndEstimatorIsUnbiased) {
   const glm::dvec3 truth =
       integrateOverSphere<glm::dvec3>([&](const glm::vec3& d) { return map.radiance(d); }, 512);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(estimate[c], truth[c], 0.005 * truth[c]) << "channel " << c;
+}
+
+// lookup(w) is map.radiance(w) and pdf(w) from one lat-long lookup; a sample's radiance, looked
+// up at its own (u, v), is the map's radiance in its direction (to a float rounding of u, v).
+TEST(EnvironmentSampler, LookupAndSampleRadianceAgreeWithTheMap) {
+  const EnvironmentMap map = spotMap();  // rotated and scaled
+  const EnvironmentSampler sampler(map);
+  PCG32 rng(8, 1);
+  for (int i = 0; i < 20000; ++i) {
+    const glm::vec3 w = sampleUniformSphere(rng.uniform2D());
+    const EnvironmentSampler::Lookup seen = sampler.lookup(w);
+    ASSERT_EQ(seen.pdf, sampler.pdf(w));
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(seen.radiance[c], map.radiance(w)[c], 1e-4f * (1.0f + map.radiance(w)[c]));
+    const EnvironmentSampler::Sample s = sampler.sample(rng.uniform2D());
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(s.radiance[c], map.radiance(s.direction)[c], 1e-3f * (1.0f + map.radiance(s.direction)[c]));
+  }
 }
 
 TEST(EnvironmentSampler, PdfIntegratesToOne) {

@@ -87,6 +87,20 @@ TEST_F(IblkitTrace, BrokenAndBlackEnvironmentsRenderWithoutNaN) {
   }
 }
 
+// --filter gaussian reaches the renderer: the object's mask gets softer edges than with box.
+TEST_F(IblkitTrace, GaussianFilterSoftensEdges) {
+  std::string output;
+  ASSERT_EQ(trace("scene.json -o box.exr --mask box_mask.exr --spp 16 --filter box", &output), 0) << output;
+  ASSERT_EQ(trace("scene.json -o gauss.exr --mask gauss_mask.exr --spp 16 --filter gaussian", &output), 0)
+      << output;
+  const auto partial = [](const Image& mask) {
+    int count = 0;
+    for (const glm::vec4& m : mask.pixels()) count += m.r > 0.0f && m.r < 1.0f;
+    return count;
+  };
+  EXPECT_GT(partial(readExr(dir_ / "gauss_mask.exr")), partial(readExr(dir_ / "box_mask.exr")));
+}
+
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
   const std::pair<std::string, std::string> cases[] = {
       {"scene.json -o out.exr --spp 0", "iblkit-trace: render: samples per pixel 0 is outside 1..16777216\n"},
@@ -97,6 +111,8 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
        "iblkit-trace: --integrator: unknown integrator 'bidir' (path, direct or ao)\n"},
       {"scene.json -o out.exr --env missing.exr",
        "iblkit-trace: missing.exr: cannot open: No such file or directory\n"},
+      {"scene.json -o out.exr --filter tent",
+       "iblkit-trace: --filter: unknown filter 'tent' (box or gaussian)\n"},
       {"scene.json -o nowhere/out.exr", "iblkit-trace: nowhere/out.exr: folder does not exist\n"},
       {"scene.json -o out.exr --bent-normal b.exr", "iblkit-trace: --bent-normal: needs --integrator ao\n"},
       {"scene.json", "iblkit-trace: --output is required\n"},
