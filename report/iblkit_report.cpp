@@ -51,6 +51,9 @@ int main(int argc, char** argv) {
   app.add_option("--negligible", settings.negligibleRatio,
                  "converged when the reference's relMSE is at most this fraction of the best mode's")
       ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--negligible-relmse", settings.negligibleRelMse,
+                 "also converged when the reference's relMSE is at most this")
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--bench", settings.benchFrames, "frames for each mode's median frame time (0: none)")
       ->check(CLI::Range(0, 1000));
   app.add_option("--samples", settings.engineSamples,

@@ -214,7 +214,8 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
       }
       best = std::min(best, modeResult.scores.relMse);
     }
-    result.referenceConverged = result.referenceRelMse <= settings.negligibleRatio * best;
+    result.referenceConverged =
+        result.referenceRelMse <= std::max(settings.negligibleRatio * best, settings.negligibleRelMse);
     if (result.referenceConverged || count >= settings.maxPasses) break;
   }
 

@@ -24,6 +24,10 @@ struct ReportSettings {
   // The reference is converged when its estimated relMSE is at most this fraction of the best
   // mode's relMSE, so its noise adds at most that fraction to every mode's measured error.
   double negligibleRatio = 0.1;
+  // ...or at most this relMSE (1% RMS relative noise), whichever is larger: where a mode is
+  // nearly exact (the mirror sphere's `mirror`), 10% of its error would ask for thousands of
+  // samples to resolve differences no score can see.
+  double negligibleRelMse = 1e-4;
   int benchFrames = 5;  // iblkit-view --bench frames for the frame time; 0: not measured
   // Engine frames shade this many samples per pixel (iblkit-view --samples N --sample-shading), so
   // their pixels average the shading over the pixel as the reference's pixel filter does; 1: one.

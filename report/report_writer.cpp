@@ -75,7 +75,8 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                           {"engineSamples", summary.settings.engineSamples},
                           {"engineSupersample", summary.settings.engineSupersample},
                           {"maxPasses", summary.settings.maxPasses},
-                          {"negligibleRatio", summary.settings.negligibleRatio}};
+                          {"negligibleRatio", summary.settings.negligibleRatio},
+                          {"negligibleRelMse", summary.settings.negligibleRelMse}};
   document["seconds"] = summary.totalSeconds;
   document["stages"] = {{"cached", summary.cachedStages}, {"run", summary.runStages}};
   for (const Claim& claim : summary.claims)
@@ -202,7 +203,8 @@ over the pixels that see geometry (the sky is trivially right): HDR-FLIP with on
 per reference, relative MSE, the luminance-weighted mean relative error and SSIM
 (<code>docs/scoring.md</code>, <code>docs/report.md</code>). The reference is traced in passes until its own
 relMSE, estimated from two independent halves, is at most )"
-       << summary.settings.negligibleRatio * 100.0 << R"(% of the best mode's.</p>
+       << summary.settings.negligibleRatio * 100.0 << R"(% of the best mode's, or at most )"
+       << summary.settings.negligibleRelMse << R"( (1% RMS noise), whichever is larger.</p>
 )";
   std::error_code error;
   if (fs::exists(file.parent_path() / "inputs.html", error))
