@@ -60,7 +60,6 @@ class Viewer {
     settings_.exposure = options.exposure;
     settings_.envRotationDegrees = options.envRotation;
     settings_.drawSky = !options.noSky;
-    parseComparisonView(options.compare);  // a bad name fails before the window opens
     // The reference decides the size (same camera, same pixels) unless --width/--height do.
     int width = bake_.scene.width, height = bake_.scene.height;
     if (!options.reference.empty()) {
@@ -71,7 +70,6 @@ class Viewer {
     }
     if (options.width > 0) width = options.width;
     if (options.height > 0) height = options.height;
-    if (!options.screenshot.empty()) screenshotFiles(options.screenshot);  // a bad name fails now
 
     window_.emplace(WindowContext::open(width, height, "iblkit-view: " + options.input.filename().string(), false));
     enableGlDebugOutput(GlDebugMode::Strict);
@@ -274,6 +272,11 @@ class Viewer {
 
 }  // namespace
 
-int runViewer(const ViewerOptions& options) { return Viewer(options).run(); }
+int runViewer(const ViewerOptions& options) {
+  // Bad names fail before anything is loaded or opened.
+  parseComparisonView(options.compare);
+  if (!options.screenshot.empty()) screenshotFiles(options.screenshot);
+  return Viewer(options).run();
+}
 
 }  // namespace iblkit
