@@ -8,7 +8,7 @@
 // writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
 // Without --headless the window viewer runs (engine/view/viewer.h, docs/viewer.md):
 //
-//   iblkit-view OUTDIR|SCENE [--env-dir DIR] [--reference REF.exr] [--compare VIEW] [--frames N] [--screenshot FILE]
+//   iblkit-view OUTDIR|SCENE [--env ENV] [--env-dir DIR] [--reference REF.exr] [--compare VIEW] [--frames N] [--screenshot FILE]
 //               [--no-panel] [--width W] [--height H] [--mode M] [--exposure E] ...
 
 #include <CLI/CLI.hpp>
@@ -48,7 +48,7 @@ struct Options {
   int aoRays = 64;
   bool noSky = false;
   // The window viewer's.
-  std::filesystem::path envDir, reference, screenshot;
+  std::filesystem::path envDir, environment, reference, screenshot;
   std::string compare = "split";
   int frames = 0;
   bool noPanel = false;
@@ -206,6 +206,7 @@ int runWindow(const Options& options) {
   viewer.noSky = options.noSky;
   viewer.aoRays = options.aoRays;
   viewer.envDir = options.envDir.empty() ? defaultEnvironmentFolder() : options.envDir;
+  viewer.environment = options.environment;
   viewer.reference = options.reference;
   viewer.compare = options.compare;
   viewer.frames = options.frames;
@@ -216,9 +217,9 @@ int runWindow(const Options& options) {
 
 void rejectWindowFlagsWhenHeadless(const Options& options) {
   if (!options.headless) return;
-  if (options.frames > 0 || !options.screenshot.empty() || !options.reference.empty() || !options.envDir.empty() ||
+  if (options.frames > 0 || !options.screenshot.empty() || !options.environment.empty() || !options.reference.empty() || !options.envDir.empty() ||
       options.noPanel)
-    throw Error("--frames, --screenshot, --reference, --env-dir and --no-panel are for the window, not --headless");
+    throw Error("--frames, --screenshot, --env, --env-dir, --reference and --no-panel are for the window, not --headless");
 }
 
 }  // namespace
@@ -255,6 +256,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--env-dir", options.envDir,
                  "window: folder of environment maps to switch between (default: assets/hdri)");
+  app.add_option("--env", options.environment,
+                 "window: switch to this environment map at start (prefiltered while the bake's shows)");
   app.add_option("--reference", options.reference,
                  "window: path-traced reference (.exr) shown beside the live frame, or as a difference");
   app.add_option("--compare", options.compare, "window: the reference view to start with: live, split, difference")

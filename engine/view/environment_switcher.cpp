@@ -57,6 +57,15 @@ void EnvironmentSwitcher::request(int index) {
     start(index);
 }
 
+void EnvironmentSwitcher::requestFile(const fs::path& file) {
+  auto found = std::find_if(files_.begin(), files_.end(), [&](const fs::path& listed) {
+    std::error_code error;
+    return fs::equivalent(listed, file, error);
+  });
+  if (found == files_.end()) found = files_.insert(files_.end(), file);
+  request(int(found - files_.begin()));
+}
+
 void EnvironmentSwitcher::step(int direction) {
   if (files_.empty()) return;
   const int from = queued_ >= 0 ? queued_ : pending_ >= 0 ? pending_ : current_;

@@ -39,6 +39,8 @@ class EnvironmentSwitcher {
   // Starts prefiltering files()[index] on the worker thread. While a worker runs, the latest
   // request waits and starts when it finishes. Out-of-range indices are ignored.
   void request(int index);
+  // Requests `file` (--env), adding it to files() when it is not in the folder.
+  void requestFile(const std::filesystem::path& file);
   // Requests the next (+1) or previous (-1) file after the current or pending one, wrapping around.
   void step(int direction);
   // Non-blocking: the stages of a finished request (once), to upload with Renderer::setEnvironment.

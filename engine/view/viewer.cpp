@@ -81,6 +81,7 @@ class Viewer {
       comparison_->view = parseComparisonView(options.compare);
     }
     environments_ = std::make_unique<EnvironmentSwitcher>(options.envDir, bake_.env.rotationDegrees, bake_.env.intensity);
+    if (!options.environment.empty()) environments_->requestFile(options.environment);
 
     GLFWwindow* window = window_->window();
     glfwSetWindowUserPointer(window, &input_);
@@ -120,6 +121,8 @@ class Viewer {
       if (recent_.size() > 60) recent_.erase(recent_.begin());
     }
     if (!options_.screenshot.empty()) {
+      // A switch still being prefiltered is waited for, so that a scripted run sees it.
+      if (std::optional<EnvironmentStages> stages = environments_->waitForResult()) renderer_->setEnvironment(*stages);
       drawFrame(window_->framebufferWidth(), window_->framebufferHeight(), screenshotFiles(options_.screenshot), false);
       checkGlErrors("screenshot");
     }
@@ -276,6 +279,7 @@ int runViewer(const ViewerOptions& options) {
   // Bad names fail before anything is loaded or opened.
   parseComparisonView(options.compare);
   if (!options.screenshot.empty()) screenshotFiles(options.screenshot);
+  if (!options.environment.empty() && !fs::is_regular_file(options.environment)) fail(options.environment, "no such file");
   return Viewer(options).run();
 }
 

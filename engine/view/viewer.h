@@ -17,10 +17,12 @@ struct ViewerOptions {
   bool noSky = false;
   int aoRays = 64;                   // in-memory bakes
   std::filesystem::path envDir = "assets/hdri";
+  std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)
   std::filesystem::path reference;   // --reference REF.exr
   std::string compare = "split";     // the reference view to start with: live, split, difference
   int frames = 0;                    // > 0: quit after this many frames
-  std::filesystem::path screenshot;  // written from the last frame, at exit
+  std::filesystem::path screenshot;  // written from the last frame, at exit, after a pending
+                                     // environment switch has been uploaded
   bool panel = true;                 // false: start with the panel hidden (Tab shows it)
 };
 

@@ -167,6 +167,31 @@ TEST_F(IblkitViewWindow, DifferenceViewIsBlackAgainstItselfAndBrightAgainstAnoth
   EXPECT_LT(blackFraction(magenta, "other.png"), 0.05);
 }
 
+// --env switches the environment on the worker thread; a scripted run waits for it before the
+// screenshot: a constant red map makes the sky and the mirror red.
+TEST_F(IblkitViewWindow, SwitchesToAnotherEnvironment) {
+  const fs::path red = dir_ / "red.exr";
+  writeExr(red, Image(64, 32, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f)), {.pixelType = PixelType::Float});
+  const fs::path shot = dir_ / "red_shot.exr";
+  const ProgramRun r = run(inWindow(windowArguments("--env " + quoted(red) + " --frames 1 --screenshot " + quoted(shot))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image radiance = readExr(shot);
+  int sky = 0, mirror = 0;
+  for (const glm::vec4& p : radiance.pixels()) {
+    EXPECT_NEAR(p.g, 0.0f, 1e-3f);
+    EXPECT_NEAR(p.b, 0.0f, 1e-3f);
+    if (p.a == 0.0f) sky += std::abs(p.r - 1.0f) < 1e-3f;
+    if (p.a == 1.0f) mirror += p.r > 0.5f;
+  }
+  EXPECT_GT(sky, kWidth * kHeight / 2);
+  EXPECT_GT(mirror, 2000);
+  // A missing map: named, exit 1.
+  const ProgramRun missing = run(program("iblkit-view") + " " + windowArguments("--env " + quoted(dir_ / "no.exr")));
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_TRUE(missing.output.ends_with("iblkit-view: " + (dir_ / "no.exr").string() + ": no such file\n"))
+      << missing.output;
+}
+
 TEST_F(IblkitViewWindow, NoDisplayIsOneLineAndExitStatus1) {
   const fs::path shot = dir_ / "never.png";
   const ProgramRun r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + program("iblkit-view") + " " +
