@@ -30,7 +30,8 @@ EnvironmentSwitcher::EnvironmentSwitcher(const fs::path& folder, float rotationD
     for (const fs::directory_entry& entry : fs::directory_iterator(folder_, error))
       if (entry.is_regular_file() && isEnvironmentFile(entry.path())) files_.push_back(entry.path());
   std::sort(files_.begin(), files_.end());
-  status_ = files_.empty() ? folder_.string() + ": no .exr or .hdr environment maps" : "the bake's environment";
+  status_ =
+      files_.empty() ? folder_.string() + ": no .exr or .hdr environment maps" : "the bake's environment";
 }
 
 EnvironmentSwitcher::~EnvironmentSwitcher() {

@@ -1,9 +1,9 @@
 #include "engine/view/panel.h"
 
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <string>
@@ -95,11 +95,12 @@ void comparisonSection(ReferenceComparison& comparison, bool cameraMoved) {
               comparison.height());
   int view = int(comparison.view);
   for (ComparisonView v : {ComparisonView::Live, ComparisonView::Split, ComparisonView::Difference}) {
-    ImGui::SameLine();
+    if (v != ComparisonView::Live) ImGui::SameLine();
     ImGui::RadioButton(comparisonViewName(v), &view, int(v));
   }
   comparison.view = ComparisonView(view);
-  if (comparison.view == ComparisonView::Split) ImGui::SliderFloat("divider", &comparison.divider, 0.0f, 1.0f);
+  if (comparison.view == ComparisonView::Split)
+    ImGui::SliderFloat("divider", &comparison.divider, 0.0f, 1.0f);
   if (comparison.view == ComparisonView::Difference) {
     ImGui::SliderFloat("red at", &comparison.heatmapScale, 0.01f, 2.0f, "%.2f relative");
     ImGui::TextUnformatted("|live - ref| / (ref + 0.01): black 0, blue, green, yellow, red");
@@ -118,22 +119,27 @@ PanelActions Panel::build(PanelContext& context) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.8f);
     ImGui::Begin("iblkit-view", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushItemWidth(ImGui::GetFontSize() * 12.0f);
     ImGui::Text("%.2f ms/frame (%.1f fps), %dx%d", context.frameMs,
                 context.frameMs > 0.0 ? 1000.0 / context.frameMs : 0.0, context.width, context.height);
-    ImGui::TextUnformatted(context.contextDescription.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("(GL)");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", context.contextDescription.c_str());
     FrameSettings& settings = context.settings;
     int mode = 0;
     for (int i = 0; i < int(std::size(kShadingModes)); ++i)
       if (kShadingModes[i] == settings.mode) mode = i;
     if (ImGui::BeginCombo("mode", std::string(shadingModeName(settings.mode)).c_str())) {
       for (int i = 0; i < int(std::size(kShadingModes)); ++i)
-        if (ImGui::Selectable(std::string(shadingModeName(kShadingModes[i])).c_str(), i == mode)) settings.mode = kShadingModes[i];
+        if (ImGui::Selectable(std::string(shadingModeName(kShadingModes[i])).c_str(), i == mode))
+          settings.mode = kShadingModes[i];
       ImGui::EndCombo();
     }
     ImGui::SliderFloat("exposure", &settings.exposure, -10.0f, 10.0f, "%.1f stops");
     ImGui::SliderFloat("env rotation", &settings.envRotationDegrees, -180.0f, 180.0f, "%.0f deg");
     ImGui::Checkbox("sky", &settings.drawSky);
-    if (ImGui::CollapsingHeader("environment", ImGuiTreeNodeFlags_DefaultOpen)) environmentSection(context.environments);
+    if (ImGui::CollapsingHeader("environment", ImGuiTreeNodeFlags_DefaultOpen))
+      environmentSection(context.environments);
     if (ImGui::CollapsingHeader("material")) materialSection(context.renderer, context.originalMaterials);
     if (context.comparison && ImGui::CollapsingHeader("reference", ImGuiTreeNodeFlags_DefaultOpen))
       comparisonSection(*context.comparison, context.cameraMoved);
@@ -143,6 +149,7 @@ PanelActions Panel::build(PanelContext& context) {
     ImGui::SameLine();
     if (ImGui::Button("help (H)")) showHelp = !showHelp;
     if (!context.lastScreenshot.empty()) ImGui::TextWrapped("saved %s", context.lastScreenshot.c_str());
+    ImGui::PopItemWidth();
     ImGui::End();
   }
   if (showHelp) {

@@ -10,9 +10,12 @@ namespace iblkit {
 
 const char* comparisonViewName(ComparisonView view) {
   switch (view) {
-    case ComparisonView::Live: return "live";
-    case ComparisonView::Split: return "split";
-    case ComparisonView::Difference: return "difference";
+    case ComparisonView::Live:
+      return "live";
+    case ComparisonView::Split:
+      return "split";
+    case ComparisonView::Difference:
+      return "difference";
   }
   return "?";
 }

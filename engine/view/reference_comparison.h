@@ -34,9 +34,9 @@ class ReferenceComparison {
   const std::filesystem::path& file() const { return file_; }
 
   ComparisonView view = ComparisonView::Split;
-  float divider = 0.5f;          // split view: the divider's position, a fraction of the width
-  float heatmapScale = 0.5f;     // difference view: the relative difference shown as red
-  void cycleView();              // Live -> Split -> Difference -> Live
+  float divider = 0.5f;       // split view: the divider's position, a fraction of the width
+  float heatmapScale = 0.5f;  // difference view: the relative difference shown as red
+  void cycleView();           // Live -> Split -> Difference -> Live
   // Whether window x coordinate `x` (pixels from the left) is close enough to grab the divider.
   bool nearDivider(double x, int width) const;
 

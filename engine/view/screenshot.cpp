@@ -53,9 +53,10 @@ Image readDisplayedPixels(int x, int y, int width, int height) {
   for (int row = 0; row < height; ++row)
     for (int column = 0; column < width; ++column) {
       // GL's row 0 is the bottom one.
-      const unsigned char* p = &bytes[(std::size_t(height - 1 - row) * std::size_t(width) + std::size_t(column)) * 4];
-      image.at(column, row) = glm::vec4(srgbDecode(p[0] / 255.0f), srgbDecode(p[1] / 255.0f),
-                                        srgbDecode(p[2] / 255.0f), 1.0f);
+      const unsigned char* p =
+          &bytes[(std::size_t(height - 1 - row) * std::size_t(width) + std::size_t(column)) * 4];
+      image.at(column, row) =
+          glm::vec4(srgbDecode(p[0] / 255.0f), srgbDecode(p[1] / 255.0f), srgbDecode(p[2] / 255.0f), 1.0f);
     }
   return image;
 }

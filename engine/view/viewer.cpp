@@ -3,11 +3,10 @@
 #include <GLFW/glfw3.h>
 #include <epoxy/gl.h>
 
-#include <glm/gtc/constants.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -48,7 +47,9 @@ struct PendingInput {
   double scroll = 0.0;
 };
 
-PendingInput& pendingInput(GLFWwindow* window) { return *static_cast<PendingInput*>(glfwGetWindowUserPointer(window)); }
+PendingInput& pendingInput(GLFWwindow* window) {
+  return *static_cast<PendingInput*>(glfwGetWindowUserPointer(window));
+}
 
 enum class Drag { None, Orbit, Pan, Divider };
 
@@ -71,7 +72,8 @@ class Viewer {
     if (options.width > 0) width = options.width;
     if (options.height > 0) height = options.height;
 
-    window_.emplace(WindowContext::open(width, height, "iblkit-view: " + options.input.filename().string(), false));
+    window_.emplace(
+        WindowContext::open(width, height, "iblkit-view: " + options.input.filename().string(), false));
     enableGlDebugOutput(GlDebugMode::Strict);
     renderer_ = std::make_unique<Renderer>(bake_);
     originalMaterials_ = renderer_->materials();
@@ -80,7 +82,8 @@ class Viewer {
       comparison_ = std::make_unique<ReferenceComparison>(options.reference);
       comparison_->view = parseComparisonView(options.compare);
     }
-    environments_ = std::make_unique<EnvironmentSwitcher>(options.envDir, bake_.env.rotationDegrees, bake_.env.intensity);
+    environments_ =
+        std::make_unique<EnvironmentSwitcher>(options.envDir, bake_.env.rotationDegrees, bake_.env.intensity);
     if (!options.environment.empty()) environments_->requestFile(options.environment);
 
     GLFWwindow* window = window_->window();
@@ -99,7 +102,8 @@ class Viewer {
   int run() {
     std::vector<double> intervals;
     Clock::time_point previous = Clock::now();
-    for (int frame = 0; !window_->shouldClose() && (options_.frames == 0 || frame < options_.frames); ++frame) {
+    for (int frame = 0; !window_->shouldClose() && (options_.frames == 0 || frame < options_.frames);
+         ++frame) {
       glfwPollEvents();
       handleInput();
       if (std::optional<EnvironmentStages> stages = environments_->poll()) renderer_->setEnvironment(*stages);
@@ -122,8 +126,10 @@ class Viewer {
     }
     if (!options_.screenshot.empty()) {
       // A switch still being prefiltered is waited for, so that a scripted run sees it.
-      if (std::optional<EnvironmentStages> stages = environments_->waitForResult()) renderer_->setEnvironment(*stages);
-      drawFrame(window_->framebufferWidth(), window_->framebufferHeight(), screenshotFiles(options_.screenshot), false);
+      if (std::optional<EnvironmentStages> stages = environments_->waitForResult())
+        renderer_->setEnvironment(*stages);
+      drawFrame(window_->framebufferWidth(), window_->framebufferHeight(),
+                screenshotFiles(options_.screenshot), false);
       checkGlErrors("screenshot");
     }
     if (options_.frames > 0) {
@@ -160,8 +166,9 @@ class Viewer {
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
     if (!withPanel) return;
-    PanelContext context{settings_, *renderer_, originalMaterials_, *environments_, comparison_.get(),
-                         median(recent_), width, height, window_->description(), cameraMoved_, lastScreenshot_};
+    PanelContext context{
+        settings_, *renderer_, originalMaterials_,     *environments_, comparison_.get(), median(recent_),
+        width,     height,     window_->description(), cameraMoved_,   lastScreenshot_};
     const PanelActions actions = panel_->build(context);
     panel_->render();
     if (actions.resetCamera) resetCamera();
@@ -177,24 +184,46 @@ class Viewer {
     if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + int(std::size(kShadingModes)))
       settings_.mode = kShadingModes[key - GLFW_KEY_1];
     switch (key) {
-      case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window_->window(), GLFW_TRUE); break;
-      case GLFW_KEY_LEFT_BRACKET: settings_.exposure -= 0.5f; break;
-      case GLFW_KEY_RIGHT_BRACKET: settings_.exposure += 0.5f; break;
-      case GLFW_KEY_R: resetCamera(); break;
-      case GLFW_KEY_P: screenshotRequested_ = true; break;
-      case GLFW_KEY_H: panel_->showHelp = !panel_->showHelp; break;
-      case GLFW_KEY_TAB: panel_->visible = !panel_->visible; break;
+      case GLFW_KEY_ESCAPE:
+        glfwSetWindowShouldClose(window_->window(), GLFW_TRUE);
+        break;
+      case GLFW_KEY_LEFT_BRACKET:
+        settings_.exposure -= 0.5f;
+        break;
+      case GLFW_KEY_RIGHT_BRACKET:
+        settings_.exposure += 0.5f;
+        break;
+      case GLFW_KEY_R:
+        resetCamera();
+        break;
+      case GLFW_KEY_P:
+        screenshotRequested_ = true;
+        break;
+      case GLFW_KEY_H:
+        panel_->showHelp = !panel_->showHelp;
+        break;
+      case GLFW_KEY_TAB:
+        panel_->visible = !panel_->visible;
+        break;
       case GLFW_KEY_C:
         if (comparison_) comparison_->cycleView();
         break;
-      case GLFW_KEY_COMMA: environments_->step(-1); break;
-      case GLFW_KEY_PERIOD: environments_->step(+1); break;
+      case GLFW_KEY_COMMA:
+        environments_->step(-1);
+        break;
+      case GLFW_KEY_PERIOD:
+        environments_->step(+1);
+        break;
       case GLFW_KEY_EQUAL:
       case GLFW_KEY_KP_ADD:
-      case GLFW_KEY_PAGE_UP: zoom(0.9f); break;
+      case GLFW_KEY_PAGE_UP:
+        zoom(0.9f);
+        break;
       case GLFW_KEY_MINUS:
       case GLFW_KEY_KP_SUBTRACT:
-      case GLFW_KEY_PAGE_DOWN: zoom(1.0f / 0.9f); break;
+      case GLFW_KEY_PAGE_DOWN:
+        zoom(1.0f / 0.9f);
+        break;
       case GLFW_KEY_LEFT:
       case GLFW_KEY_RIGHT:
       case GLFW_KEY_UP:
@@ -208,7 +237,8 @@ class Viewer {
         cameraMoved_ = true;
         break;
       }
-      default: break;
+      default:
+        break;
     }
   }
 
@@ -234,23 +264,29 @@ class Viewer {
     glfwGetWindowSize(window, &windowWidth, &windowHeight);
     if (!left && !other) drag_ = Drag::None;
     if (drag_ == Drag::None && !panel_->wantsMouse()) {
-      if (left) drag_ = comparison_ && comparison_->nearDivider(x, windowWidth) ? Drag::Divider : Drag::Orbit;
-      else if (other) drag_ = Drag::Pan;
+      if (left)
+        drag_ = comparison_ && comparison_->nearDivider(x, windowWidth) ? Drag::Divider : Drag::Orbit;
+      else if (other)
+        drag_ = Drag::Pan;
       if (input.scroll != 0.0) zoom(std::pow(0.9f, float(input.scroll)));
     }
     if (dx == 0.0 && dy == 0.0) return;
     switch (drag_) {
       case Drag::Orbit:
         // A drag across the window's width turns the view half way round.
-        camera_->orbit(-float(dx) * glm::pi<float>() / float(windowWidth), float(dy) * glm::pi<float>() / float(windowWidth));
+        camera_->orbit(-float(dx) * glm::pi<float>() / float(windowWidth),
+                       float(dy) * glm::pi<float>() / float(windowWidth));
         cameraMoved_ = true;
         break;
       case Drag::Pan:
         camera_->pan(-float(dx) / float(windowHeight), float(dy) / float(windowHeight));
         cameraMoved_ = true;
         break;
-      case Drag::Divider: comparison_->divider = std::clamp(float(x / windowWidth), 0.0f, 1.0f); break;
-      case Drag::None: break;
+      case Drag::Divider:
+        comparison_->divider = std::clamp(float(x / windowWidth), 0.0f, 1.0f);
+        break;
+      case Drag::None:
+        break;
     }
   }
 
@@ -279,7 +315,8 @@ int runViewer(const ViewerOptions& options) {
   // Bad names fail before anything is loaded or opened.
   parseComparisonView(options.compare);
   if (!options.screenshot.empty()) screenshotFiles(options.screenshot);
-  if (!options.environment.empty() && !fs::is_regular_file(options.environment)) fail(options.environment, "no such file");
+  if (!options.environment.empty() && !fs::is_regular_file(options.environment))
+    fail(options.environment, "no such file");
   return Viewer(options).run();
 }
 

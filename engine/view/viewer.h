@@ -8,22 +8,22 @@
 namespace iblkit {
 
 struct ViewerOptions {
-  std::filesystem::path input;       // bake folder, or a scene baked in memory
-  int width = 0, height = 0;         // window size; 0: the reference's, else the scene's
+  std::filesystem::path input;  // bake folder, or a scene baked in memory
+  int width = 0, height = 0;    // window size; 0: the reference's, else the scene's
   std::string mode = "full";
   float exposure = 0.0f;
   float envRotation = 0.0f;
-  int samples = 1;                   // MSAA
+  int samples = 1;  // MSAA
   bool noSky = false;
-  int aoRays = 64;                   // in-memory bakes
+  int aoRays = 64;  // in-memory bakes
   std::filesystem::path envDir = "assets/hdri";
   std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)
-  std::filesystem::path reference;   // --reference REF.exr
-  std::string compare = "split";     // the reference view to start with: live, split, difference
-  int frames = 0;                    // > 0: quit after this many frames
-  std::filesystem::path screenshot;  // written from the last frame, at exit, after a pending
-                                     // environment switch has been uploaded
-  bool panel = true;                 // false: start with the panel hidden (Tab shows it)
+  std::filesystem::path reference;    // --reference REF.exr
+  std::string compare = "split";      // the reference view to start with: live, split, difference
+  int frames = 0;                     // > 0: quit after this many frames
+  std::filesystem::path screenshot;   // written from the last frame, at exit, after a pending
+                                      // environment switch has been uploaded
+  bool panel = true;                  // false: start with the panel hidden (Tab shows it)
 };
 
 // Loads the bake (its errors first: no window opens for a bad bake), opens the window and runs the

@@ -20,12 +20,7 @@ namespace fs = std::filesystem;
 
 constexpr int kWidth = 160, kHeight = 120;
 
-std::string quoted(const fs::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += "'";
-  return text;
-}
+using test::shellQuoted;
 
 struct ProgramRun {
   int status = 0;
@@ -38,7 +33,7 @@ ProgramRun run(const std::string& command) {
   return result;
 }
 
-std::string program(const std::string& name) { return quoted(test::binDir() / name); }
+std::string program(const std::string& name) { return shellQuoted(test::binDir() / name); }
 
 // iblkit-view in a window on a fresh virtual display (-a: the first free display number; Debian's
 // xvfb-run tries the next one if another test took it meanwhile).
@@ -55,21 +50,22 @@ class IblkitViewWindow : public testing::Test {
         << "xvfb-run is missing: install xvfb and xauth (scripts/setup.sh)";
     dir_ = test::scratchDir();
     bake_ = dir_ / "bake";
-    const ProgramRun bake = run(program("iblkit-bake") + " " + quoted(scene) + " -o " + quoted(bake_) +
-                                " --ao-rays 4 --specular-samples 16 --lut-size 16");
+    const ProgramRun bake = run(program("iblkit-bake") + " " + shellQuoted(scene) + " -o " +
+                                shellQuoted(bake_) + " --ao-rays 4 --specular-samples 16 --lut-size 16");
     ASSERT_EQ(bake.status, 0) << bake.output;
   }
 
   // The window's common arguments: small, no environment folder to list.
   std::string windowArguments(const std::string& extra) const {
-    return quoted(bake_) + " --width " + std::to_string(kWidth) + " --height " + std::to_string(kHeight) +
-           " --env-dir " + quoted(dir_ / "no-maps") + " " + extra;
+    return shellQuoted(bake_) + " --width " + std::to_string(kWidth) + " --height " +
+           std::to_string(kHeight) + " --env-dir " + shellQuoted(dir_ / "no-maps") + " " + extra;
   }
 
   Image renderHeadless(const std::string& name) const {
     const fs::path out = dir_ / name;
-    const ProgramRun r = run(program("iblkit-view") + " " + quoted(bake_) + " --headless -o " + quoted(out) +
-                             " --width " + std::to_string(kWidth) + " --height " + std::to_string(kHeight));
+    const ProgramRun r =
+        run(program("iblkit-view") + " " + shellQuoted(bake_) + " --headless -o " + shellQuoted(out) +
+            " --width " + std::to_string(kWidth) + " --height " + std::to_string(kHeight));
     EXPECT_EQ(r.status, 0) << r.output;
     return readExr(out);
   }
@@ -83,7 +79,7 @@ float maxComponent(const glm::vec4& p) { return std::max({p.r, p.g, p.b}); }
 
 TEST_F(IblkitViewWindow, RendersFramesAndItsScreenshotIsTheHeadlessFrame) {
   const fs::path shot = dir_ / "shot.png";
-  const ProgramRun r = run(inWindow(windowArguments("--frames 3 --screenshot " + quoted(shot))));
+  const ProgramRun r = run(inWindow(windowArguments("--frames 3 --screenshot " + shellQuoted(shot))));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("3 frames, 160x120"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("median frame time"), std::string::npos) << r.output;
@@ -124,10 +120,11 @@ TEST_F(IblkitViewWindow, RendersFramesAndItsScreenshotIsTheHeadlessFrame) {
 
 TEST_F(IblkitViewWindow, ReferenceSplitViewShowsLiveLeftAndReferenceRight) {
   const fs::path reference = dir_ / "magenta.exr";
-  writeExr(reference, Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f)), {.pixelType = PixelType::Float});
+  writeExr(reference, Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f)),
+           {.pixelType = PixelType::Float});
   const fs::path shot = dir_ / "split";
-  const ProgramRun r =
-      run(inWindow(windowArguments("--reference " + quoted(reference) + " --frames 2 --screenshot " + quoted(shot))));
+  const ProgramRun r = run(inWindow(windowArguments("--reference " + shellQuoted(reference) +
+                                                    " --frames 2 --screenshot " + shellQuoted(shot))));
   ASSERT_EQ(r.status, 0) << r.output;
   const Image shown = readPng(fs::path(shot).concat(".png"));
   ASSERT_EQ(shown.width(), kWidth);
@@ -152,11 +149,13 @@ TEST_F(IblkitViewWindow, ReferenceSplitViewShowsLiveLeftAndReferenceRight) {
 TEST_F(IblkitViewWindow, DifferenceViewIsBlackAgainstItselfAndBrightAgainstAnotherImage) {
   const Image headless = renderHeadless("same.exr");
   const fs::path magenta = dir_ / "magenta.exr";
-  writeExr(magenta, Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f)), {.pixelType = PixelType::Float});
+  writeExr(magenta, Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f)),
+           {.pixelType = PixelType::Float});
   auto blackFraction = [&](const fs::path& reference, const std::string& name) {
     const fs::path shot = dir_ / name;
-    const ProgramRun r = run(inWindow(windowArguments("--reference " + quoted(reference) +
-                                                      " --compare difference --frames 2 --screenshot " + quoted(shot))));
+    const ProgramRun r =
+        run(inWindow(windowArguments("--reference " + shellQuoted(reference) +
+                                     " --compare difference --frames 2 --screenshot " + shellQuoted(shot))));
     EXPECT_EQ(r.status, 0) << r.output;
     const Image shown = readPng(shot);
     int black = 0;
@@ -173,7 +172,8 @@ TEST_F(IblkitViewWindow, SwitchesToAnotherEnvironment) {
   const fs::path red = dir_ / "red.exr";
   writeExr(red, Image(64, 32, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f)), {.pixelType = PixelType::Float});
   const fs::path shot = dir_ / "red_shot.exr";
-  const ProgramRun r = run(inWindow(windowArguments("--env " + quoted(red) + " --frames 1 --screenshot " + quoted(shot))));
+  const ProgramRun r = run(inWindow(
+      windowArguments("--env " + shellQuoted(red) + " --frames 1 --screenshot " + shellQuoted(shot))));
   ASSERT_EQ(r.status, 0) << r.output;
   const Image radiance = readExr(shot);
   int sky = 0, mirror = 0;
@@ -186,7 +186,8 @@ TEST_F(IblkitViewWindow, SwitchesToAnotherEnvironment) {
   EXPECT_GT(sky, kWidth * kHeight / 2);
   EXPECT_GT(mirror, 2000);
   // A missing map: named, exit 1.
-  const ProgramRun missing = run(program("iblkit-view") + " " + windowArguments("--env " + quoted(dir_ / "no.exr")));
+  const ProgramRun missing =
+      run(program("iblkit-view") + " " + windowArguments("--env " + shellQuoted(dir_ / "no.exr")));
   EXPECT_EQ(missing.status, 1);
   EXPECT_TRUE(missing.output.ends_with("iblkit-view: " + (dir_ / "no.exr").string() + ": no such file\n"))
       << missing.output;
@@ -195,7 +196,7 @@ TEST_F(IblkitViewWindow, SwitchesToAnotherEnvironment) {
 TEST_F(IblkitViewWindow, NoDisplayIsOneLineAndExitStatus1) {
   const fs::path shot = dir_ / "never.png";
   const ProgramRun r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + program("iblkit-view") + " " +
-                           windowArguments("--frames 1 --screenshot " + quoted(shot)));
+                           windowArguments("--frames 1 --screenshot " + shellQuoted(shot)));
   EXPECT_EQ(r.status, 1) << r.output;
   // Warnings of the bake's environment map may come first (sky.exr has a few negative pixels).
   std::vector<std::string> errors;
@@ -212,29 +213,33 @@ TEST_F(IblkitViewWindow, NoDisplayIsOneLineAndExitStatus1) {
 TEST_F(IblkitViewWindow, BadInputFailsBeforeAWindowOpens) {
   // A missing bake: loadBake's error, as --headless prints it.
   const fs::path missing = dir_ / "missing";
-  const ProgramRun window = run(program("iblkit-view") + " " + quoted(missing));
-  const ProgramRun headless = run(program("iblkit-view") + " " + quoted(missing) + " --headless -o " +
-                                  quoted(dir_ / "x.exr"));
+  const ProgramRun window = run(program("iblkit-view") + " " + shellQuoted(missing));
+  const ProgramRun headless = run(program("iblkit-view") + " " + shellQuoted(missing) + " --headless -o " +
+                                  shellQuoted(dir_ / "x.exr"));
   EXPECT_EQ(window.status, 1);
   EXPECT_EQ(window.output, headless.output);
   EXPECT_EQ(window.output.rfind("iblkit-view: " + missing.string() + ": ", 0), 0u) << window.output;
   // A missing reference, a bad view name, a bad screenshot name: named, without a display.
-  const ProgramRun reference = run(program("iblkit-view") + " " + windowArguments("--reference " + quoted(dir_ / "none.exr")));
+  const ProgramRun reference =
+      run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(dir_ / "none.exr")));
   EXPECT_EQ(reference.status, 1);
   EXPECT_TRUE(reference.output.ends_with("iblkit-view: " + (dir_ / "none.exr").string() +
                                          ": cannot open: No such file or directory\n"))
       << reference.output;
   const ProgramRun view = run(program("iblkit-view") + " " + windowArguments("--compare sideways"));
   EXPECT_EQ(view.status, 1);
-  EXPECT_EQ(view.output, "iblkit-view: --compare: unknown view 'sideways' (expected live, split or difference)\n");
-  const ProgramRun shot = run(program("iblkit-view") + " " + windowArguments("--screenshot " + quoted(dir_ / "a.jpg")));
+  EXPECT_EQ(view.output,
+            "iblkit-view: --compare: unknown view 'sideways' (expected live, split or difference)\n");
+  const ProgramRun shot =
+      run(program("iblkit-view") + " " + windowArguments("--screenshot " + shellQuoted(dir_ / "a.jpg")));
   EXPECT_EQ(shot.status, 1);
   EXPECT_NE(shot.output.find("unsupported screenshot format"), std::string::npos) << shot.output;
   // Window flags with --headless, headless flags without it.
-  EXPECT_EQ(run(program("iblkit-view") + " " + quoted(bake_) + " --headless -o " + quoted(dir_ / "h.exr") +
-                " --frames 2").status,
+  EXPECT_EQ(run(program("iblkit-view") + " " + shellQuoted(bake_) + " --headless -o " +
+                shellQuoted(dir_ / "h.exr") + " --frames 2")
+                .status,
             1);
-  EXPECT_EQ(run(program("iblkit-view") + " " + quoted(bake_) + " --bench 2").status, 1);
+  EXPECT_EQ(run(program("iblkit-view") + " " + shellQuoted(bake_) + " --bench 2").status, 1);
 }
 
 }  // namespace

@@ -61,7 +61,8 @@ TEST(OrbitCamera, OrbitKeepsTheTargetCentredAtTheSameDistance) {
   expectVecNear(orbit.target(), glm::vec3(0.0f), kTolerance, "target");
   const Camera camera = orbit.camera();
   // The target projects to the centre of the image.
-  const glm::vec4 clip = camera.projectionMatrix(4.0f / 3.0f) * camera.viewMatrix() * glm::vec4(orbit.target(), 1.0f);
+  const glm::vec4 clip =
+      camera.projectionMatrix(4.0f / 3.0f) * camera.viewMatrix() * glm::vec4(orbit.target(), 1.0f);
   EXPECT_NEAR(clip.x / clip.w, 0.0f, kTolerance);
   EXPECT_NEAR(clip.y / clip.w, 0.0f, kTolerance);
   // Positive pitch raises the eye; yaw turns it about +Y (the height stays).
