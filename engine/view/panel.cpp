@@ -148,7 +148,7 @@ PanelActions Panel::build(PanelContext& context) {
     actions.screenshot = ImGui::Button("screenshot (P)");
     ImGui::SameLine();
     if (ImGui::Button("help (H)")) showHelp = !showHelp;
-    if (!context.lastScreenshot.empty()) ImGui::TextWrapped("saved %s", context.lastScreenshot.c_str());
+    if (!context.lastScreenshot.empty()) ImGui::TextWrapped("%s", context.lastScreenshot.c_str());
     ImGui::PopItemWidth();
     ImGui::End();
   }

@@ -25,7 +25,7 @@ struct PanelContext {
   int width, height;                // of the frame
   const std::string& contextDescription;
   bool cameraMoved;  // the reference no longer matches the view
-  const std::string& lastScreenshot;
+  const std::string& lastScreenshot;  // "saved FILE.png", or why the last one failed
 };
 
 // Buttons the frame loop acts on.

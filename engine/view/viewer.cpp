@@ -145,7 +145,8 @@ class Viewer {
 
  private:
   // Renders the scene, presents it (or the comparison) into the window's back buffer, writes a
-  // screenshot if asked (before the panel is drawn, so the panel is not in it) and draws the panel.
+  // screenshot if asked (before the panel is drawn, so the panel is not in it) and draws the panel
+  // (not for the final --screenshot frame, whose write errors end the run).
   void drawFrame(int width, int height, const std::optional<ScreenshotFiles>& capture, bool withPanel) {
     if (!target_ || target_->width() != width || target_->height() != height)
       target_ = std::make_unique<RenderTarget>(width, height, options_.samples);
@@ -160,10 +161,15 @@ class Viewer {
     if (capture) {
       const Image displayed = readDisplayedPixels(0, 0, width, height);
       const Image radiance = target_->readColor();
-      writeScreenshot(*capture, radiance, displayed);
-      lastScreenshot_ = capture->png.string();
-      std::cout << "iblkit-view: wrote " << capture->exr.string() << " and " << capture->png.string() << '\n';
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      try {
+        writeScreenshot(*capture, radiance, displayed);
+        lastScreenshot_ = "saved " + capture->png.string();
+        std::cout << "iblkit-view: wrote " << capture->exr.string() << " and " << capture->png.string() << '\n';
+      } catch (const Error& e) {
+        if (!withPanel) throw;  // --screenshot at exit: the run fails
+        lastScreenshot_ = std::string("screenshot failed: ") + e.what();  // P: the panel says why
+      }
     }
     if (!withPanel) return;
     PanelContext context{
