@@ -119,9 +119,10 @@ class Viewer {
       window_->swapBuffers();
       checkGlErrors("frame");
       const Clock::time_point now = Clock::now();
-      intervals.push_back(std::chrono::duration<double, std::milli>(now - previous).count());
+      const double interval = std::chrono::duration<double, std::milli>(now - previous).count();
       previous = now;
-      recent_.push_back(intervals.back());
+      if (options_.frames > 0) intervals.push_back(interval);  // for the median printed at the end
+      recent_.push_back(interval);
       if (recent_.size() > 60) recent_.erase(recent_.begin());
     }
     if (!options_.screenshot.empty()) {
@@ -133,9 +134,9 @@ class Viewer {
       checkGlErrors("screenshot");
     }
     if (options_.frames > 0) {
-      // The first frames compile shader variants and upload: left out of the median.
-      const std::vector<double> steady(intervals.begin() + std::min<std::ptrdiff_t>(2, std::ssize(intervals)),
-                                       intervals.end());
+      // The first two frames compile shader variants and upload: left out of the median when
+      // there are more.
+      const std::vector<double> steady(intervals.begin() + (intervals.size() > 2 ? 2 : 0), intervals.end());
       std::cout << "iblkit-view: " << intervals.size() << " frames, " << window_->framebufferWidth() << "x"
                 << window_->framebufferHeight() << ", " << window_->description() << ", median frame time "
                 << std::fixed << std::setprecision(2) << median(steady) << " ms\n";
@@ -165,7 +166,8 @@ class Viewer {
       try {
         writeScreenshot(*capture, radiance, displayed);
         lastScreenshot_ = "saved " + capture->png.string();
-        std::cout << "iblkit-view: wrote " << capture->exr.string() << " and " << capture->png.string() << '\n';
+        std::cout << "iblkit-view: wrote " << capture->exr.string() << " and " << capture->png.string()
+                  << '\n';
       } catch (const Error& e) {
         if (!withPanel) throw;  // --screenshot at exit: the run fails
         lastScreenshot_ = std::string("screenshot failed: ") + e.what();  // P: the panel says why
