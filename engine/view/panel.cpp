@@ -65,8 +65,7 @@ void environmentSection(EnvironmentSwitcher& environments) {
   ImGui::TextWrapped("%s", environments.status().c_str());
 }
 
-void materialSection(Renderer& renderer, const std::vector<Material>& originals) {
-  static int selected = 0;
+void materialSection(Renderer& renderer, const std::vector<Material>& originals, int& selected) {
   const std::vector<Material>& materials = renderer.materials();
   if (materials.empty()) return;
   selected = std::clamp(selected, 0, int(materials.size()) - 1);
@@ -140,7 +139,8 @@ PanelActions Panel::build(PanelContext& context) {
     ImGui::Checkbox("sky", &settings.drawSky);
     if (ImGui::CollapsingHeader("environment", ImGuiTreeNodeFlags_DefaultOpen))
       environmentSection(context.environments);
-    if (ImGui::CollapsingHeader("material")) materialSection(context.renderer, context.originalMaterials);
+    if (ImGui::CollapsingHeader("material"))
+      materialSection(context.renderer, context.originalMaterials, selectedMaterial_);
     if (context.comparison && ImGui::CollapsingHeader("reference", ImGuiTreeNodeFlags_DefaultOpen))
       comparisonSection(*context.comparison, context.cameraMoved);
     actions.resetCamera = ImGui::Button("reset camera (R)");

@@ -24,7 +24,7 @@ struct PanelContext {
   double frameMs;                   // median frame interval
   int width, height;                // of the frame
   const std::string& contextDescription;
-  bool cameraMoved;  // the reference no longer matches the view
+  bool cameraMoved;                   // the reference no longer matches the view
   const std::string& lastScreenshot;  // "saved FILE.png", or why the last one failed
 };
 
@@ -52,6 +52,9 @@ class Panel {
   // True while the cursor or a text field belongs to the panel: the viewer leaves the input alone.
   bool wantsMouse() const;
   bool wantsKeyboard() const;
+
+ private:
+  int selectedMaterial_ = 0;  // the material the overrides edit
 };
 
 // The key and mouse help, one line each (the panel's help window and docs/viewer.md).
