@@ -19,7 +19,7 @@ class WindowContext {
   WindowContext& operator=(WindowContext&& other) noexcept;
   WindowContext(const WindowContext&) = delete;
   WindowContext& operator=(const WindowContext&) = delete;
-  // Destroys the window and terminates GLFW.
+  // Destroys the window (GLFW stays initialised until the process exits: window_context.cpp).
   ~WindowContext();
 
   GLFWwindow* window() const { return window_; }
