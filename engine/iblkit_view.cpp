@@ -6,11 +6,15 @@
 //
 // OUTDIR is an iblkit-bake folder; a .json/.gltf/.glb scene is baked in memory first. -o .exr
 // writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
-// Without --headless the window viewer runs (engine/view/, not built yet).
+// Without --headless the window viewer runs (engine/view/viewer.h, docs/viewer.md):
+//
+//   iblkit-view OUTDIR|SCENE [--env ENV] [--env-dir DIR] [--reference REF.exr] [--compare VIEW] [--frames N] [--screenshot FILE]
+//               [--no-panel] [--width W] [--height H] [--mode M] [--exposure E] ...
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -23,6 +27,7 @@
 #include "engine/gl/headless_context.h"
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
+#include "engine/view/viewer.h"
 
 namespace iblkit {
 namespace {
@@ -44,6 +49,11 @@ struct Options {
   int bench = 0;
   int aoRays = 64;
   bool noSky = false;
+  // The window viewer's.
+  std::filesystem::path envDir, environment, reference, screenshot;
+  std::string compare = "split";
+  int frames = 0;
+  bool noPanel = false;
 };
 
 std::string lowerExtension(const fs::path& file) {
@@ -184,6 +194,44 @@ int runHeadless(const Options& options) {
   return 0;
 }
 
+// --env-dir defaults to assets/hdri, under IBLKIT_ASSETS when that is set.
+fs::path defaultEnvironmentFolder() {
+  const char* assets = std::getenv("IBLKIT_ASSETS");
+  return (assets && *assets ? fs::path(assets) : fs::path("assets")) / "hdri";
+}
+
+int runWindow(const Options& options) {
+  if (!options.output.empty()) throw Error("-o: only with --headless (the window saves screenshots: --screenshot)");
+  if (options.bench > 0) throw Error("--bench: only with --headless (the window prints its frame time with --frames)");
+  if (!options.normalOutput.empty() || !options.depthOutput.empty())
+    throw Error("--normal/--depth: only with --headless");
+  ViewerOptions viewer;
+  viewer.input = options.input;
+  viewer.width = options.width;
+  viewer.height = options.height;
+  viewer.mode = options.mode;
+  viewer.exposure = options.exposure;
+  viewer.envRotation = options.envRotation;
+  viewer.samples = options.samples;
+  viewer.noSky = options.noSky;
+  viewer.aoRays = options.aoRays;
+  viewer.envDir = options.envDir.empty() ? defaultEnvironmentFolder() : options.envDir;
+  viewer.environment = options.environment;
+  viewer.reference = options.reference;
+  viewer.compare = options.compare;
+  viewer.frames = options.frames;
+  viewer.screenshot = options.screenshot;
+  viewer.panel = !options.noPanel;
+  return runViewer(viewer);
+}
+
+void rejectWindowFlagsWhenHeadless(const Options& options) {
+  if (!options.headless) return;
+  if (options.frames > 0 || !options.screenshot.empty() || !options.environment.empty() || !options.reference.empty() || !options.envDir.empty() ||
+      options.noPanel)
+    throw Error("--frames, --screenshot, --env, --env-dir, --reference and --no-panel are for the window, not --headless");
+}
+
 }  // namespace
 }  // namespace iblkit
 
@@ -221,15 +269,24 @@ int main(int argc, char** argv) {
   app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex when baking a scene in memory")
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();
+  app.add_option("--env-dir", options.envDir,
+                 "window: folder of environment maps to switch between (default: assets/hdri)");
+  app.add_option("--env", options.environment,
+                 "window: switch to this environment map at start (prefiltered while the bake's shows)");
+  app.add_option("--reference", options.reference,
+                 "window: path-traced reference (.exr) shown beside the live frame, or as a difference");
+  app.add_option("--compare", options.compare, "window: the reference view to start with: live, split, difference")
+      ->capture_default_str();
+  app.add_option("--frames", options.frames, "window: quit after N frames and print the median frame time")
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--screenshot", options.screenshot,
+                 "window: at exit, write the last frame as FILE.exr (radiance) and FILE.png (the view)");
+  app.add_flag("--no-panel", options.noPanel, "window: start with the panel hidden (Tab shows it)");
   CLI11_PARSE(app, argc, argv);
 
   try {
-    if (!options.headless) {
-      // The window viewer (engine/view/viewer.h, runViewer) hooks in here once it is built.
-      std::cerr << iblkit::kProgram << ": the window viewer is not built yet\n";
-      return 1;
-    }
-    return iblkit::runHeadless(options);
+    iblkit::rejectWindowFlagsWhenHeadless(options);
+    return options.headless ? iblkit::runHeadless(options) : iblkit::runWindow(options);
   } catch (const std::exception& e) {
     std::cerr << iblkit::kProgram << ": " << e.what() << '\n';
     return 1;

@@ -287,7 +287,7 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
                 "sh-ao, sh-ao-bent, prt, full)",
                 out);
   expectFailure(quoted(fixture.bake) + " -o " + quoted(out),
-                "iblkit-view: the window viewer is not built yet", out);
+                "iblkit-view: -o: only with --headless (the window saves screenshots: --screenshot)", out);
 }
 
 }  // namespace

@@ -32,6 +32,14 @@ std::filesystem::path scratchDir() {
   return dir;
 }
 
+std::string shellQuoted(const std::filesystem::path& path) {
+  // Built by appending: GCC 12 warns falsely (-Wrestrict, its bug 105329) on "'" + std::string.
+  std::string text = "'";
+  text += path.string();
+  text += "'";
+  return text;
+}
+
 int runCommand(const std::string& command, std::string* output) {
   // Grouped, so redirections inside `command` apply first and the rest of stderr joins stdout.
   FILE* pipe = popen(("{ " + command + "; } 2>&1").c_str(), "r");

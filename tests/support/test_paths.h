@@ -14,6 +14,9 @@ std::filesystem::path binDir();     // build/bin
 // A fresh, empty folder under the system temp dir, unique to the running test.
 std::filesystem::path scratchDir();
 
+// `path` single-quoted for a shell command line.
+std::string shellQuoted(const std::filesystem::path& path);
+
 // Runs a shell command, returns its exit status, captures stdout+stderr into *output.
 int runCommand(const std::string& command, std::string* output);
 

@@ -1,0 +1,166 @@
+#include "engine/view/panel.h"
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+#include "engine/gl/shading_mode.h"
+
+namespace iblkit {
+
+const std::vector<std::string>& viewerHelpLines() {
+  static const std::vector<std::string> lines = {
+      "1..7            shading mode: unlit, mirror, sh, sh-ao, sh-ao-bent, prt, full",
+      "[ ]             exposure -/+ 0.5 stop",
+      "left drag       orbit (arrow keys too)",
+      "right/mid drag  pan (shift + arrow keys too)",
+      "wheel           zoom (+ / - and PageUp / PageDown too)",
+      "R               reset the camera to the scene's",
+      ", .             previous / next environment map of --env-dir",
+      "C               reference view: live, split, difference (with --reference)",
+      "drag divider    move the split (with --reference)",
+      "P               screenshot (EXR of the frame + PNG of the view)",
+      "Tab             hide / show the panel",
+      "H               this help",
+      "Esc             quit",
+  };
+  return lines;
+}
+
+Panel::Panel(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+Panel::~Panel() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+bool Panel::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool Panel::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+
+namespace {
+
+void environmentSection(EnvironmentSwitcher& environments) {
+  ImGui::Text("environments: %s", environments.folder().string().c_str());
+  const std::vector<std::filesystem::path>& files = environments.files();
+  const int shown = environments.current();
+  const std::string preview = shown < 0 ? "(the bake's)" : files[std::size_t(shown)].filename().string();
+  if (ImGui::BeginCombo("map", preview.c_str())) {
+    for (int i = 0; i < int(files.size()); ++i)
+      if (ImGui::Selectable(files[std::size_t(i)].filename().string().c_str(), i == shown))
+        environments.request(i);
+    ImGui::EndCombo();
+  }
+  ImGui::TextWrapped("%s", environments.status().c_str());
+}
+
+void materialSection(Renderer& renderer, const std::vector<Material>& originals, int& selected) {
+  const std::vector<Material>& materials = renderer.materials();
+  if (materials.empty()) return;
+  selected = std::clamp(selected, 0, int(materials.size()) - 1);
+  auto label = [&](int i) {
+    const std::string& name = materials[std::size_t(i)].name;
+    return std::to_string(i) + (name.empty() ? "" : ": " + name);
+  };
+  if (ImGui::BeginCombo("material", label(selected).c_str())) {
+    for (int i = 0; i < int(materials.size()); ++i)
+      if (ImGui::Selectable(label(i).c_str(), i == selected)) selected = i;
+    ImGui::EndCombo();
+  }
+  Material material = materials[std::size_t(selected)];
+  bool changed = ImGui::ColorEdit3("base colour", &material.baseColor.x, ImGuiColorEditFlags_Float);
+  changed |= ImGui::SliderFloat("roughness", &material.roughness, 0.0f, 1.0f);
+  changed |= ImGui::SliderFloat("metallic", &material.metallic, 0.0f, 1.0f);
+  if (ImGui::Button("restore material")) {
+    material = originals[std::size_t(selected)];
+    changed = true;
+  }
+  if (changed) renderer.setMaterial(selected, material);
+}
+
+void comparisonSection(ReferenceComparison& comparison, bool cameraMoved) {
+  ImGui::Text("reference: %s (%dx%d)", comparison.file().filename().string().c_str(), comparison.width(),
+              comparison.height());
+  int view = int(comparison.view);
+  for (ComparisonView v : {ComparisonView::Live, ComparisonView::Split, ComparisonView::Difference}) {
+    if (v != ComparisonView::Live) ImGui::SameLine();
+    ImGui::RadioButton(comparisonViewName(v), &view, int(v));
+  }
+  comparison.view = ComparisonView(view);
+  if (comparison.view == ComparisonView::Split)
+    ImGui::SliderFloat("divider", &comparison.divider, 0.0f, 1.0f);
+  if (comparison.view == ComparisonView::Difference) {
+    ImGui::SliderFloat("red at", &comparison.heatmapScale, 0.01f, 2.0f, "%.2f relative");
+    ImGui::TextUnformatted("|live - ref| / (ref + 0.01): black 0, blue, green, yellow, red");
+  }
+  if (cameraMoved) ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "camera moved: R to compare again");
+}
+
+}  // namespace
+
+PanelActions Panel::build(PanelContext& context) {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  PanelActions actions;
+  if (visible) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::Begin("iblkit-view", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushItemWidth(ImGui::GetFontSize() * 12.0f);
+    ImGui::Text("%.2f ms/frame (%.1f fps), %dx%d", context.frameMs,
+                context.frameMs > 0.0 ? 1000.0 / context.frameMs : 0.0, context.width, context.height);
+    ImGui::SameLine();
+    ImGui::TextDisabled("(GL)");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", context.contextDescription.c_str());
+    FrameSettings& settings = context.settings;
+    int mode = 0;
+    for (int i = 0; i < int(std::size(kShadingModes)); ++i)
+      if (kShadingModes[i] == settings.mode) mode = i;
+    if (ImGui::BeginCombo("mode", std::string(shadingModeName(settings.mode)).c_str())) {
+      for (int i = 0; i < int(std::size(kShadingModes)); ++i)
+        if (ImGui::Selectable(std::string(shadingModeName(kShadingModes[i])).c_str(), i == mode))
+          settings.mode = kShadingModes[i];
+      ImGui::EndCombo();
+    }
+    ImGui::SliderFloat("exposure", &settings.exposure, -10.0f, 10.0f, "%.1f stops");
+    ImGui::SliderFloat("env rotation", &settings.envRotationDegrees, -180.0f, 180.0f, "%.0f deg");
+    ImGui::Checkbox("sky", &settings.drawSky);
+    if (ImGui::CollapsingHeader("environment", ImGuiTreeNodeFlags_DefaultOpen))
+      environmentSection(context.environments);
+    if (ImGui::CollapsingHeader("material"))
+      materialSection(context.renderer, context.originalMaterials, selectedMaterial_);
+    if (context.comparison && ImGui::CollapsingHeader("reference", ImGuiTreeNodeFlags_DefaultOpen))
+      comparisonSection(*context.comparison, context.cameraMoved);
+    actions.resetCamera = ImGui::Button("reset camera (R)");
+    ImGui::SameLine();
+    actions.screenshot = ImGui::Button("screenshot (P)");
+    ImGui::SameLine();
+    if (ImGui::Button("help (H)")) showHelp = !showHelp;
+    if (!context.lastScreenshot.empty()) ImGui::TextWrapped("%s", context.lastScreenshot.c_str());
+    ImGui::PopItemWidth();
+    ImGui::End();
+  }
+  if (showHelp) {
+    ImGui::Begin("keys", &showHelp, ImGuiWindowFlags_AlwaysAutoResize);
+    for (const std::string& line : viewerHelpLines()) ImGui::TextUnformatted(line.c_str());
+    ImGui::End();
+  }
+  ImGui::Render();
+  return actions;
+}
+
+void Panel::render() { ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData()); }
+
+}  // namespace iblkit

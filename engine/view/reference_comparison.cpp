@@ -1,0 +1,95 @@
+#include "engine/view/reference_comparison.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.h"
+#include "engine/core/image_io.h"
+
+namespace iblkit {
+
+const char* comparisonViewName(ComparisonView view) {
+  switch (view) {
+    case ComparisonView::Live:
+      return "live";
+    case ComparisonView::Split:
+      return "split";
+    case ComparisonView::Difference:
+      return "difference";
+  }
+  return "?";
+}
+
+ComparisonView parseComparisonView(const std::string& name) {
+  for (ComparisonView view : {ComparisonView::Live, ComparisonView::Split, ComparisonView::Difference})
+    if (name == comparisonViewName(view)) return view;
+  throw Error("--compare: unknown view '" + name + "' (expected live, split or difference)");
+}
+
+namespace {
+
+// GL's texture row 0 is the bottom of the screen (present.frag samples ndc * 0.5 + 0.5), Image's
+// row 0 is the top: the rows are turned over for the upload.
+Image bottomRowFirst(const Image& image) {
+  Image flipped(image.width(), image.height());
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) flipped.at(x, image.height() - 1 - y) = image.at(x, y);
+  return flipped;
+}
+
+}  // namespace
+
+ReferenceComparison::ReferenceComparison(const std::filesystem::path& file) : file_(file) {
+  const Image reference = readExr(file);
+  width_ = reference.width();
+  height_ = reference.height();
+  texture_ = uploadTable(bottomRowFirst(reference));
+  glCreateVertexArrays(1, &emptyVertexArray_);
+}
+
+ReferenceComparison::~ReferenceComparison() { glDeleteVertexArrays(1, &emptyVertexArray_); }
+
+void ReferenceComparison::cycleView() {
+  view = view == ComparisonView::Live    ? ComparisonView::Split
+         : view == ComparisonView::Split ? ComparisonView::Difference
+                                         : ComparisonView::Live;
+}
+
+bool ReferenceComparison::nearDivider(double x, int width) const {
+  return view == ComparisonView::Split && std::abs(x - double(divider) * width) <= 6.0;
+}
+
+void ReferenceComparison::present(Renderer& renderer, GLuint liveTexture, const FrameSettings& settings,
+                                  int width, int height) {
+  if (view == ComparisonView::Live) {
+    renderer.presentToneMapped(liveTexture, settings, 0, 0, width, height);
+    return;
+  }
+  if (view == ComparisonView::Difference) {
+    glViewport(0, 0, width, height);
+    glBindTextureUnit(0, liveTexture);
+    glBindTextureUnit(1, texture_.id());
+    heatmapProgram_.set("liveTexture", 0);
+    heatmapProgram_.set("referenceTexture", 1);
+    heatmapProgram_.set("scale", heatmapScale);
+    heatmapProgram_.use();
+    glBindVertexArray(emptyVertexArray_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    return;
+  }
+  // Split: the live frame left of the divider, the reference right of it, a 2-pixel white line.
+  const int split = std::clamp(int(std::lround(divider * float(width))), 0, width);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, split, height);
+  renderer.presentToneMapped(liveTexture, settings, 0, 0, width, height);
+  glScissor(split, 0, width - split, height);
+  renderer.presentToneMapped(texture_.id(), settings, 0, 0, width, height);
+  glScissor(std::max(0, split - 1), 0, 2, height);
+  glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+}  // namespace iblkit

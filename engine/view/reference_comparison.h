@@ -1,0 +1,56 @@
+#pragma once
+// The path-traced reference beside the live frame (iblkit-view --reference REF.exr): a split view
+// (live left of a draggable divider, reference right of it, both the whole frame at the same
+// camera) or the relative difference as a heat map (shaders/difference_heatmap.frag). The
+// reference is only comparable while the camera is the scene's: the panel says when it is not.
+#include <epoxy/gl.h>
+
+#include <filesystem>
+#include <string>
+
+#include "engine/core/image.h"
+#include "engine/gl/gpu_textures.h"
+#include "engine/gl/renderer.h"
+#include "engine/gl/shader_program.h"
+
+namespace iblkit {
+
+enum class ComparisonView { Live, Split, Difference };
+const char* comparisonViewName(ComparisonView view);
+// "live", "split" or "difference"; throws Error("--compare: ...") otherwise.
+ComparisonView parseComparisonView(const std::string& name);
+
+class ReferenceComparison {
+ public:
+  // Reads the reference (OpenEXR, linear radiance, e.g. iblkit-trace's output) and uploads it;
+  // starts in the split view. Needs a current OpenGL context. Throws Error("<file>: <problem>").
+  explicit ReferenceComparison(const std::filesystem::path& file);
+  ~ReferenceComparison();
+  ReferenceComparison(const ReferenceComparison&) = delete;
+  ReferenceComparison& operator=(const ReferenceComparison&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const std::filesystem::path& file() const { return file_; }
+
+  ComparisonView view = ComparisonView::Split;
+  float divider = 0.5f;       // split view: the divider's position, a fraction of the width
+  float heatmapScale = 0.5f;  // difference view: the relative difference shown as red
+  void cycleView();           // Live -> Split -> Difference -> Live
+  // Whether window x coordinate `x` (pixels from the left) is close enough to grab the divider.
+  bool nearDivider(double x, int width) const;
+
+  // Draws the view into the viewport (0, 0, width, height) of the bound draw framebuffer: the live
+  // frame (`liveTexture`, linear radiance) tone-mapped with `settings`, the reference with the same
+  // exposure and curve, or the heat map. Both images are stretched over the viewport.
+  void present(Renderer& renderer, GLuint liveTexture, const FrameSettings& settings, int width, int height);
+
+ private:
+  std::filesystem::path file_;
+  int width_ = 0, height_ = 0;
+  GlTexture texture_;
+  ShaderProgram heatmapProgram_{"fullscreen.vert", "difference_heatmap.frag"};
+  GLuint emptyVertexArray_ = 0;
+};
+
+}  // namespace iblkit

@@ -1,0 +1,331 @@
+#include "engine/view/viewer.h"
+
+#include <GLFW/glfw3.h>
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "engine/baked/baked_scene.h"
+#include "engine/core/error.h"
+#include "engine/core/image_io.h"
+#include "engine/gl/gl_debug.h"
+#include "engine/gl/render_target.h"
+#include "engine/gl/renderer.h"
+#include "engine/view/environment_switcher.h"
+#include "engine/view/orbit_camera.h"
+#include "engine/view/panel.h"
+#include "engine/view/reference_comparison.h"
+#include "engine/view/screenshot.h"
+#include "engine/view/window_context.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// Input the GLFW callbacks collect between frames (they run inside glfwPollEvents).
+struct PendingInput {
+  std::vector<int> keys;  // key presses (and repeats), in order
+  int mods = 0;
+  double scroll = 0.0;
+};
+
+PendingInput& pendingInput(GLFWwindow* window) {
+  return *static_cast<PendingInput*>(glfwGetWindowUserPointer(window));
+}
+
+enum class Drag { None, Orbit, Pan, Divider };
+
+class Viewer {
+ public:
+  explicit Viewer(const ViewerOptions& options)
+      : options_(options), bake_(loadBake(options.input, {.aoRays = options.aoRays, .environment = {}})) {
+    settings_.mode = parseShadingMode(options.mode);
+    settings_.exposure = options.exposure;
+    settings_.envRotationDegrees = options.envRotation;
+    settings_.drawSky = !options.noSky;
+    // The reference decides the size (same camera, same pixels) unless --width/--height do.
+    int width = bake_.scene.width, height = bake_.scene.height;
+    if (!options.reference.empty()) {
+      ExrInfo info;
+      readExr(options.reference, &info);  // its errors before a window opens
+      width = info.width;
+      height = info.height;
+    }
+    if (options.width > 0) width = options.width;
+    if (options.height > 0) height = options.height;
+
+    window_.emplace(
+        WindowContext::open(width, height, "iblkit-view: " + options.input.filename().string(), false));
+    enableGlDebugOutput(GlDebugMode::Strict);
+    renderer_ = std::make_unique<Renderer>(bake_);
+    originalMaterials_ = renderer_->materials();
+    camera_.emplace(sceneCamera(bake_.scene, float(width) / float(height)), bake_.scene.bounds);
+    if (!options.reference.empty()) {
+      comparison_ = std::make_unique<ReferenceComparison>(options.reference);
+      comparison_->view = parseComparisonView(options.compare);
+    }
+    environments_ =
+        std::make_unique<EnvironmentSwitcher>(options.envDir, bake_.env.rotationDegrees, bake_.env.intensity);
+    if (!options.environment.empty()) environments_->requestFile(options.environment);
+
+    GLFWwindow* window = window_->window();
+    glfwSetWindowUserPointer(window, &input_);
+    // Installed before the panel's, which chains to them.
+    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
+      if (action != GLFW_RELEASE) pendingInput(w).keys.push_back(key);
+      pendingInput(w).mods = mods;
+    });
+    glfwSetScrollCallback(window, [](GLFWwindow* w, double, double y) { pendingInput(w).scroll += y; });
+    panel_ = std::make_unique<Panel>(window);
+    panel_->visible = options.panel;
+    checkGlErrors("viewer setup");
+  }
+
+  int run() {
+    std::vector<double> intervals;
+    Clock::time_point previous = Clock::now();
+    for (int frame = 0; !window_->shouldClose() && (options_.frames == 0 || frame < options_.frames);
+         ++frame) {
+      glfwPollEvents();
+      handleInput();
+      if (std::optional<EnvironmentStages> stages = environments_->poll()) renderer_->setEnvironment(*stages);
+      const int width = window_->framebufferWidth(), height = window_->framebufferHeight();
+      if (width <= 0 || height <= 0) {  // minimised
+        glfwWaitEventsTimeout(0.1);
+        continue;
+      }
+      const std::optional<ScreenshotFiles> capture =
+          screenshotRequested_ ? std::optional(timestampedScreenshotFiles(fs::current_path())) : std::nullopt;
+      screenshotRequested_ = false;
+      drawFrame(width, height, capture, true);
+      window_->swapBuffers();
+      checkGlErrors("frame");
+      const Clock::time_point now = Clock::now();
+      const double interval = std::chrono::duration<double, std::milli>(now - previous).count();
+      previous = now;
+      if (options_.frames > 0) intervals.push_back(interval);  // for the median printed at the end
+      recent_.push_back(interval);
+      if (recent_.size() > 60) recent_.erase(recent_.begin());
+    }
+    if (!options_.screenshot.empty()) {
+      // A switch still being prefiltered is waited for, so that a scripted run sees it.
+      if (std::optional<EnvironmentStages> stages = environments_->waitForResult())
+        renderer_->setEnvironment(*stages);
+      drawFrame(window_->framebufferWidth(), window_->framebufferHeight(),
+                screenshotFiles(options_.screenshot), false);
+      checkGlErrors("screenshot");
+    }
+    if (options_.frames > 0) {
+      // The first two frames compile shader variants and upload: left out of the median when
+      // there are more.
+      const std::vector<double> steady(intervals.begin() + (intervals.size() > 2 ? 2 : 0), intervals.end());
+      std::cout << "iblkit-view: " << intervals.size() << " frames, " << window_->framebufferWidth() << "x"
+                << window_->framebufferHeight() << ", " << window_->description() << ", median frame time "
+                << std::fixed << std::setprecision(2) << median(steady) << " ms\n";
+    }
+    return 0;
+  }
+
+ private:
+  // Renders the scene, presents it (or the comparison) into the window's back buffer, writes a
+  // screenshot if asked (before the panel is drawn, so the panel is not in it) and draws the panel
+  // (not for the final --screenshot frame, whose write errors end the run).
+  void drawFrame(int width, int height, const std::optional<ScreenshotFiles>& capture, bool withPanel) {
+    if (!target_ || target_->width() != width || target_->height() != height)
+      target_ = std::make_unique<RenderTarget>(width, height, options_.samples);
+    const Camera camera = camera_->camera();
+    renderer_->render(camera, settings_, target_->framebuffer(), width, height);
+    target_->resolve();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (comparison_)
+      comparison_->present(*renderer_, target_->colorTexture(), settings_, width, height);
+    else
+      renderer_->presentToneMapped(target_->colorTexture(), settings_, 0, 0, width, height);
+    if (capture) {
+      const Image displayed = readDisplayedPixels(0, 0, width, height);
+      const Image radiance = target_->readColor();
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      try {
+        writeScreenshot(*capture, radiance, displayed);
+        lastScreenshot_ = "saved " + capture->png.string();
+        std::cout << "iblkit-view: wrote " << capture->exr.string() << " and " << capture->png.string()
+                  << '\n';
+      } catch (const Error& e) {
+        if (!withPanel) throw;  // --screenshot at exit: the run fails
+        lastScreenshot_ = std::string("screenshot failed: ") + e.what();  // P: the panel says why
+      }
+    }
+    if (!withPanel) return;
+    PanelContext context{
+        settings_, *renderer_, originalMaterials_,     *environments_, comparison_.get(), median(recent_),
+        width,     height,     window_->description(), cameraMoved_,   lastScreenshot_};
+    const PanelActions actions = panel_->build(context);
+    panel_->render();
+    if (actions.resetCamera) resetCamera();
+    screenshotRequested_ |= actions.screenshot;
+  }
+
+  void resetCamera() {
+    camera_->reset();
+    cameraMoved_ = false;
+  }
+
+  void handleKey(int key, int mods) {
+    if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + int(std::size(kShadingModes)))
+      settings_.mode = kShadingModes[key - GLFW_KEY_1];
+    switch (key) {
+      case GLFW_KEY_ESCAPE:
+        glfwSetWindowShouldClose(window_->window(), GLFW_TRUE);
+        break;
+      case GLFW_KEY_LEFT_BRACKET:
+        settings_.exposure -= 0.5f;
+        break;
+      case GLFW_KEY_RIGHT_BRACKET:
+        settings_.exposure += 0.5f;
+        break;
+      case GLFW_KEY_R:
+        resetCamera();
+        break;
+      case GLFW_KEY_P:
+        screenshotRequested_ = true;
+        break;
+      case GLFW_KEY_H:
+        panel_->showHelp = !panel_->showHelp;
+        break;
+      case GLFW_KEY_TAB:
+        panel_->visible = !panel_->visible;
+        break;
+      case GLFW_KEY_C:
+        if (comparison_) comparison_->cycleView();
+        break;
+      case GLFW_KEY_COMMA:
+        environments_->step(-1);
+        break;
+      case GLFW_KEY_PERIOD:
+        environments_->step(+1);
+        break;
+      case GLFW_KEY_EQUAL:
+      case GLFW_KEY_KP_ADD:
+      case GLFW_KEY_PAGE_UP:
+        zoom(0.9f);
+        break;
+      case GLFW_KEY_MINUS:
+      case GLFW_KEY_KP_SUBTRACT:
+      case GLFW_KEY_PAGE_DOWN:
+        zoom(1.0f / 0.9f);
+        break;
+      case GLFW_KEY_LEFT:
+      case GLFW_KEY_RIGHT:
+      case GLFW_KEY_UP:
+      case GLFW_KEY_DOWN: {
+        const float sx = key == GLFW_KEY_LEFT ? -1.0f : key == GLFW_KEY_RIGHT ? 1.0f : 0.0f;
+        const float sy = key == GLFW_KEY_DOWN ? -1.0f : key == GLFW_KEY_UP ? 1.0f : 0.0f;
+        if (mods & GLFW_MOD_SHIFT)
+          camera_->pan(0.05f * sx, 0.05f * sy);
+        else
+          camera_->orbit(glm::radians(5.0f) * sx, glm::radians(5.0f) * sy);
+        cameraMoved_ = true;
+        break;
+      }
+      default:
+        break;
+    }
+  }
+
+  void zoom(float factor) {
+    camera_->zoom(factor);
+    cameraMoved_ = true;
+  }
+
+  void handleInput() {
+    GLFWwindow* window = window_->window();
+    const PendingInput input = std::exchange(input_, {});
+    if (!panel_->wantsKeyboard())
+      for (int key : input.keys) handleKey(key, input.mods);
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(window, &x, &y);
+    const double dx = x - cursorX_, dy = y - cursorY_;
+    cursorX_ = x;
+    cursorY_ = y;
+    const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    const bool other = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                       glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+    int windowWidth = 1, windowHeight = 1;
+    glfwGetWindowSize(window, &windowWidth, &windowHeight);
+    if (!left && !other) drag_ = Drag::None;
+    if (drag_ == Drag::None && !panel_->wantsMouse()) {
+      if (left)
+        drag_ = comparison_ && comparison_->nearDivider(x, windowWidth) ? Drag::Divider : Drag::Orbit;
+      else if (other)
+        drag_ = Drag::Pan;
+      if (input.scroll != 0.0) zoom(std::pow(0.9f, float(input.scroll)));
+    }
+    if (dx == 0.0 && dy == 0.0) return;
+    switch (drag_) {
+      case Drag::Orbit:
+        // A drag across the window's width turns the view half way round.
+        camera_->orbit(-float(dx) * glm::pi<float>() / float(windowWidth),
+                       float(dy) * glm::pi<float>() / float(windowWidth));
+        cameraMoved_ = true;
+        break;
+      case Drag::Pan:
+        camera_->pan(-float(dx) / float(windowHeight), float(dy) / float(windowHeight));
+        cameraMoved_ = true;
+        break;
+      case Drag::Divider:
+        comparison_->divider = std::clamp(float(x / windowWidth), 0.0f, 1.0f);
+        break;
+      case Drag::None:
+        break;
+    }
+  }
+
+  ViewerOptions options_;
+  BakedScene bake_;
+  FrameSettings settings_;
+  std::optional<WindowContext> window_;  // first in, last out: the GL objects need its context
+  std::unique_ptr<Renderer> renderer_;
+  std::vector<Material> originalMaterials_;
+  std::optional<OrbitCamera> camera_;
+  std::unique_ptr<ReferenceComparison> comparison_;
+  std::unique_ptr<EnvironmentSwitcher> environments_;
+  std::unique_ptr<Panel> panel_;
+  std::unique_ptr<RenderTarget> target_;
+  PendingInput input_;
+  Drag drag_ = Drag::None;
+  double cursorX_ = 0.0, cursorY_ = 0.0;
+  bool cameraMoved_ = false, screenshotRequested_ = false;
+  std::vector<double> recent_;
+  std::string lastScreenshot_;
+};
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options) {
+  // Bad names fail before anything is loaded or opened.
+  parseComparisonView(options.compare);
+  if (!options.screenshot.empty()) screenshotFiles(options.screenshot);
+  if (!options.environment.empty() && !fs::is_regular_file(options.environment))
+    fail(options.environment, "no such file");
+  return Viewer(options).run();
+}
+
+}  // namespace iblkit

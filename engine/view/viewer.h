@@ -1,0 +1,35 @@
+#pragma once
+// The window viewer of iblkit-view (docs/viewer.md): a GLFW window drawing a baked scene with the
+// Renderer in real time, an orbit camera, the control panel, environment switching, screenshots
+// and the comparison with a path-traced reference.
+#include <filesystem>
+#include <string>
+
+namespace iblkit {
+
+struct ViewerOptions {
+  std::filesystem::path input;  // bake folder, or a scene baked in memory
+  int width = 0, height = 0;    // window size; 0: the reference's, else the scene's
+  std::string mode = "full";
+  float exposure = 0.0f;
+  float envRotation = 0.0f;
+  int samples = 1;  // MSAA
+  bool noSky = false;
+  int aoRays = 64;  // in-memory bakes
+  std::filesystem::path envDir = "assets/hdri";
+  std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)
+  std::filesystem::path reference;    // --reference REF.exr
+  std::string compare = "split";      // the reference view to start with: live, split, difference
+  int frames = 0;                     // > 0: quit after this many frames
+  std::filesystem::path screenshot;   // written from the last frame, at exit, after a pending
+                                      // environment switch has been uploaded
+  bool panel = true;                  // false: start with the panel hidden (Tab shows it)
+};
+
+// Loads the bake (its errors first: no window opens for a bad bake), opens the window and runs the
+// frame loop until Esc, the window's close button or `frames` frames. With `frames`, prints the
+// median frame time on stdout. Throws Error for bad input, a missing display ("cannot open a window
+// (...; use --headless)") or a GL error. Returns the exit status.
+int runViewer(const ViewerOptions& options);
+
+}  // namespace iblkit

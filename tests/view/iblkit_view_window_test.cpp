@@ -1,0 +1,246 @@
+// End-to-end tests of iblkit-view's window (build/bin) under a virtual X server (xvfb-run, from
+// Debian's xvfb and xauth packages; llvmpipe through GLX), on a small bake of the bundled mirror
+// sphere scene: frames render, a screenshot matches the headless frame, the reference split and
+// difference views show what they should, and a missing display or bake is one line and exit 1.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include "engine/core/image_io.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kWidth = 160, kHeight = 120;
+
+using test::shellQuoted;
+
+struct ProgramRun {
+  int status = 0;
+  std::string output;
+};
+
+ProgramRun run(const std::string& command) {
+  ProgramRun result;
+  result.status = test::runCommand(command, &result.output);
+  return result;
+}
+
+std::string program(const std::string& name) { return shellQuoted(test::binDir() / name); }
+
+// iblkit-view in a window on a fresh virtual display (-a: the first free display number; Debian's
+// xvfb-run tries the next one if another test took it meanwhile).
+std::string inWindow(const std::string& arguments) {
+  return "xvfb-run -a -s '-screen 0 640x480x24' " + program("iblkit-view") + " " + arguments;
+}
+
+class IblkitViewWindow : public testing::Test {
+ protected:
+  void SetUp() override {
+    const fs::path scene = test::assetsDir() / "scenes" / "mirror_sphere.json";
+    if (!fs::exists(test::assetsDir() / "hdri" / "sky.exr")) GTEST_SKIP() << "assets not fetched";
+    ASSERT_EQ(run("command -v xvfb-run >/dev/null").status, 0)
+        << "xvfb-run is missing: install xvfb and xauth (scripts/setup.sh)";
+    dir_ = test::scratchDir();
+    bake_ = dir_ / "bake";
+    const ProgramRun bake = run(program("iblkit-bake") + " " + shellQuoted(scene) + " -o " +
+                                shellQuoted(bake_) + " --ao-rays 4 --specular-samples 16 --lut-size 16");
+    ASSERT_EQ(bake.status, 0) << bake.output;
+  }
+
+  // The window's common arguments: small, no environment folder to list.
+  std::string windowArguments(const std::string& extra) const {
+    return shellQuoted(bake_) + " --width " + std::to_string(kWidth) + " --height " +
+           std::to_string(kHeight) + " --env-dir " + shellQuoted(dir_ / "no-maps") + " " + extra;
+  }
+
+  Image renderHeadless(const std::string& name) const {
+    const fs::path out = dir_ / name;
+    const ProgramRun r =
+        run(program("iblkit-view") + " " + shellQuoted(bake_) + " --headless -o " + shellQuoted(out) +
+            " --width " + std::to_string(kWidth) + " --height " + std::to_string(kHeight));
+    EXPECT_EQ(r.status, 0) << r.output;
+    return readExr(out);
+  }
+
+  fs::path dir_, bake_;
+};
+
+bool isMagenta(const glm::vec4& p) { return p.g < 0.01f && p.r > 0.3f && p.b > 0.3f; }
+
+float maxComponent(const glm::vec4& p) { return std::max({p.r, p.g, p.b}); }
+
+TEST_F(IblkitViewWindow, RendersFramesAndItsScreenshotIsTheHeadlessFrame) {
+  const fs::path shot = dir_ / "shot.png";
+  const ProgramRun r = run(inWindow(windowArguments("--frames 3 --screenshot " + shellQuoted(shot))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("3 frames, 160x120"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("median frame time"), std::string::npos) << r.output;
+
+  // The EXR: the live frame's radiance, the sphere covered and lit everywhere.
+  const Image radiance = readExr(dir_ / "shot.exr");
+  ASSERT_EQ(radiance.width(), kWidth);
+  ASSERT_EQ(radiance.height(), kHeight);
+  int covered = 0;
+  for (const glm::vec4& p : radiance.pixels()) {
+    ASSERT_TRUE(std::isfinite(p.r + p.g + p.b));
+    if (p.a == 1.0f) {
+      ++covered;
+      EXPECT_GT(p.r + p.g + p.b, 1e-3f);
+    }
+  }
+  EXPECT_GT(covered, 2000);
+  EXPECT_LT(covered, kWidth * kHeight / 2);
+
+  // The PNG: what the window showed, not one colour.
+  const Image shown = readPng(shot);
+  ASSERT_EQ(shown.width(), kWidth);
+  std::set<std::tuple<int, int, int>> colours;
+  for (const glm::vec4& p : shown.pixels())
+    colours.insert({int(std::lround(p.r * 255)), int(std::lround(p.g * 255)), int(std::lround(p.b * 255))});
+  EXPECT_GT(colours.size(), 200u);
+
+  // The window starts at the scene's camera: its frame is iblkit-view --headless's, up to the
+  // rounding of the orbit camera (a few silhouette pixels may flip).
+  const Image headless = renderHeadless("headless.exr");
+  int differing = 0;
+  for (std::size_t i = 0; i < headless.pixels().size(); ++i) {
+    const glm::vec4 a = radiance.pixels()[i], b = headless.pixels()[i];
+    if (maxComponent(glm::abs(a - b)) > 1e-3f * (1.0f + maxComponent(b))) ++differing;
+  }
+  EXPECT_LT(differing, kWidth * kHeight / 100) << differing << " pixels differ";
+}
+
+TEST_F(IblkitViewWindow, ReferenceSplitViewShowsLiveLeftAndReferenceRight) {
+  const fs::path reference = dir_ / "magenta.exr";
+  writeExr(reference, Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f)),
+           {.pixelType = PixelType::Float});
+  const fs::path shot = dir_ / "split";
+  const ProgramRun r = run(inWindow(windowArguments("--reference " + shellQuoted(reference) +
+                                                    " --frames 2 --screenshot " + shellQuoted(shot))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image shown = readPng(fs::path(shot).concat(".png"));
+  ASSERT_EQ(shown.width(), kWidth);
+  int leftMagenta = 0, rightMagenta = 0, dividerWhite = 0, leftCount = 0, rightCount = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const glm::vec4 p = shown.at(x, y);
+      if (x < kWidth / 2 - 8) leftMagenta += isMagenta(p), ++leftCount;
+      if (x >= kWidth / 2 + 8) rightMagenta += isMagenta(p), ++rightCount;
+      if (x == kWidth / 2) dividerWhite += p.r > 0.95f && p.g > 0.95f && p.b > 0.95f;
+    }
+  EXPECT_LT(leftMagenta, leftCount / 20) << "the live half";
+  EXPECT_EQ(rightMagenta, rightCount) << "the reference half";
+  EXPECT_EQ(dividerWhite, kHeight) << "the divider";
+  // The EXR stays the live frame's radiance, not the composite.
+  const Image radiance = readExr(fs::path(shot).concat(".exr"));
+  int liveMagenta = 0;
+  for (int y = 0; y < kHeight; ++y) liveMagenta += isMagenta(radiance.at(kWidth - 1, y));
+  EXPECT_LT(liveMagenta, kHeight / 2);
+}
+
+TEST_F(IblkitViewWindow, DifferenceViewIsBlackAgainstItselfAndBrightAgainstAnotherImage) {
+  const Image headless = renderHeadless("same.exr");
+  const fs::path magenta = dir_ / "magenta.exr";
+  writeExr(magenta, Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f)),
+           {.pixelType = PixelType::Float});
+  auto blackFraction = [&](const fs::path& reference, const std::string& name) {
+    const fs::path shot = dir_ / name;
+    const ProgramRun r =
+        run(inWindow(windowArguments("--reference " + shellQuoted(reference) +
+                                     " --compare difference --frames 2 --screenshot " + shellQuoted(shot))));
+    EXPECT_EQ(r.status, 0) << r.output;
+    const Image shown = readPng(shot);
+    int black = 0;
+    for (const glm::vec4& p : shown.pixels()) black += maxComponent(p) < 0.02f;
+    return double(black) / double(shown.pixelCount());
+  };
+  EXPECT_GT(blackFraction(dir_ / "same.exr", "same.png"), 0.97);
+  EXPECT_LT(blackFraction(magenta, "other.png"), 0.05);
+}
+
+// --env switches the environment on the worker thread; a scripted run waits for it before the
+// screenshot: a constant red map makes the sky and the mirror red.
+TEST_F(IblkitViewWindow, SwitchesToAnotherEnvironment) {
+  const fs::path red = dir_ / "red.exr";
+  writeExr(red, Image(64, 32, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f)), {.pixelType = PixelType::Float});
+  const fs::path shot = dir_ / "red_shot.exr";
+  const ProgramRun r = run(inWindow(
+      windowArguments("--env " + shellQuoted(red) + " --frames 1 --screenshot " + shellQuoted(shot))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image radiance = readExr(shot);
+  int sky = 0, mirror = 0;
+  for (const glm::vec4& p : radiance.pixels()) {
+    EXPECT_NEAR(p.g, 0.0f, 1e-3f);
+    EXPECT_NEAR(p.b, 0.0f, 1e-3f);
+    if (p.a == 0.0f) sky += std::abs(p.r - 1.0f) < 1e-3f;
+    if (p.a == 1.0f) mirror += p.r > 0.5f;
+  }
+  EXPECT_GT(sky, kWidth * kHeight / 2);
+  EXPECT_GT(mirror, 2000);
+  // A missing map: named, exit 1.
+  const ProgramRun missing =
+      run(program("iblkit-view") + " " + windowArguments("--env " + shellQuoted(dir_ / "no.exr")));
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_TRUE(missing.output.ends_with("iblkit-view: " + (dir_ / "no.exr").string() + ": no such file\n"))
+      << missing.output;
+}
+
+TEST_F(IblkitViewWindow, NoDisplayIsOneLineAndExitStatus1) {
+  const fs::path shot = dir_ / "never.png";
+  const ProgramRun r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + program("iblkit-view") + " " +
+                           windowArguments("--frames 1 --screenshot " + shellQuoted(shot)));
+  EXPECT_EQ(r.status, 1) << r.output;
+  // Warnings of the bake's environment map may come first (sky.exr has a few negative pixels).
+  std::vector<std::string> errors;
+  std::istringstream lines(r.output);
+  for (std::string line; std::getline(lines, line);)
+    if (line.find(": warning: ") == std::string::npos) errors.push_back(line);
+  ASSERT_EQ(errors.size(), 1u) << r.output;
+  EXPECT_EQ(errors[0].rfind("iblkit-view: cannot open a window (", 0), 0u) << r.output;
+  EXPECT_NE(errors[0].find("use --headless)"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(shot));
+  EXPECT_FALSE(fs::exists(dir_ / "never.exr"));
+}
+
+TEST_F(IblkitViewWindow, BadInputFailsBeforeAWindowOpens) {
+  // A missing bake: loadBake's error, as --headless prints it.
+  const fs::path missing = dir_ / "missing";
+  const ProgramRun window = run(program("iblkit-view") + " " + shellQuoted(missing));
+  const ProgramRun headless = run(program("iblkit-view") + " " + shellQuoted(missing) + " --headless -o " +
+                                  shellQuoted(dir_ / "x.exr"));
+  EXPECT_EQ(window.status, 1);
+  EXPECT_EQ(window.output, headless.output);
+  EXPECT_EQ(window.output.rfind("iblkit-view: " + missing.string() + ": ", 0), 0u) << window.output;
+  // A missing reference, a bad view name, a bad screenshot name: named, without a display.
+  const ProgramRun reference =
+      run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(dir_ / "none.exr")));
+  EXPECT_EQ(reference.status, 1);
+  EXPECT_TRUE(reference.output.ends_with("iblkit-view: " + (dir_ / "none.exr").string() +
+                                         ": cannot open: No such file or directory\n"))
+      << reference.output;
+  const ProgramRun view = run(program("iblkit-view") + " " + windowArguments("--compare sideways"));
+  EXPECT_EQ(view.status, 1);
+  EXPECT_EQ(view.output,
+            "iblkit-view: --compare: unknown view 'sideways' (expected live, split or difference)\n");
+  const ProgramRun shot =
+      run(program("iblkit-view") + " " + windowArguments("--screenshot " + shellQuoted(dir_ / "a.jpg")));
+  EXPECT_EQ(shot.status, 1);
+  EXPECT_NE(shot.output.find("unsupported screenshot format"), std::string::npos) << shot.output;
+  // Window flags with --headless, headless flags without it.
+  EXPECT_EQ(run(program("iblkit-view") + " " + shellQuoted(bake_) + " --headless -o " +
+                shellQuoted(dir_ / "h.exr") + " --frames 2")
+                .status,
+            1);
+  EXPECT_EQ(run(program("iblkit-view") + " " + shellQuoted(bake_) + " --bench 2").status, 1);
+}
+
+}  // namespace
+}  // namespace iblkit
