@@ -62,6 +62,9 @@ int main(int argc, char** argv) {
   app.add_option("--supersample", settings.engineSupersample,
                  "engine frames render K x K pixels per pixel, box-filtered down (1, 2 or 4)")
       ->check(CLI::IsMember({1, 2, 4}));
+  app.add_option("--integrator", settings.referenceIntegrator,
+                 "the reference's iblkit-trace integrator: path (default) or direct (no interreflection)")
+      ->check(CLI::IsMember({"path", "direct"}));
   app.add_flag("--strict", strict, "exit with status 2 when a claim does not hold");
   CLI11_PARSE(app, argc, argv);
 

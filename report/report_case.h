@@ -35,6 +35,9 @@ struct ReportSettings {
   // ...and render K x K pixels per output pixel (iblkit-view --supersample K): 4 x 2 x 2 = 16
   // shaded samples by default, since 4 still alias the mirror sphere's minified reflection.
   int engineSupersample = 2;
+  // iblkit-trace --integrator of the reference: path (full global illumination) or direct (one
+  // bounce: what the engine's modes model without interreflection), for experiments.
+  std::string referenceIntegrator = "path";
 };
 
 struct ModeResult {

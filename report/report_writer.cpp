@@ -74,6 +74,7 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                           {"passSpp", summary.settings.passSpp},
                           {"engineSamples", summary.settings.engineSamples},
                           {"engineSupersample", summary.settings.engineSupersample},
+                          {"referenceIntegrator", summary.settings.referenceIntegrator},
                           {"maxPasses", summary.settings.maxPasses},
                           {"negligibleRatio", summary.settings.negligibleRatio},
                           {"negligibleRelMse", summary.settings.negligibleRelMse}};
@@ -215,6 +216,23 @@ relMSE, estimated from two independent halves, is at most )"
          << fixed(claim.bound, 4) << "</td><td class=" << (claim.holds ? "ok>yes" : "no>no") << "</td><td class=l>"
          << escape(claim.detail) << "</td></tr>\n";
   html << "</table>\n";
+  for (const Claim& claim : summary.claims) {
+    if (claim.holds) continue;
+    if (claim.statement.rfind("diffuse_sphere: sh mode mean relative error", 0) == 0)
+      html << "<p class=why><b>Why the diffuse sphere's 3% does not hold:</b> that is the error of SH9 itself. "
+              "Nine coefficients cannot hold the irradiance of a map with a sun or small bright lights; "
+              "the column <i>SH9's own error</i> below gives it per map, computed by brute force on the same "
+              "normals, and <i>sh beyond SH9</i> what the engine adds to it (docs/report.md).</p>\n";
+    if (claim.statement.rfind("bunny: mean FLIP of sh > sh-ao", 0) == 0)
+      html << "<p class=why><b>Why AO does not help here:</b> the bunny and its ground are white (albedo 0.8). "
+              "The directions AO takes away are mostly the ground's, which in the path-traced reference send back "
+              "light bounced off the lit ground; and a scalar AO dims every direction alike, the bright sky above "
+              "included, while what the ground blocks is the darker lower half of the map. The bent normal and "
+              "PRT take the blocked directions into account, and <code>full</code>'s multi-bounce AO puts the "
+              "bounced light back. Against a reference without interreflection (<code>--integrator direct</code>) "
+              "AO lowers the relMSE that <code>sh</code> has in the shadows, but not the FLIP of the lit areas "
+              "(docs/report.md).</p>\n";
+  }
 
   for (const std::string& scene : scenesInOrder(summary.cases)) {
     html << "<h2>" << scene << "</h2>\n";

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "baker/environment_sh.h"
@@ -41,15 +43,19 @@ Sh9Truncation sh9Truncation(const EnvironmentMap& environment, const SphericalHa
   if (mask.size() != normals.pixelCount())
     throw Error("SH9 truncation: mask has " + std::to_string(mask.size()) + " pixels, normals " +
                 std::to_string(normals.pixelCount()));
-  std::vector<std::size_t> pixels;
+  // Each distinct normal once (a ground plane's pixels share one): pixelDirection[k] indexes directions.
+  std::vector<std::size_t> pixels, pixelDirection;
   std::vector<glm::vec3> directions;
+  std::map<std::tuple<float, float, float>, std::size_t> seen;
   for (std::size_t i = 0; i < mask.size(); ++i) {
     if (!mask[i]) continue;
     const glm::vec3 n(normals.pixels()[i]);
     const float length = glm::length(n);
     if (!std::isfinite(length) || length < 0.5f) continue;
+    const auto [found, added] = seen.try_emplace({n.x, n.y, n.z}, directions.size());
+    if (added) directions.push_back(n / length);
     pixels.push_back(i);
-    directions.push_back(n / length);
+    pixelDirection.push_back(found->second);
   }
   EnvironmentMap coarse =
       EnvironmentMap::fromImage(averageLatLongDown(environment.image(), bruteForceWidth), "SH9 truncation map");
@@ -59,8 +65,9 @@ Sh9Truncation sh9Truncation(const EnvironmentMap& environment, const SphericalHa
   Sh9Truncation result;
   result.ratio.assign(mask.size(), 1.0f);
   double difference = 0.0, total = 0.0;
-  for (std::size_t k = 0; k < directions.size(); ++k) {
-    const double truth = luminance(exact[k]), approximation = luminance(sh.irradiance(directions[k]));
+  for (std::size_t k = 0; k < pixels.size(); ++k) {
+    const std::size_t d = pixelDirection[k];
+    const double truth = luminance(exact[d]), approximation = luminance(sh.irradiance(directions[d]));
     difference += std::abs(approximation - truth);
     total += truth;
     if (truth > 0.0) result.ratio[pixels[k]] = float(approximation / truth);
