@@ -10,10 +10,30 @@ vec3 splitSumKaris(vec3 f0, vec3 f90, vec2 dfg) { return f0 * dfg.x + f90 * dfg.
 // the single-scattering lobe of albedo E (f0 = 1) is scaled by 1 + f0 (1 / E - 1).
 vec3 energyCompensationFdezAguera(vec3 f0, float E) { return 1.0 + f0 * (1.0 / max(E, 1e-4) - 1.0); }
 
-// Specular occlusion from ambient occlusion (Lagarde and de Rousiers 2014, "Moving Frostbite to
-// PBR", section 4.10.2, eq. 41): saturate((NoV + ao)^exp2(-16 alpha - 1) - 1 + ao).
-float specularOcclusionLagarde(float NoV, float ao, float alpha) {
-  return clamp(pow(NoV + ao, exp2(-16.0 * alpha - 1.0)) - 1.0 + ao, 0.0, 1.0);
+// Solid angle of the intersection of two cones of half-angle cosines cos1, cos2 whose axes are
+// at cosine cosD (Oat and Sander 2007, "Ambient Aperture Lighting", section 3: exact when one cone
+// holds the other or they are apart, a smoothstep between).
+float coneIntersectionSolidAngleOat(float cos1, float cos2, float cosD) {
+  float a1 = acos(clamp(cos1, -1.0, 1.0)), a2 = acos(clamp(cos2, -1.0, 1.0));
+  float d = acos(clamp(cosD, -1.0, 1.0));
+  float smaller = 2.0 * kPi * (1.0 - max(cos1, cos2));
+  if (d <= abs(a1 - a2)) return smaller;
+  if (d >= a1 + a2) return 0.0;
+  float t = 1.0 - (d - abs(a1 - a2)) / (a1 + a2 - abs(a1 - a2));
+  return smaller * smoothstep(0.0, 1.0, t);
+}
+
+// Specular occlusion from the baked visibility cone (Jimenez et al. 2016, "Practical Real-Time
+// Strategies for Accurate Indirect Occlusion", section 6: the cone-cone approximation): the
+// visible directions are a cone about the bent normal whose cosine-weighted solid angle is the AO
+// (cos = sqrt(1 - ao)); the specular lobe a cone about the reflection r with cos = 0.1^alpha (a
+// point for a mirror, about 84 degrees at alpha 1); the occlusion is the share of the lobe's cone
+// inside the visibility cone.
+float specularOcclusionCone(vec3 bentNormal, float ao, vec3 r, float alpha) {
+  float cosVisible = sqrt(clamp(1.0 - ao, 0.0, 1.0));
+  float cosLobe = clamp(exp2(-3.32193 * alpha), 0.0, 0.9999);
+  float lobe = 2.0 * kPi * (1.0 - cosLobe);
+  return clamp(coneIntersectionSolidAngleOat(cosVisible, cosLobe, dot(bentNormal, r)) / lobe, 0.0, 1.0);
 }
 
 // Multi-bounce ambient occlusion (Jimenez et al. 2016, "Practical Real-Time Strategies for

@@ -66,7 +66,7 @@ vec3 shadingNormal(vec3 v) {
   return dot(n, v) > 0.0 ? n : geometric;
 }
 
-vec3 fullMaterialModel(vec3 n, vec3 v, vec3 albedo, float ao, vec3 irradiance) {
+vec3 fullMaterialModel(vec3 n, vec3 v, vec3 albedo, float ao, vec3 bent, vec3 irradiance) {
   float NoV = clamp(dot(n, v), 1e-4, 1.0);
   vec3 r = reflect(-v, n);
   float alpha = roughness * roughness;
@@ -77,7 +77,7 @@ vec3 fullMaterialModel(vec3 n, vec3 v, vec3 albedo, float ao, vec3 irradiance) {
   vec3 specularAlbedo = splitSumKaris(f0, f90, dfg.xy) * energyCompensationFdezAguera(f0, dfg.z);
   float lod = roughness * (specularLevels - 1.0);
   vec3 prefiltered = textureLod(specularCube, rotateAboutY(r, specularRotation), lod).rgb;
-  float specularOcclusion = specularOcclusionLagarde(NoV, ao, alpha);
+  float specularOcclusion = specularOcclusionCone(bent, ao, r, alpha);
   vec3 specular = prefiltered * specularAlbedo * multiBounceAoJimenez(specularOcclusion, f0);
   // The diffuse base is weighted by what the dielectric layer leaves: 1 - specular max(Fd), with
   // Fd's directional average dielectricF0 A + B in place of the per-direction Schlick term.
@@ -87,6 +87,16 @@ vec3 fullMaterialModel(vec3 n, vec3 v, vec3 albedo, float ao, vec3 irradiance) {
   vec3 bounce = multiBounceAoJimenez(ao, albedo) / max(ao, 1e-3);
   vec3 diffuse = diffuseWeight * albedo / kPi * irradiance * bounce;
   return diffuse + specular;
+}
+
+// The axis of the visibility cone: the baked bent normal, turned towards n as the AO nears 1. An
+// unoccluded vertex sees its whole hemisphere, a 90-degree cone about n; its bent normal is n only
+// on average, and with few bake rays a tilted one would cut off part of that hemisphere. A fully
+// occluded vertex (no bent normal, zero length) keeps n.
+vec3 visibilityConeAxis(vec3 n, float ao) {
+  float length2 = dot(vertexIn.bentNormal, vertexIn.bentNormal);
+  vec3 bent = length2 > 1e-8 ? vertexIn.bentNormal * inversesqrt(length2) : n;
+  return normalize(mix(bent, n, ao));
 }
 
 void main() {
@@ -117,7 +127,7 @@ void main() {
     radiance = albedo / kPi * irradianceSh9RamamoorthiHanrahan(bent, shRadiance) * ao;
   } else {
     vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, shRadiance);
-    radiance = mode == kPrt ? albedo / kPi * irradiance : fullMaterialModel(n, v, albedo, ao, irradiance);
+    radiance = mode == kPrt ? albedo / kPi * irradiance : fullMaterialModel(n, v, albedo, ao, visibilityConeAxis(n, ao), irradiance);
   }
   if (mode != kUnlit) radiance += emissive;
   fragColor = vec4(radiance, coverage);

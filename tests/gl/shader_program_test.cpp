@@ -52,6 +52,7 @@ TEST(ShaderProgram, EveryEmbeddedStageCompilesAndLinks) {
   EXPECT_NO_THROW(ShaderProgram("mesh.vert", "mesh.frag"));
   EXPECT_NO_THROW(ShaderProgram("fullscreen.vert", "sky.frag"));
   EXPECT_NO_THROW(ShaderProgram("fullscreen.vert", "present.frag"));
+  EXPECT_NO_THROW(ShaderProgram("fullscreen.vert", "brdf_probe.frag"));
   checkGlErrors("shader programs");
 }
 
