@@ -79,21 +79,21 @@ class Stopwatch {
 
 // A one-line progress bar on stderr, redrawn when the whole percentage changes; only when stderr
 // is a terminal, so logs and tests see no carriage returns. Called from the worker threads.
-std::function<void(std::size_t, std::size_t)> progressBar() {
+std::function<void(std::size_t, std::size_t)> progressBar(const char* stage) {
   if (!isatty(STDERR_FILENO)) return {};
   struct State {
     std::mutex mutex;
     int shown = -1;
   };
   auto state = std::make_shared<State>();
-  return [state](std::size_t done, std::size_t total) {
+  return [state, stage](std::size_t done, std::size_t total) {
     const int percent = total ? int(100 * done / total) : 100;
     const std::lock_guard lock(state->mutex);
     if (percent <= state->shown) return;
     state->shown = percent;
     constexpr int kWidth = 40;
     const int filled = percent * kWidth / 100;
-    std::fprintf(stderr, "\r%s: visibility [%s%s] %3d%%%s", kProgram, std::string(filled, '#').c_str(),
+    std::fprintf(stderr, "\r%s: %s [%s%s] %3d%%%s", kProgram, stage, std::string(filled, '#').c_str(),
                  std::string(kWidth - filled, ' ').c_str(), percent, percent == 100 ? "\n" : "");
   };
 }
@@ -137,21 +137,32 @@ constexpr int kIrradianceCubeSize = 16;
 json bakeEnvironment(const EnvironmentMap& environment, const Options& options, const fs::path& folder,
                      Stopwatch& stopwatch, json& timings) {
   fs::create_directories(folder / "env");
+  // The environment stages, one step each on the terminal's progress bar (the specular chain is
+  // most of the time).
+  const auto progress = progressBar("environment");
+  auto step = [&](std::size_t done) {
+    if (progress) progress(done, 4);
+  };
+  step(0);
   const SphericalHarmonics9 sh = projectEnvironmentSh9(environment);
   const float cutoff = shWindowCutoff(options.shWindow, sh);
   writeSh9Json(folder / "env" / "sh9.json", sh, cutoff);
   timings["sh9_s"] = stopwatch.lap();
+  step(1);
   const CubeMap irradiance = irradianceCube(environment, kIrradianceCubeSize);
   writeIrradianceCubeExr(folder / "env" / "irradiance.exr", irradiance);
   const IrradianceError shError = shIrradianceError(irradiance, cutoff > 0.0f ? windowSh9(sh, cutoff) : sh);
   timings["irradiance_s"] = stopwatch.lap();
+  step(2);
   SpecularPrefilterOptions specularOptions;
   specularOptions.sampleCount = options.specularSamples;
   const SpecularCube specular = prefilterSpecular(environment, specularOptions);
   writeSpecularCubeExr(folder / "env" / "specular.exr", specular);
   timings["specular_s"] = stopwatch.lap();
+  step(3);
   writeBrdfLutExr(folder / "env" / "brdf_lut.exr", computeBrdfLut(options.lutSize));
   timings["brdf_lut_s"] = stopwatch.lap();
+  step(4);
   return {{"sh_window_cutoff", cutoff},
           {"irradiance_cube_size", kIrradianceCubeSize},
           {"sh9_irradiance_error",
@@ -188,7 +199,7 @@ int bake(const Options& options) {
   settings.bounces = options.bounces;
   if (options.bounces > 0)
     for (const Mesh& mesh : scene.meshes) settings.albedo.push_back(diffuseAlbedo(scene, mesh));
-  settings.progress = progressBar();
+  settings.progress = progressBar("visibility");
   VisibilityStatistics statistics;
   const std::vector<MeshVisibility> visibility = bakeVertexVisibility(scene.meshes, settings, &statistics);
   const double visibilitySeconds = stopwatch.lap();
