@@ -135,7 +135,7 @@ class BorderedCubeChain {
 
 std::uint32_t specularSampleCount(float roughness, std::uint32_t maxSamples) {
   const auto scaled = static_cast<std::uint32_t>(std::lround(static_cast<float>(maxSamples) * roughness));
-  return std::clamp(scaled, std::min(128u, maxSamples), maxSamples);
+  return std::clamp(scaled, std::min(64u, maxSamples), maxSamples);
 }
 
 namespace {

@@ -40,7 +40,7 @@ struct SpecularCube {
 };
 
 // Samples per texel for a level of perceptual roughness r: round(maxSamples * r), at least
-// min(128, maxSamples). Narrow lobes cover few source texels, and filtered importance sampling
+// min(64, maxSamples). Narrow lobes cover few source texels, and filtered importance sampling
 // widens each sample's footprint to match, so they need fewer samples; the smooth levels are also
 // the large ones, and this keeps them from dominating the cost (level 1 of a 128 base at 1024
 // samples would be 75% of the chain). Checked per level against brute force in the tests.

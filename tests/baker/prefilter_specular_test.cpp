@@ -79,7 +79,7 @@ TEST(SpecularPrefilter, LevelsMatchABruteForceLobeIntegral) {
 TEST(SpecularPrefilter, SampleCountGrowsWithRoughness) {
   EXPECT_EQ(specularSampleCount(1.0f, 1024), 1024u);
   EXPECT_EQ(specularSampleCount(0.5f, 1024), 512u);
-  EXPECT_EQ(specularSampleCount(0.05f, 1024), 128u);
+  EXPECT_EQ(specularSampleCount(0.05f, 1024), 64u);
   EXPECT_EQ(specularSampleCount(0.05f, 16), 16u);
 }
 
