@@ -1,14 +1,15 @@
 # iblkit: one entry point for people and CI.
 #   make demo    install, fetch assets, build, run the pipeline on the bundled scenes
 #   make test    install, fetch assets, build, run every test (ctest)
-#   make build   configure and build into build/
+#   make build   configure and build into build/ (programs, tests, benchmarks)
+#   make programs  only the programs (what make demo needs)
 #   make bench   build and run the benchmarks (results: docs/benchmarks.md)
 #   make sanitize  build with ASan+UBSan into build-asan/ and run the tests there
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all setup assets configure build test demo bench sanitize clean
+.PHONY: all setup assets configure build programs test demo bench sanitize clean
 
 all: build
 
@@ -27,7 +28,10 @@ build: configure
 test: build assets
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-demo: build assets
+programs: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target iblkit_programs
+
+demo: programs assets
 	@bash scripts/demo.sh $(BUILD)
 
 bench: build assets
