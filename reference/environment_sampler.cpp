@@ -3,13 +3,23 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
+#include <numbers>
 
 #include "engine/core/latlong.h"
 
 namespace iblkit {
 
 namespace {
-constexpr float kTwoPiSquared = 2.0f * glm::pi<float>() * glm::pi<float>();
+// cos(theta) at the top edge of each texel row of a map `height` texels high, and at the bottom of
+// the last: y = cos(pi * row / height), 1 at the north pole (+Y) to -1 at the south pole.
+std::vector<float> rowEdges(int height) {
+  std::vector<float> edges(static_cast<std::size_t>(height) + 1);
+  for (int y = 0; y <= height; ++y)
+    edges[static_cast<std::size_t>(y)] = static_cast<float>(std::cos(std::numbers::pi * y / height));
+  edges.front() = 1.0f;
+  edges.back() = -1.0f;
+  return edges;
+}
 // Floor of the compensated weights, relative to the mean (pbrt-v4).
 constexpr float kCompensationFloor = 1e-3f;
 // Maps whose weights vary by less than this fraction of their mean are not compensated (Mitsuba 3).
@@ -24,10 +34,13 @@ std::vector<float> EnvironmentSampler::texelWeights(const EnvironmentMap& map, b
     for (int x = 0; x < width; ++x)
       luminance[static_cast<std::size_t>(y) * width + x] = map.texelLuminance(x, y);
 
+  // Each texel's weight is its luminance times its solid angle, which is proportional to its
+  // row's cos(theta) span (times height / 2, which keeps the weights near sin(theta) x luminance).
+  const std::vector<float> edges = rowEdges(height);
   std::vector<float> weights(luminance.size());
   for (int y = 0; y < height; ++y) {
-    const float sinTheta =
-        std::sin(glm::pi<float>() * (static_cast<float>(y) + 0.5f) / static_cast<float>(height));
+    const float rowSolidAngle =
+        (edges[static_cast<std::size_t>(y)] - edges[static_cast<std::size_t>(y) + 1]) * 0.5f * static_cast<float>(height);
     for (int x = 0; x < width; ++x) {
       float neighbourhoodMax = 0.0f;
       for (int dy = -1; dy <= 1; ++dy) {
@@ -37,7 +50,7 @@ std::vector<float> EnvironmentSampler::texelWeights(const EnvironmentMap& map, b
           neighbourhoodMax = std::max(neighbourhoodMax, luminance[static_cast<std::size_t>(sy) * width + sx]);
         }
       }
-      weights[static_cast<std::size_t>(y) * width + x] = neighbourhoodMax * sinTheta;
+      weights[static_cast<std::size_t>(y) * width + x] = neighbourhoodMax * rowSolidAngle;
     }
   }
 
@@ -60,20 +73,34 @@ std::vector<float> EnvironmentSampler::texelWeights(const EnvironmentMap& map, b
 }
 
 EnvironmentSampler::EnvironmentSampler(const EnvironmentMap& map, bool misCompensation)
-    : map_(map), distribution_(texelWeights(map, misCompensation, &compensated_), map.width(), map.height()) {
+    : map_(map),
+      distribution_(texelWeights(map, misCompensation, &compensated_), map.width(), map.height()),
+      rowCosTheta_(rowEdges(map.height())) {
   black_ = distribution_.integral() <= 0.0f;
+  const double height = map.height();
+  rowPdfScale_.resize(static_cast<std::size_t>(map.height()));
+  for (std::size_t y = 0; y < rowPdfScale_.size(); ++y) {
+    const double span = static_cast<double>(rowCosTheta_[y]) - static_cast<double>(rowCosTheta_[y + 1]);
+    rowPdfScale_[y] = static_cast<float>(1.0 / (2.0 * std::numbers::pi * height * span));
+  }
 }
 
 EnvironmentSampler::Sample EnvironmentSampler::sample(glm::vec2 u) const {
   const PiecewiseConstant2D::Sample s = distribution_.sample(u);
-  const glm::vec3 mapDirection = latLongDirection(s.p);
-  const float sinTheta = std::hypot(mapDirection.x, mapDirection.z);
+  // Uniform over the texel's solid angle: the fraction of the way down the row, linear in cos(theta).
+  const std::size_t row = static_cast<std::size_t>(s.offset.y);
+  const float along = std::clamp(s.p.y * static_cast<float>(distribution_.height()) - static_cast<float>(row), 0.0f, 1.0f);
+  const float cosTheta = std::clamp(glm::mix(rowCosTheta_[row], rowCosTheta_[row + 1], along), -1.0f, 1.0f);
+  const float sinTheta = std::sqrt(std::max(0.0f, (1.0f - cosTheta) * (1.0f + cosTheta)));
+  const float longitude = 2.0f * glm::pi<float>() * (0.5f - s.p.x);
+  const glm::vec3 mapDirection(sinTheta * std::sin(longitude), cosTheta, sinTheta * std::cos(longitude));
+  const glm::vec2 uv(s.p.x, std::acos(cosTheta) / glm::pi<float>());
   Sample out;
   out.direction = map_.toWorldDirection(mapDirection);
   // The bilinear lookup at the sampled (u, v) itself: map_.radiance(out.direction) would find the
   // same point again through two arctangents.
-  out.radiance = map_.intensity() * sampleLatLongBilinear(map_.image(), s.p);
-  out.pdf = sinTheta > 0.0f ? s.pdf / (kTwoPiSquared * sinTheta) : 0.0f;
+  out.radiance = map_.intensity() * sampleLatLongBilinear(map_.image(), uv);
+  out.pdf = solidAnglePdf(s.pdf, s.offset.y);
   return out;
 }
 
@@ -84,9 +111,9 @@ EnvironmentSampler::Lookup EnvironmentSampler::lookup(const glm::vec3& worldDire
   const glm::vec2 uv = latLongUv(mapDirection);
   Lookup out;
   out.radiance = map_.intensity() * sampleLatLongBilinear(map_.image(), uv);
-  // hypot(x, z), not sqrt(1 - y^2): stays non-zero for directions a float step from a pole.
-  const float sinTheta = std::hypot(mapDirection.x, mapDirection.z);
-  if (sinTheta > 0.0f) out.pdf = distribution_.pdf(uv) / (kTwoPiSquared * sinTheta);
+  const int height = distribution_.height();
+  const int row = std::clamp(static_cast<int>(uv.y * static_cast<float>(height)), 0, height - 1);
+  out.pdf = solidAnglePdf(distribution_.pdf(uv), row);
   return out;
 }
 

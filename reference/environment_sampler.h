@@ -1,11 +1,15 @@
 #pragma once
 // Importance sampling of a lat-long environment map (the reference path tracer's light sampler).
 //
-// Directions are drawn from a piecewise-constant density over the map's texels proportional to
-// luminance x sin(theta) (marginal over rows, conditional over columns: PiecewiseConstant2D), the
-// standard inverted-CDF construction (pbrt-v4 13.6 / Mitsuba 3 `envmap`). The density in (u, v)
-// becomes a density per steradian through the Jacobian of the lat-long map:
-//   pdf(w) = pdf_uv(u, v) / (2 pi^2 sin(theta)).
+// Texels are drawn from a piecewise-constant distribution proportional to luminance x solid
+// angle (marginal over rows, conditional over columns: PiecewiseConstant2D), the standard
+// inverted-CDF construction (pbrt-v4 13.6 / Mitsuba 3 `envmap`). Within the chosen texel the
+// direction is uniform over its solid angle: the row's fraction picks cos(theta) linearly between
+// the row's edges, not theta. The density per steradian is then exactly constant on each texel,
+//   pdf(w) = pdf_uv(texel) / (2 pi H (cos theta_top - cos theta_bottom)),
+// so a constant map is sampled exactly uniformly over the sphere (the usual uniform-in-theta row,
+// with its density pdf_uv / (2 pi^2 sin theta), varies by 2x and more across the rows nearest the
+// poles of a small map, which costs the white furnace test its noise floor).
 // Lookups are bilinear, which spreads a texel's radiance into its neighbours; each texel's weight
 // is therefore the maximum luminance of its 3x3 neighbourhood (wrapped in longitude), so the pdf
 // is non-zero wherever the looked-up radiance is (no bias when used alone).
@@ -52,11 +56,15 @@ class EnvironmentSampler {
 
  private:
   static std::vector<float> texelWeights(const EnvironmentMap& map, bool misCompensation, bool* compensated);
+  // Density per steradian of a direction in the texel row `row` whose density in (u, v) is pdfUv.
+  float solidAnglePdf(float pdfUv, int row) const { return pdfUv * rowPdfScale_[static_cast<std::size_t>(row)]; }
 
   const EnvironmentMap& map_;
   bool compensated_ = false;
   bool black_ = false;
   PiecewiseConstant2D distribution_;
+  std::vector<float> rowCosTheta_;   // height + 1 row edges: cos of the polar angle from +Y, 1 to -1
+  std::vector<float> rowPdfScale_;   // per row: 1 / (2 pi H (rowCosTheta_[y] - rowCosTheta_[y + 1]))
 };
 
 }  // namespace iblkit

@@ -20,9 +20,10 @@ bool covered(const RenderResult& r, int x, int y) { return r.mask.at(x, y).r == 
 bool background(const RenderResult& r, int x, int y) { return r.mask.at(x, y).r == 0.0f; }
 
 // White furnace: a closed white Lambert object under a uniform environment of 1 reflects exactly
-// what it receives, so every pixel, object or background, is 1. At 256 spp the image mean is
-// within 0.1%; single pixels keep some noise (MIS of env and BRDF sampling is not exact for a
-// constant map): 2%, and 4% on the silhouette, where a pixel averages a few grazing hits.
+// what it receives, so every pixel, object or background, is 1. At 256 spp with MIS (env and BRDF
+// sampling, power heuristic) every pixel the object covers is within 1% (0.86% at worst, 0.27%
+// RMS, with this seed) and the image mean within 0.1%; rim pixels, which average a few grazing
+// hits with the background, within 2% (1.9% at worst).
 TEST(Integrator, WhiteFurnaceIsOneEverywhere) {
   const RenderResult r = renderWith(sphereScene(lambert(1.0f)), EnvironmentMap::constant(glm::vec3(1.0f)),
                                     integratorOf(IntegratorKind::Path), 32, 256);
@@ -30,7 +31,7 @@ TEST(Integrator, WhiteFurnaceIsOneEverywhere) {
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 32; ++x) {
       objectPixels += covered(r, x, y);
-      const float tolerance = covered(r, x, y) || background(r, x, y) ? 0.02f : 0.04f;
+      const float tolerance = covered(r, x, y) || background(r, x, y) ? 0.01f : 0.02f;
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.beauty.at(x, y)[c], 1.0f, tolerance) << x << "," << y;
     }
   EXPECT_GT(objectPixels, 300);
@@ -74,7 +75,8 @@ EnvironmentMap shEnvironment(const SphericalHarmonics9& sh) {
 }
 
 // A white Lambert sphere under band-limited lighting: each pixel is E(n)/pi at its normal
-// (Ramamoorthi and Hanrahan 2001), exactly, with E from the SH coefficients.
+// (Ramamoorthi and Hanrahan 2001), exactly, with E from the SH coefficients. At 512 spp every
+// covered pixel is within 1% (0.89% at worst, 0.17% RMS) and the mean within 0.02%.
 TEST(Integrator, LambertSphereUnderShLightMatchesShIrradiance) {
   const SphericalHarmonics9 sh = skySh();
   const RenderResult r =
@@ -85,11 +87,11 @@ TEST(Integrator, LambertSphereUnderShLightMatchesShIrradiance) {
       if (!covered(r, x, y)) continue;
       const glm::vec3 expected = sh.irradiance(glm::vec3(r.normal.at(x, y))) / glm::pi<float>();
       const glm::vec3 pixel(r.beauty.at(x, y));
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixel[c], expected[c], 0.05f * expected[c]) << x << "," << y;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixel[c], expected[c], 0.01f * expected[c]) << x << "," << y;
       rendered += glm::dvec3(pixel);
       predicted += glm::dvec3(expected);
     }
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(rendered[c] / predicted[c], 1.0, 0.01) << "channel " << c;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(rendered[c] / predicted[c], 1.0, 0.002) << "channel " << c;
 }
 
 // On a lone convex object every path leaves after one bounce, so direct and path agree, for a
