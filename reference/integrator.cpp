@@ -168,7 +168,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
     const glm::vec3 n = point.shadingNormal, ng = point.geometricNormal;
     // The glTF BRDF at this vertex, prepared once for its eval, pdf and sample calls (none with --phong).
     std::optional<BrdfAtPoint> gltfBrdf;
-    if (!settings_.phong) gltfBrdf.emplace(material, n, wo);
+    if (!settings_.phong) gltfBrdf.emplace(*point.lobes, n, wo);
     const BrdfAtPoint* brdf = gltfBrdf ? &*gltfBrdf : nullptr;
 
     if (sampleLights) {

@@ -19,6 +19,8 @@ RenderScene::RenderScene(Scene scene) : scene_(std::move(scene)) {
     meshOfGeometry_[geometry] = i;
   }
   rays_.commit();
+  lobes_.reserve(scene_.materials.size());
+  for (const Material& material : scene_.materials) lobes_.push_back(brdfLobes(material));
 }
 
 SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo) const {
@@ -38,6 +40,7 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo) cons
   if (glm::dot(shading, point.geometricNormal) < 0.0f) shading = -shading;
   point.shadingNormal = glm::dot(shading, wo) > 0.0f ? shading : point.geometricNormal;
   point.material = &scene_.materials[static_cast<std::size_t>(mesh.material)];
+  point.lobes = &lobes_[static_cast<std::size_t>(mesh.material)];
   point.isGround = mesh.isGround;
   return point;
 }

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "engine/core/brdf.h"
 #include "engine/core/material.h"
 #include "engine/core/scene.h"
 #include "raytrace/ray_scene.h"
@@ -22,6 +23,7 @@ struct SurfacePoint {
   // the shading normal) never turns a visible surface black.
   glm::vec3 shadingNormal{0.0f};
   const Material* material = nullptr;
+  const BrdfLobes* lobes = nullptr;  // brdfLobes(*material), derived once per material
   bool isGround = false;
 };
 
@@ -43,6 +45,7 @@ class RenderScene {
   Scene scene_;
   RayScene rays_;
   std::vector<unsigned> meshOfGeometry_;  // Embree geometry id -> index into scene_.meshes
+  std::vector<BrdfLobes> lobes_;          // per material
 };
 
 }  // namespace iblkit

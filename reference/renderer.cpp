@@ -86,6 +86,7 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
   const double tileCount = static_cast<double>(tilesX) * tilesY;
 
   const PixelFilter filter(settings.filter);
+  const PrimaryRays primaryRays(camera, w, h);
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   int samples = 0;
   do {
@@ -105,7 +106,7 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
                     for (int i = first; i < last; ++i) {
                       PixelSampler sampler(seeds, static_cast<std::uint32_t>(i));
                       const glm::vec2 raster = glm::vec2(x, y) + filter.sample(sampler.next2D());
-                      const CameraSample c = integrator.trace(camera.primaryRay(raster, w, h), sampler);
+                      const CameraSample c = integrator.trace(primaryRays(raster), sampler);
                       const glm::dvec3 radiance(c.radiance);
                       s.radiance += radiance;
                       s.radianceSquared += radiance * radiance;

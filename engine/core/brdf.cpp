@@ -26,8 +26,10 @@ glm::vec3 schlickFresnel(const glm::vec3& f0, const glm::vec3& f90, float cosThe
 
 using Lobes = BrdfLobes;
 
-Lobes lobesOf(const Material& material) {
-  Lobes l;
+}  // namespace
+
+BrdfLobes brdfLobes(const Material& material) {
+  BrdfLobes l;
   l.baseColor = glm::clamp(material.baseColor, 0.0f, 1.0f);
   l.metallic = std::clamp(material.metallic, 0.0f, 1.0f);
   l.specular = std::clamp(material.specular, 0.0f, 1.0f);
@@ -46,6 +48,8 @@ Lobes lobesOf(const Material& material) {
   l.hasSpecular = maxComponent(l.f90) > 0.0f;
   return l;
 }
+
+namespace {
 
 // The Fresnel-weighted specular layer's tint, F(v.h).
 glm::vec3 specularFresnel(const Lobes& l, float cosThetaD) { return schlickFresnel(l.f0, l.f90, cosThetaD); }
@@ -127,24 +131,27 @@ BrdfSample toWorld(BrdfSample s, const Frame& frame) {
 
 glm::vec3 evalBrdf(const Material& material, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi) {
   const Frame frame = Frame::fromZ(n);
-  return evalLocal(lobesOf(material), frame.toLocal(wo), frame.toLocal(wi));
+  return evalLocal(brdfLobes(material), frame.toLocal(wo), frame.toLocal(wi));
 }
 
 BrdfSample sampleBrdf(const Material& material, const glm::vec3& n, const glm::vec3& wo, glm::vec2 u,
                       float uLobe) {
   const Frame frame = Frame::fromZ(n);
-  return toWorld(sampleLocal(lobesOf(material), frame.toLocal(wo), u, uLobe), frame);
+  return toWorld(sampleLocal(brdfLobes(material), frame.toLocal(wo), u, uLobe), frame);
 }
 
 float pdfBrdf(const Material& material, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi) {
   const Frame frame = Frame::fromZ(n);
-  const Lobes lobes = lobesOf(material);
+  const Lobes lobes = brdfLobes(material);
   const glm::vec3 woLocal = frame.toLocal(wo);
   return pdfLocal(lobes, woLocal, frame.toLocal(wi), specularProbability(lobes, woLocal.z));
 }
 
 BrdfAtPoint::BrdfAtPoint(const Material& material, const glm::vec3& n, const glm::vec3& wo)
-    : frame_(Frame::fromZ(n)), woLocal_(frame_.toLocal(wo)), lobes_(lobesOf(material)) {
+    : BrdfAtPoint(brdfLobes(material), n, wo) {}
+
+BrdfAtPoint::BrdfAtPoint(const BrdfLobes& lobes, const glm::vec3& n, const glm::vec3& wo)
+    : frame_(Frame::fromZ(n)), woLocal_(frame_.toLocal(wo)), lobes_(lobes) {
   pSpecular_ = specularProbability(lobes_, woLocal_.z);
 }
 
@@ -161,7 +168,7 @@ BrdfSample BrdfAtPoint::sample(glm::vec2 u, float uLobe) const {
 }
 
 float specularLobeProbability(const Material& material, float cosThetaO) {
-  return specularProbability(lobesOf(material), cosThetaO);
+  return specularProbability(brdfLobes(material), cosThetaO);
 }
 
 float evalPhongLobe(const PhongLobe& lobe, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi) {

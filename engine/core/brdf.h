@@ -69,6 +69,8 @@ struct BrdfLobes {
   bool hasDiffuse = false;   // the diffuse term is non-zero somewhere
   bool hasSpecular = false;  // the specular term is non-zero somewhere
 };
+// The lobes of `material` (its factors clamped to their ranges).
+BrdfLobes brdfLobes(const Material& material);
 
 // The BRDF of one material at one shading point seen from one direction wo, with what the three
 // functions above would each derive again (the lobes, the shading frame, wo in it, the lobe
@@ -77,6 +79,9 @@ struct BrdfLobes {
 class BrdfAtPoint {
  public:
   BrdfAtPoint(const Material& material, const glm::vec3& n, const glm::vec3& wo);
+  // The same with the material's lobes derived beforehand (brdfLobes(material)), for a renderer
+  // that keeps them per material instead of deriving them at every vertex.
+  BrdfAtPoint(const BrdfLobes& lobes, const glm::vec3& n, const glm::vec3& wo);
   glm::vec3 eval(const glm::vec3& wi) const;
   float pdf(const glm::vec3& wi) const;
   BrdfSample sample(glm::vec2 u, float uLobe) const;

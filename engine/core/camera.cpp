@@ -34,16 +34,28 @@ glm::mat4 Camera::projectionMatrix(float aspect) const {
 }
 
 Ray Camera::primaryRay(const glm::vec2& rasterPos, int width, int height) const {
-  const float ndcX = 2.0f * rasterPos.x / float(width) - 1.0f;
-  const float ndcY = 1.0f - 2.0f * rasterPos.y / float(height);
+  return PrimaryRays(*this, width, height)(rasterPos);
+}
+
+PrimaryRays::PrimaryRays(const Camera& camera, int width, int height)
+    : position_(camera.position),
+      forward_(camera.forward),
+      toNdcX_(2.0f / float(width)),
+      toNdcY_(2.0f / float(height)) {
   // glm::perspective maps camera-space (x, y, -1) to NDC (x / (aspect tan), y / tan).
-  const float tanHalfFov = std::tan(0.5f * yfovRadians);
+  const float tanHalfFov = std::tan(0.5f * camera.yfovRadians);
   const float aspect = float(width) / float(height);
   // The same orthonormal basis glm::lookAt builds from (forward, up).
-  const glm::vec3 right = glm::normalize(glm::cross(forward, up));
-  const glm::vec3 trueUp = glm::cross(right, forward);
-  const glm::vec3 direction = ndcX * aspect * tanHalfFov * right + ndcY * tanHalfFov * trueUp + forward;
-  return Ray{position, glm::normalize(direction)};
+  const glm::vec3 right = glm::normalize(glm::cross(camera.forward, camera.up));
+  const glm::vec3 trueUp = glm::cross(right, camera.forward);
+  right_ = (aspect * tanHalfFov) * right;
+  up_ = tanHalfFov * trueUp;
+}
+
+Ray PrimaryRays::operator()(const glm::vec2& rasterPos) const {
+  const float ndcX = rasterPos.x * toNdcX_ - 1.0f;
+  const float ndcY = 1.0f - rasterPos.y * toNdcY_;
+  return Ray{position_, glm::normalize(ndcX * right_ + ndcY * up_ + forward_)};
 }
 
 ClipPlanes clipPlanesFor(const glm::vec3& position, const Bounds& bounds) {

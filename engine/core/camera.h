@@ -38,6 +38,20 @@ struct Camera {
   Ray primaryRay(const glm::vec2& rasterPos, int width, int height) const;  // unit direction
 };
 
+// Camera::primaryRay for every ray of one width x height image, with the per-image terms (the
+// orthonormal basis, tan(fov / 2), the aspect) computed once; the same rays, bit for bit
+// (primaryRay itself goes through this).
+class PrimaryRays {
+ public:
+  PrimaryRays(const Camera& camera, int width, int height);
+  Ray operator()(const glm::vec2& rasterPos) const;
+
+ private:
+  glm::vec3 position_, forward_;
+  glm::vec3 right_, up_;  // the camera's right and true up, scaled by aspect tan(fov / 2) and tan(fov / 2)
+  float toNdcX_, toNdcY_;  // 2 / width, 2 / height
+};
+
 // Clip distances for a camera at `position` viewing `bounds`: with d the distance to the bounds'
 // centre and r its radius, znear = 0.01 max(d, r) and zfar = d + 20 r, so the default ground of
 // a .json scene (10 r wide) stays inside. A far/near ratio of at most 2100 keeps depth precise.

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/core/fast_atan2.h"
+
 namespace iblkit {
 namespace {
 
@@ -21,8 +23,8 @@ float wrapUnit(float u) { return u - std::floor(u); }
 }  // namespace
 
 glm::vec2 latLongUv(const glm::vec3& direction) {
-  const float longitude = std::atan2(direction.x, direction.z);
-  const float latitude = std::atan2(direction.y, std::hypot(direction.x, direction.z));
+  const float longitude = fastAtan2(direction.x, direction.z);
+  const float latitude = fastAtan2(direction.y, std::hypot(direction.x, direction.z));
   return {0.5f - longitude / (2.0f * kPi), 0.5f - latitude / kPi};
 }
 
@@ -48,7 +50,9 @@ glm::vec3 sampleLatLongBilinear(const Image& latLong, const glm::vec2& uv) {
   const float py = std::clamp(uv.y, 0.0f, 1.0f) * static_cast<float>(h) - 0.5f;
   const float floorX = std::floor(px), floorY = std::floor(py);
   const float fx = px - floorX, fy = py - floorY;
-  const int x0 = (static_cast<int>(floorX) + w) % w, x1 = (x0 + 1) % w;
+  // floorX is in [-1, w - 1]: wrap the two columns without an integer division.
+  const int ix = static_cast<int>(floorX);
+  const int x0 = ix < 0 ? w - 1 : ix, x1 = ix + 1 >= w ? 0 : ix + 1;
   const int y0 = std::max(static_cast<int>(floorY), 0), y1 = std::min(static_cast<int>(floorY) + 1, h - 1);
   const glm::vec3 top = glm::mix(glm::vec3(latLong.at(x0, y0)), glm::vec3(latLong.at(x1, y0)), fx);
   const glm::vec3 bottom = glm::mix(glm::vec3(latLong.at(x0, y1)), glm::vec3(latLong.at(x1, y1)), fx);

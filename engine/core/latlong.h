@@ -20,7 +20,7 @@ using RadianceFunction = std::function<glm::vec3(const glm::vec3& direction)>;
 
 // Direction -> (u, v) in [0, 1]^2. The direction need not be unit length: the formulas are ratios
 // of its components (lon = atan2(x, z), lat = atan2(y, hypot(x, z)), robust at the poles where
-// asin(y) is not). A zero vector gives the image centre (+Z); non-finite input gives NaN.
+// asin(y) is not; atan2 is fastAtan2, within 3e-7 radians). A zero vector gives the image centre (+Z); non-finite input gives NaN.
 glm::vec2 latLongUv(const glm::vec3& direction);
 
 // (u, v) -> unit direction; u, v outside [0, 1] follow the same formula (u is periodic).
