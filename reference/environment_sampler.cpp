@@ -5,6 +5,7 @@
 #include <glm/gtc/constants.hpp>
 #include <numbers>
 
+#include "engine/core/fast_atan2.h"
 #include "engine/core/latlong.h"
 
 namespace iblkit {
@@ -94,7 +95,7 @@ EnvironmentSampler::Sample EnvironmentSampler::sample(glm::vec2 u) const {
   const float sinTheta = std::sqrt(std::max(0.0f, (1.0f - cosTheta) * (1.0f + cosTheta)));
   const float longitude = 2.0f * glm::pi<float>() * (0.5f - s.p.x);
   const glm::vec3 mapDirection(sinTheta * std::sin(longitude), cosTheta, sinTheta * std::cos(longitude));
-  const glm::vec2 uv(s.p.x, std::acos(cosTheta) / glm::pi<float>());
+  const glm::vec2 uv(s.p.x, fastAtan2(sinTheta, cosTheta) / glm::pi<float>());  // theta / pi
   Sample out;
   out.direction = map_.toWorldDirection(mapDirection);
   // The bilinear lookup at the sampled (u, v) itself: map_.radiance(out.direction) would find the
