@@ -11,6 +11,11 @@
 // shading: Embree's rate for the tracer's own ray mix. Both run on 1 and 2 threads (a TBB
 // task_arena of that size). Shading overhead = 1 - replay time / render time.
 //
+// The second argument picks the scene: 0 the bunny as bundled (5,650 triangles on the ground), 1
+// the same scene with the bunny replaced by a dense UV sphere of 600 rings x 1200 segments (1.44 M
+// triangles) of the bunny's size and material where it stood: how the overhead falls as Embree's
+// share of a ray grows with the mesh.
+//
 // Needs the assets: IBLKIT_ASSETS (scripts/bench.sh sets it) or ./assets.
 
 #include <benchmark/benchmark.h>
@@ -18,6 +23,7 @@
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -25,6 +31,7 @@
 #include <vector>
 
 #include "engine/core/environment_map_file.h"
+#include "engine/core/procedural_mesh.h"
 #include "engine/core/scene.h"
 #include "reference/environment_sampler.h"
 #include "reference/integrator.h"
@@ -61,10 +68,40 @@ struct Tracer {
   }
 };
 
-const Tracer& tracer() {
-  static const Tracer t = [] {
-    Tracer t;
-    Scene scene = loadScene(assetsDir() / "scenes" / "bunny.json");
+enum SceneVariant { kBunny = 0, kDenseSphere = 1 };
+
+// bunny.json, or (kDenseSphere) with every non-ground mesh replaced by one dense sphere filling
+// the same bounds.
+Scene benchScene(SceneVariant variant) {
+  Scene scene = loadScene(assetsDir() / "scenes" / "bunny.json");
+  if (variant == kDenseSphere) {
+    const Bounds bounds = objectBounds(scene.meshes);
+    const glm::vec3 extent = bounds.max - bounds.min;
+    const float radius = 0.5f * std::min({extent.x, extent.y, extent.z});
+    const glm::vec3 centre(bounds.center().x, bounds.min.y + radius, bounds.center().z);
+    std::vector<Mesh> meshes;
+    int material = 0;
+    for (Mesh& mesh : scene.meshes) {
+      if (mesh.isGround)
+        meshes.push_back(std::move(mesh));
+      else
+        material = mesh.material;
+    }
+    meshes.push_back(toMesh(uvSphere(centre, radius, 600, 1200), "dense sphere", material));
+    scene.meshes = std::move(meshes);
+    scene.bounds = objectBounds(scene.meshes);
+  }
+  return scene;
+}
+
+const Tracer& tracer(SceneVariant variant) {
+  static std::unique_ptr<Tracer> tracers[2];
+  std::unique_ptr<Tracer>& slot = tracers[variant];
+  if (slot) return *slot;
+  slot = std::make_unique<Tracer>();
+  Tracer& t = *slot;
+  {
+    Scene scene = benchScene(variant);
     t.environment = std::make_unique<EnvironmentMap>(loadEnvironmentMap(scene.environment.file));
     t.environment->setRotationDegrees(scene.environment.rotationDegrees);
     t.environment->setIntensity(scene.environment.intensity);
@@ -77,8 +114,7 @@ const Tracer& tracer() {
     render(*t.integrator, t.camera, t.settings(2));
     t.integrator->recordRays(nullptr);
     t.rays = recorder.rays();
-    return t;
-  }();
+  }
   return t;
 }
 
@@ -108,7 +144,7 @@ bool replay(RTCScene scene, const RecordedRay& r) {
 }
 
 void BM_Render(benchmark::State& state) {
-  const Tracer& t = tracer();
+  const Tracer& t = tracer(static_cast<SceneVariant>(state.range(1)));
   const RenderSettings settings = t.settings(static_cast<int>(state.range(0)));
   std::uint64_t rays = 0;
   for (auto _ : state) {
@@ -122,7 +158,7 @@ void BM_Render(benchmark::State& state) {
 }
 
 void BM_Replay(benchmark::State& state) {
-  const Tracer& t = tracer();
+  const Tracer& t = tracer(static_cast<SceneVariant>(state.range(1)));
   const RTCScene scene = t.scene->rays().embreeScene();
   tbb::task_arena arena(static_cast<int>(state.range(0)));
   std::size_t hits = 0;
@@ -144,8 +180,9 @@ void BM_Replay(benchmark::State& state) {
   state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(t.rays.size());
 }
 
-BENCHMARK(BM_Render)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Replay)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Arguments: threads, scene (SceneVariant).
+BENCHMARK(BM_Render)->ArgsProduct({{1, 2}, {kBunny, kDenseSphere}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Replay)->ArgsProduct({{1, 2}, {kBunny, kDenseSphere}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace iblkit
