@@ -4,9 +4,14 @@
 // same for a given seed whatever the thread count, and --time passes continue the sequence.
 //
 // The first kSobolPairs 2D draws (pixel position, then the first bounce's light and BRDF
-// directions, where stratification pays most) are points of the Owen-scrambled Sobol (0,2)
-// sequence (low_discrepancy.h), scrambled and index-shuffled per pixel and per draw. Everything else
-// comes from a PCG32 stream keyed by the pixel and the sample index.
+// directions, where stratification pays most) are points of the Sobol (0,2)-sequence
+// (low_discrepancy.h), each pair at its own fixed linear permutation of the sample index
+// (none for the pixel position) and each dimension Owen-scrambled per pixel. Each pair on its own
+// is a (0,2)-sequence; the pixel position with the light or the BRDF draw is a 4D sequence whose
+// aligned blocks of 2^m samples are (t,m,4)-nets with t <= 3 up to 4096 samples and t <= 4 up to
+// 65536 (pixel_sampler.cpp), so the samples that land on one side of an edge inside the pixel still
+// cover the light and BRDF squares evenly. Everything else comes from a PCG32 stream keyed by the
+// pixel and the sample index.
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -25,7 +30,7 @@ std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b);
 inline constexpr int kPixelSobolPairs = 3;
 
 // The part of a PixelSampler's keys that depends only on (seed, pixel): the hashes that scramble
-// and shuffle each Sobol pair. The renderer computes it once per pixel instead of once per sample.
+// each Sobol pair. The renderer computes it once per pixel instead of once per sample.
 class PixelSeeds {
  public:
   PixelSeeds(std::uint32_t seed, std::uint32_t pixelIndex);
@@ -33,7 +38,6 @@ class PixelSeeds {
  private:
   friend class PixelSampler;
   std::uint32_t pixelIndex_, pixelSeed_;
-  std::uint32_t shuffleSeeds_[kPixelSobolPairs];
   Sobol02Scramble scrambles_[kPixelSobolPairs];
 };
 

@@ -1,6 +1,8 @@
 #include "engine/core/low_discrepancy.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "engine/core/rng.h"
 
@@ -42,6 +44,18 @@ std::uint32_t dimensionSeed(std::uint32_t seed, std::uint32_t dimension) {
   return static_cast<std::uint32_t>(h >> 32);
 }
 
+// A linear map of 32-bit values over GF(2), given by the images of the 32 bits, tabulated a byte at
+// a time: the image of x is the xor of byByte[k][byte k of x] over the four bytes.
+void tabulateByBytes(const std::uint32_t (&images)[32], std::uint32_t (&byByte)[4][256]) {
+  for (int byte = 0; byte < 4; ++byte)
+    for (std::uint32_t value = 0; value < 256; ++value) {
+      std::uint32_t result = 0;
+      for (int bit = 0; bit < 8; ++bit)
+        if (value & (1u << bit)) result ^= images[8 * byte + bit];
+      byByte[byte][value] = result;
+    }
+}
+
 // Sobol's second dimension as a 32-bit binary fraction: the xor of the direction numbers selected
 // by the bits of index, with v_1 = 0.1b and v_(k+1) = v_k xor (v_k >> 1) (Pascal's triangle mod 2).
 // The xor is linear, so it is taken a byte of the index at a time from four 256-entry tables (the
@@ -55,14 +69,10 @@ struct SobolSecondDimensionTables {
     std::uint32_t directions[32];
     std::uint32_t v = 0x80000000u;
     for (int bit = 0; bit < 32; ++bit, v ^= v >> 1) directions[bit] = v;
+    tabulateByBytes(directions, byByte);
     for (int byte = 0; byte < 4; ++byte)
-      for (std::uint32_t value = 0; value < 256; ++value) {
-        std::uint32_t result = 0;
-        for (int bit = 0; bit < 8; ++bit)
-          if (value & (1u << bit)) result ^= directions[8 * byte + bit];
-        byByte[byte][value] = result;
-        reversedByByte[byte][value] = reverseBits(result);
-      }
+      for (int value = 0; value < 256; ++value)
+        reversedByByte[byte][value] = reverseBits(byByte[byte][value]);
   }
   static std::uint32_t lookup(const std::uint32_t (&table)[4][256], std::uint32_t index) {
     return table[0][index & 0xffu] ^ table[1][(index >> 8) & 0xffu] ^ table[2][(index >> 16) & 0xffu] ^
@@ -111,6 +121,19 @@ glm::vec2 owenScrambledSobol02(std::uint32_t index, const Sobol02Scramble& scram
       SobolSecondDimensionTables::lookup(sobolTables().reversedByByte, index);
   return {unitFloatFromBits(reverseBits(laineKarrasPermutation(index, scramble.dimensionSeeds[0]))),
           unitFloatFromBits(reverseBits(laineKarrasPermutation(reversedSecond, scramble.dimensionSeeds[1])))};
+}
+
+LinearIndexPermutation::LinearIndexPermutation(std::span<const std::uint32_t> columns) {
+  if (columns.size() > 32) throw std::invalid_argument("LinearIndexPermutation: more than 32 columns");
+  std::uint32_t images[32];
+  for (std::size_t bit = 0; bit < 32; ++bit) {
+    images[bit] = bit < columns.size() ? columns[bit] : 1u << bit;
+    // Bit `bit` set and nothing above: the matrix is triangular with a unit diagonal.
+    if (images[bit] >> bit != 1u)
+      throw std::invalid_argument("LinearIndexPermutation: column " + std::to_string(bit) +
+                                  " must have bit " + std::to_string(bit) + " as its highest bit");
+  }
+  tabulateByBytes(images, byByte_);
 }
 
 glm::vec2 hammersley(std::uint32_t index, std::uint32_t count) {

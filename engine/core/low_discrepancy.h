@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 
 namespace iblkit {
 
@@ -47,6 +48,30 @@ struct Sobol02Scramble {
 };
 Sobol02Scramble sobol02Scramble(std::uint32_t seed);
 glm::vec2 owenScrambledSobol02(std::uint32_t index, const Sobol02Scramble& scramble);
+
+// A linear bijection of 32-bit sample indices (over GF(2)) that maps every aligned block of 2^m
+// indices, k 2^m .. (k+1) 2^m - 1, onto an aligned block of 2^m, the first block onto itself: index
+// bit j contributes columns[j], which has bit j set and no higher bit (an upper triangular matrix
+// with a unit diagonal); bits past the given columns map to themselves. Drawing a digital sequence
+// at permuted indices multiplies its generator matrices on the right by this matrix (Faure and
+// Tezuka 2002, "Another Random Scrambling of Digital (t,s)-Sequences"), which keeps the t of its
+// nets: the first 2^m points are the same points in another order, any other aligned block a
+// digital shift of them. What changes is which points of two sequences share an index: two
+// (0,2)-sequences drawn at differently permuted indices form a 4D sequence whose t depends on the
+// permutations.
+class LinearIndexPermutation {
+ public:
+  // columns.size() <= 32; columns[j] must have bit j set and no bit above j.
+  explicit LinearIndexPermutation(std::span<const std::uint32_t> columns);
+  std::uint32_t operator()(std::uint32_t index) const {
+    return byByte_[0][index & 0xffu] ^ byByte_[1][(index >> 8) & 0xffu] ^ byByte_[2][(index >> 16) & 0xffu] ^
+           byByte_[3][index >> 24];
+  }
+
+ private:
+  // The map is linear, so it is taken a byte of the index at a time.
+  std::uint32_t byByte_[4][256];
+};
 
 // Point `index` of the Hammersley set of `count` points: (index / count, radical inverse).
 glm::vec2 hammersley(std::uint32_t index, std::uint32_t count);

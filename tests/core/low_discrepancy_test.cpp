@@ -3,44 +3,39 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "engine/core/rng.h"
 #include "support/chi2.h"
+#include "support/digital_nets.h"
 
 namespace iblkit {
 namespace {
 
 constexpr int kChi2Tests = 2;  // chi-square runs in this file, for the Sidak correction
 
-// True when the 2^m points form a (0,m,2)-net in base 2: for every split m = j + (m - j), each
-// elementary interval of 2^-j by 2^-(m-j) holds exactly one point.
-::testing::AssertionResult isZeroMTwoNet(const std::vector<glm::vec2>& points, int m) {
-  const std::size_t count = std::size_t{1} << m;
-  if (points.size() != count) return ::testing::AssertionFailure() << "expected " << count << " points";
-  for (int j = 0; j <= m; ++j) {
-    const int columns = 1 << j, rows = 1 << (m - j);
-    std::vector<int> hits(count, 0);
-    for (const glm::vec2& p : points) {
-      if (!(p.x >= 0.0f && p.x < 1.0f && p.y >= 0.0f && p.y < 1.0f)) {
-        return ::testing::AssertionFailure() << "point (" << p.x << ", " << p.y << ") outside [0,1)^2";
-      }
-      const int cx = static_cast<int>(p.x * static_cast<float>(columns));
-      const int cy = static_cast<int>(p.y * static_cast<float>(rows));
-      if (++hits[static_cast<std::size_t>(cy * columns + cx)] > 1) {
-        return ::testing::AssertionFailure()
-               << "two points in interval (" << cx << ", " << cy << ") of " << columns << " x " << rows;
-      }
-    }
+// The 2^m points first, first + 1, ... of a 2D sequence, as isNet takes them.
+std::vector<std::vector<float>> points(std::uint32_t first, int m,
+                                       const std::function<glm::vec2(std::uint32_t)>& point) {
+  std::vector<std::vector<float>> result;
+  for (std::uint32_t i = 0; i < (1u << m); ++i) {
+    const glm::vec2 p = point(first + i);
+    result.push_back({p.x, p.y});
   }
-  return ::testing::AssertionSuccess();
+  return result;
 }
 
-std::vector<glm::vec2> points(std::uint32_t first, int m,
-                              const std::function<glm::vec2(std::uint32_t)>& point) {
-  std::vector<glm::vec2> result;
-  for (std::uint32_t i = 0; i < (1u << m); ++i) result.push_back(point(first + i));
-  return result;
+// The net check itself fails on points that are not a net.
+TEST(NetCheck, RejectsPointsThatAreNotANet) {
+  std::vector<std::vector<float>> net = points(0, 6, [](std::uint32_t i) { return sobol02(i); });
+  EXPECT_TRUE(test::isNet(net, 6, 0));
+  net[5] = net[6];  // two points in every box that holds the 7th
+  EXPECT_FALSE(test::isNet(net, 6, 0));
+  PCG32 rng(5);
+  const std::vector<std::vector<float>> random = points(0, 6, [&](std::uint32_t) { return rng.uniform2D(); });
+  EXPECT_FALSE(test::isNet(random, 6, 2));
+  EXPECT_TRUE(test::isNet(random, 6, 6));  // t = m: a single box, all the points
 }
 
 TEST(RadicalInverse, MirrorsTheBits) {
@@ -78,7 +73,7 @@ TEST(Sobol02, SecondDimensionOfLargeIndicesFollowsTheRecurrence) {
 TEST(Sobol02, EveryAlignedBlockIsANet) {
   for (int m = 1; m <= 10; ++m) {
     for (std::uint32_t block = 0; block < 3; ++block) {
-      EXPECT_TRUE(isZeroMTwoNet(points(block << m, m, [](std::uint32_t i) { return sobol02(i); }), m))
+      EXPECT_TRUE(test::isNet(points(block << m, m, [](std::uint32_t i) { return sobol02(i); }), m, 0))
           << "m = " << m << ", block " << block;
     }
   }
@@ -105,9 +100,9 @@ TEST(Sobol02, ScrambledPointsFollowTheirDefinition) {
 TEST(Sobol02, OwenScramblingKeepsTheNetsAndIsSeeded) {
   for (const std::uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
     for (int m = 1; m <= 10; ++m) {
-      EXPECT_TRUE(isZeroMTwoNet(
-          points(std::uint32_t{5} << m, m, [=](std::uint32_t i) { return owenScrambledSobol02(i, seed); }),
-          m))
+      EXPECT_TRUE(test::isNet(
+          points(std::uint32_t{5} << m, m, [=](std::uint32_t i) { return owenScrambledSobol02(i, seed); }), m,
+          0))
           << "seed " << seed << ", m = " << m;
     }
   }
@@ -150,10 +145,56 @@ TEST(OwenScramble, FlipsEachBitByTheBitsAboveItOnly) {
   }
 }
 
+// Random valid columns: bit j set, random bits below it.
+std::vector<std::uint32_t> randomTriangularColumns(PCG32& rng, int count) {
+  std::vector<std::uint32_t> columns;
+  for (int j = 0; j < count; ++j) columns.push_back((1u << j) | (rng.nextUInt32() & ((1u << j) - 1u)));
+  return columns;
+}
+
+TEST(LinearIndexPermutation, IsTheXorOfTheColumnsOfTheIndexBits) {
+  PCG32 rng(21, 4);
+  for (int count : {0, 5, 16, 32}) {
+    const std::vector<std::uint32_t> columns = randomTriangularColumns(rng, count);
+    const LinearIndexPermutation permutation(columns);
+    for (int i = 0; i < 2000; ++i) {
+      const std::uint32_t index = rng.nextUInt32() >> (i % 32);
+      std::uint32_t expected = 0;
+      for (int bit = 0; bit < 32; ++bit)
+        if ((index >> bit) & 1u) expected ^= bit < count ? columns[static_cast<std::size_t>(bit)] : 1u << bit;
+      ASSERT_EQ(permutation(index), expected) << "index " << index << ", " << count << " columns";
+    }
+  }
+}
+
+TEST(LinearIndexPermutation, MapsEachAlignedBlockOntoAnAlignedBlock) {
+  PCG32 rng(8, 1);
+  const LinearIndexPermutation permutation(randomTriangularColumns(rng, 32));
+  for (int m = 0; m <= 12; ++m)
+    for (const std::uint32_t block : {0u, 1u, 7u, 0xfffffu >> m}) {
+      std::vector<bool> seen(std::size_t{1} << m, false);
+      const std::uint32_t imageBlock = block == 0 ? 0u : permutation(block << m) >> m;  // the first: itself
+      for (std::uint32_t i = 0; i < (1u << m); ++i) {
+        const std::uint32_t image = permutation((block << m) | i);
+        ASSERT_EQ(image >> m, imageBlock) << "m = " << m;
+        ASSERT_FALSE(seen[image & ((1u << m) - 1u)]) << "m = " << m;
+        seen[image & ((1u << m) - 1u)] = true;
+      }
+    }
+}
+
+TEST(LinearIndexPermutation, RefusesColumnsThatAreNotTriangular) {
+  // Column 1 without bit 1; column 0 with bit 1; more columns than index bits.
+  EXPECT_THROW(LinearIndexPermutation(std::vector<std::uint32_t>{1u, 1u}), std::invalid_argument);
+  EXPECT_THROW(LinearIndexPermutation(std::vector<std::uint32_t>{3u}), std::invalid_argument);
+  EXPECT_THROW(LinearIndexPermutation(std::vector<std::uint32_t>(33, 1u)), std::invalid_argument);
+  EXPECT_NO_THROW(LinearIndexPermutation(std::vector<std::uint32_t>{1u, 3u, 6u}));
+}
+
 TEST(Hammersley, IsANetForPowersOfTwo) {
   for (int m = 1; m <= 10; ++m) {
     const std::uint32_t count = 1u << m;
-    EXPECT_TRUE(isZeroMTwoNet(points(0, m, [=](std::uint32_t i) { return hammersley(i, count); }), m)) << m;
+    EXPECT_TRUE(test::isNet(points(0, m, [=](std::uint32_t i) { return hammersley(i, count); }), m, 0)) << m;
   }
   EXPECT_EQ(hammersley(3, 8), glm::vec2(0.375f, 0.75f));
   EXPECT_LT(hammersley((1u << 25) - 1u, 1u << 25).x, 1.0f);

@@ -2,7 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <initializer_list>
+#include <optional>
 #include <set>
+#include <vector>
+
+#include "support/chi2.h"
+#include "support/digital_nets.h"
 
 namespace iblkit {
 namespace {
@@ -35,18 +42,86 @@ TEST(PixelSampler, ValuesLieInTheUnitInterval) {
     }
 }
 
-// The Sobol draws of one pixel's first 2^m samples form a (0,m,2)-net: with 16 samples, each of
-// the 4 x 4 cells holds exactly one pixel position (what makes the jitter stratified).
-TEST(PixelSampler, FirstDrawsOfAPixelAreStratified) {
-  for (int pair = 0; pair < PixelSampler::kSobolPairs; ++pair) {
-    std::set<int> cells;
-    for (std::uint32_t sample = 0; sample < 16; ++sample) {
-      PixelSampler sampler(3, 40, sample);
-      glm::vec2 u{};
-      for (int i = 0; i <= pair; ++i) u = sampler.next2D();
-      cells.insert(static_cast<int>(u.x * 4.0f) + 4 * static_cast<int>(u.y * 4.0f));
+// The three Sobol draws of one sample: pixel position, light, BRDF.
+std::array<glm::vec2, PixelSampler::kSobolPairs> sobolDraws(std::uint32_t pixel, std::uint32_t sample) {
+  PixelSampler sampler(3, pixel, sample);
+  std::array<glm::vec2, PixelSampler::kSobolPairs> result;
+  for (glm::vec2& u : result) u = sampler.next2D();
+  return result;
+}
+
+// The 2^m samples block 2^m .. (block + 1) 2^m - 1 of a pixel, each as the coordinates of the
+// given draws (0: pixel position, 1: light, 2: BRDF) one after the other.
+std::vector<std::vector<float>> blockOfDraws(std::uint32_t pixel, int m, std::uint32_t block,
+                                             std::initializer_list<int> draws) {
+  std::vector<std::vector<float>> points;
+  for (std::uint32_t i = 0; i < (1u << m); ++i) {
+    const auto u = sobolDraws(pixel, (block << m) | i);
+    std::vector<float>& p = points.emplace_back();
+    for (int draw : draws) {
+      p.push_back(u[static_cast<std::size_t>(draw)].x);
+      p.push_back(u[static_cast<std::size_t>(draw)].y);
     }
-    EXPECT_EQ(cells.size(), 16u) << "pair " << pair;
+  }
+  return points;
+}
+
+// Each Sobol draw of a pixel's aligned blocks of 2^m samples is a (0,m,2)-net: with 16 samples, each
+// of the 4 x 4 cells (and 2 x 8, ...) holds exactly one pixel position, light or BRDF point.
+TEST(PixelSampler, EachDrawOfEveryAlignedBlockIsStratified) {
+  for (int draw = 0; draw < PixelSampler::kSobolPairs; ++draw)
+    for (int m = 1; m <= 10; ++m)
+      for (std::uint32_t block : {0u, 1u, 5u})
+        EXPECT_TRUE(test::isNet(blockOfDraws(40, m, block, {draw}), m, 0))
+            << "draw " << draw << ", m = " << m << ", block " << block;
+}
+
+// The pixel position with the light draw, and with the BRDF draw, is a 4D (t,m,4)-net for the t of
+// the permutations in pixel_sampler.cpp: the samples in a part of the pixel (one side of a
+// silhouette) still cover the light and BRDF squares evenly. With independently shuffled draws
+// (Burley's padding) the pairs are matched at random and these fail from m = 3 on. The light and
+// BRDF draws together are a 4D net too (they are not one sequence used twice).
+TEST(PixelSampler, PixelPositionAndFirstBounceDrawsFormFourDimensionalNets) {
+  struct Projection {
+    const char* name;
+    std::initializer_list<int> draws;
+    int t[12];  // for m = 1..12
+  };
+  const Projection projections[] = {
+      {"pixel, light", {0, 1}, {0, 1, 1, 1, 2, 1, 2, 2, 2, 3, 3, 3}},
+      {"pixel, BRDF", {0, 2}, {0, 1, 1, 1, 2, 2, 2, 3, 3, 2, 3, 3}},
+      {"light, BRDF", {1, 2}, {0, 1, 2, 3, 2, 1, 2, 2, 3, 4, 5, 4}},
+  };
+  for (const Projection& projection : projections)
+    for (int m = 1; m <= 12; ++m)
+      for (std::uint32_t block : {0u, 3u}) {
+        const int t = projection.t[m - 1];
+        EXPECT_TRUE(test::isNet(blockOfDraws(7, m, block, projection.draws), m, t))
+            << projection.name << ", m = " << m << ", block " << block;
+      }
+}
+
+// Every Sobol coordinate of a given sample index is uniform over pixels, and coordinates of
+// different draws are independent: each dimension has its own Owen scramble per pixel.
+TEST(PixelSampler, DrawsOfOneSampleAreUniformAndIndependentOverPixels) {
+  struct Pairing {
+    const char* name;
+    int xDraw, yDraw;  // x from one draw, y from another
+    std::uint32_t sample;
+  };
+  const Pairing pairings[] = {{"pixel_x_light_y_sample_37", 0, 1, 37}, {"light_x_brdf_y_sample_0", 1, 2, 0}};
+  for (const Pairing& pairing : pairings) {
+    test::Chi2Options options;
+    options.testCount = static_cast<int>(std::size(pairings));
+    options.name = pairing.name;
+    const test::Chi2Result result = test::chi2TestSquare(
+        [&](PCG32& rng) {
+          const auto u = sobolDraws(rng.nextUInt32(), pairing.sample);
+          return std::optional(glm::vec2(u[static_cast<std::size_t>(pairing.xDraw)].x,
+                                         u[static_cast<std::size_t>(pairing.yDraw)].y));
+        },
+        [](const glm::vec2&) { return 1.0; }, options);
+    EXPECT_TRUE(result.passed) << result.message;
   }
 }
 
