@@ -64,7 +64,17 @@ void drawProgress(double fraction, double seconds) {
   std::fflush(stderr);
 }
 
+// An integer option outside lo..hi fails naming the option, before any file is read.
+void checkRange(const char* option, int value, int lo, int hi) {
+  if (value < lo || value > hi)
+    fail(option, std::to_string(value) + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+}
+
 int run(const Options& options, const CLI::App& app) {
+  checkRange("--spp", options.samplesPerPixel, 1, kMaxSamplesPerPixel);
+  if (app.count("--width")) checkRange("--width", options.width, 1, kMaxImageSide);
+  if (app.count("--height")) checkRange("--height", options.height, 1, kMaxImageSide);
+  if (options.threads < 0) fail("--threads", "must be >= 0 (0: all cores)");
   if (options.maxDepth < 1)
     fail("--max-depth", "must be at least 1, got " + std::to_string(options.maxDepth));
   if (!(options.aoDistance > 0.0f)) fail("--ao-distance", "must be positive");
