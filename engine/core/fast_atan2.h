@@ -1,8 +1,9 @@
 #pragma once
 // atan2 for the lat-long lookups of the reference tracer's inner loop (every escaped ray and every
-// environment pdf evaluation needs two): a polynomial instead of libm's atan2f, about 4x cheaper,
-// and within 3e-7 radians of the exact angle (libm's atan2f is within 1.2e-7, half a float ulp at pi;
-// a texel of an 8K map is 7.7e-4 radians).
+// environment pdf evaluation needs two): a polynomial instead of libm's atan2f. latLongUv went
+// from 138 M to 53 M instructions in callgrind's profile of tracer_rays_bench. Within 3e-7
+// radians of the exact angle (libm's atan2f is within 1.2e-7, half a float ulp at pi; a texel of
+// an 8K map is 7.7e-4 radians).
 //
 // atan(t) for t = min(|x|,|y|) / max(|x|,|y|) in [0, 1] is t * P(t^2), P of degree 8, the
 // Chebyshev interpolant of atan(sqrt(s)) / sqrt(s) on s in [0, 1] (9 nodes, converted to
