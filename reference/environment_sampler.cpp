@@ -27,8 +27,8 @@ constexpr float kCompensationFloor = 1e-3f;
 constexpr float kNearConstant = 1e-2f;
 }  // namespace
 
-std::vector<float> EnvironmentSampler::texelWeights(const EnvironmentMap& map, bool misCompensation,
-                                                    bool* compensated) {
+std::vector<float> EnvironmentSampler::texelWeights(const EnvironmentMap& map, const std::vector<float>& edges,
+                                                    bool misCompensation, bool* compensated) {
   const int width = map.width(), height = map.height();
   std::vector<float> luminance(static_cast<std::size_t>(width) * height);
   for (int y = 0; y < height; ++y)
@@ -37,7 +37,6 @@ std::vector<float> EnvironmentSampler::texelWeights(const EnvironmentMap& map, b
 
   // Each texel's weight is its luminance times its solid angle, which is proportional to its
   // row's cos(theta) span (times height / 2, which keeps the weights near sin(theta) x luminance).
-  const std::vector<float> edges = rowEdges(height);
   std::vector<float> weights(luminance.size());
   for (int y = 0; y < height; ++y) {
     const float rowSolidAngle =
@@ -75,8 +74,8 @@ std::vector<float> EnvironmentSampler::texelWeights(const EnvironmentMap& map, b
 
 EnvironmentSampler::EnvironmentSampler(const EnvironmentMap& map, bool misCompensation)
     : map_(map),
-      distribution_(texelWeights(map, misCompensation, &compensated_), map.width(), map.height()),
-      rowCosTheta_(rowEdges(map.height())) {
+      rowCosTheta_(rowEdges(map.height())),
+      distribution_(texelWeights(map, rowCosTheta_, misCompensation, &compensated_), map.width(), map.height()) {
   black_ = distribution_.integral() <= 0.0f;
   const double height = map.height();
   rowPdfScale_.resize(static_cast<std::size_t>(map.height()));

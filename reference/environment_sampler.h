@@ -55,15 +55,17 @@ class EnvironmentSampler {
   bool misCompensated() const { return compensated_; }
 
  private:
-  static std::vector<float> texelWeights(const EnvironmentMap& map, bool misCompensation, bool* compensated);
+  // Luminance (3x3 maximum) x solid angle per texel; rowCosTheta: the rows' edges (rowCosTheta_).
+  static std::vector<float> texelWeights(const EnvironmentMap& map, const std::vector<float>& rowCosTheta,
+                                         bool misCompensation, bool* compensated);
   // Density per steradian of a direction in the texel row `row` whose density in (u, v) is pdfUv.
   float solidAnglePdf(float pdfUv, int row) const { return pdfUv * rowPdfScale_[static_cast<std::size_t>(row)]; }
 
   const EnvironmentMap& map_;
   bool compensated_ = false;
   bool black_ = false;
-  PiecewiseConstant2D distribution_;
   std::vector<float> rowCosTheta_;   // height + 1 row edges: cos of the polar angle from +Y, 1 to -1
+  PiecewiseConstant2D distribution_;
   std::vector<float> rowPdfScale_;   // per row: 1 / (2 pi H (rowCosTheta_[y] - rowCosTheta_[y + 1]))
 };
 
