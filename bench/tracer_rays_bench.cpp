@@ -13,8 +13,8 @@
 //
 // The second argument picks the scene: 0 the bunny as bundled (5,650 triangles on the ground), 1
 // the same scene with the bunny replaced by a dense UV sphere of 600 rings x 1200 segments (1.44 M
-// triangles) of the bunny's size and material where it stood: how the overhead falls as Embree's
-// share of a ray grows with the mesh.
+// triangles) of the bunny's size and material where it stood: whether the overhead falls as Embree's
+// share of a ray grows with the mesh (barely: docs/benchmarks.md).
 //
 // Needs the assets: IBLKIT_ASSETS (scripts/bench.sh sets it) or ./assets.
 
