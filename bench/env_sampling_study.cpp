@@ -72,11 +72,6 @@ std::size_t studyStrategyIndex(EnvSampling sampling) {
 }
 
 void validateSamplingStudySettings(const SamplingStudySettings& settings) {
-  const auto requireInRange = [](const char* option, int value, int lo, int hi) {
-    if (value < lo || value > hi)
-      fail(option,
-           "must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ", not " + std::to_string(value));
-  };
   requireInRange("--width", settings.width, 1, kMaxImageSide);
   requireInRange("--height", settings.height, 1, kMaxImageSide);
   requireInRange("--max-spp", settings.maxSpp, 1, kMaxSamplesPerPixel);

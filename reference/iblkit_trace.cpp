@@ -64,16 +64,11 @@ void drawProgress(double fraction, double seconds) {
   std::fflush(stderr);
 }
 
-// An integer option outside lo..hi fails naming the option, before any file is read.
-void checkRange(const char* option, int value, int lo, int hi) {
-  if (value < lo || value > hi)
-    fail(option, std::to_string(value) + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
-}
-
 int run(const Options& options, const CLI::App& app) {
-  checkRange("--spp", options.samplesPerPixel, 1, kMaxSamplesPerPixel);
-  if (app.count("--width")) checkRange("--width", options.width, 1, kMaxImageSide);
-  if (app.count("--height")) checkRange("--height", options.height, 1, kMaxImageSide);
+  // Before any file is read, naming the option (render() would say "render: ...").
+  requireInRange("--spp", options.samplesPerPixel, 1, kMaxSamplesPerPixel);
+  if (app.count("--width")) requireInRange("--width", options.width, 1, kMaxImageSide);
+  if (app.count("--height")) requireInRange("--height", options.height, 1, kMaxImageSide);
   if (options.threads < 0) fail("--threads", "must be >= 0 (0: all cores)");
   if (options.maxDepth < 1)
     fail("--max-depth", "must be at least 1, got " + std::to_string(options.maxDepth));

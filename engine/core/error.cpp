@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdio>
+#include <string>
 
 namespace iblkit {
 
@@ -12,6 +13,11 @@ std::atomic<WarningSink> gSink{printWarning};
 
 void fail(const std::filesystem::path& file, const std::string& problem) {
   throw Error(file.string() + ": " + problem);
+}
+
+void requireInRange(const std::filesystem::path& what, long long value, long long lo, long long hi) {
+  if (value < lo || value > hi)
+    fail(what, "must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ", not " + std::to_string(value));
 }
 
 void setWarningSink(WarningSink sink) { gSink.store(sink ? sink : printWarning); }

@@ -17,6 +17,10 @@ public:
 // Throws Error("<file>: <problem>").
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& problem);
 
+// Throws Error("<what>: must be in lo..hi, not value") unless lo <= value <= hi. For programs
+// that check an option's range before reading anything (what: the option, "--width").
+void requireInRange(const std::filesystem::path& what, long long value, long long lo, long long hi);
+
 // Non-fatal repairs (NaN pixels set to 0, normals generated) are reported through this hook, one
 // line each, "<file>: warning: <what was repaired>". The default prints to stderr; tests capture.
 using WarningSink = void (*)(const std::string& line);

@@ -103,13 +103,13 @@ TEST_F(IblkitTrace, GaussianFilterSoftensEdges) {
 
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
   const std::pair<std::string, std::string> cases[] = {
-      {"scene.json -o out.exr --spp 0", "iblkit-trace: --spp: 0 is outside 1..16777216\n"},
-      {"scene.json -o out.exr --spp 16777217", "iblkit-trace: --spp: 16777217 is outside 1..16777216\n"},
-      {"scene.json -o out.exr --width 20000", "iblkit-trace: --width: 20000 is outside 1..16384\n"},
-      {"scene.json -o out.exr --height -4", "iblkit-trace: --height: -4 is outside 1..16384\n"},
+      {"scene.json -o out.exr --spp 0", "iblkit-trace: --spp: must be in 1..16777216, not 0\n"},
+      {"scene.json -o out.exr --spp 16777217", "iblkit-trace: --spp: must be in 1..16777216, not 16777217\n"},
+      {"scene.json -o out.exr --width 20000", "iblkit-trace: --width: must be in 1..16384, not 20000\n"},
+      {"scene.json -o out.exr --height -4", "iblkit-trace: --height: must be in 1..16384, not -4\n"},
       {"scene.json -o out.exr --threads -1", "iblkit-trace: --threads: must be >= 0 (0: all cores)\n"},
       // Checked before anything is read: the range error, not the missing scene.
-      {"missing.json -o out.exr --spp 0", "iblkit-trace: --spp: 0 is outside 1..16777216\n"},
+      {"missing.json -o out.exr --spp 0", "iblkit-trace: --spp: must be in 1..16777216, not 0\n"},
       {"scene.json -o out.exr --integrator bidir",
        "iblkit-trace: --integrator: unknown integrator 'bidir' (path, direct or ao)\n"},
       {"scene.json -o out.exr --env missing.exr",
