@@ -8,7 +8,7 @@
 
 #include <filesystem>
 
-#include "engine/core/scene.h"
+#include "core/scene.h"
 
 namespace iblkit {
 

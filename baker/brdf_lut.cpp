@@ -6,9 +6,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "engine/core/image_io.h"
-#include "engine/core/low_discrepancy.h"
-#include "engine/core/microfacet.h"
+#include "core/image_io.h"
+#include "core/low_discrepancy.h"
+#include "core/microfacet.h"
 
 namespace iblkit {
 

@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 
 namespace iblkit {
 

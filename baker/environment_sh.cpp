@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/core/error.h"
-#include "engine/core/file_io.h"
+#include "core/error.h"
+#include "core/file_io.h"
 
 #include <nlohmann/json.hpp>
 

@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
-#include "engine/core/cube_map.h"
-#include "engine/core/environment_map.h"
-#include "engine/core/spherical_harmonics.h"
+#include "core/cube_map.h"
+#include "core/environment_map.h"
+#include "core/spherical_harmonics.h"
 
 namespace iblkit {
 

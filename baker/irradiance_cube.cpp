@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "baker/environment_sh.h"
-#include "engine/core/image.h"
-#include "engine/core/image_io.h"
+#include "core/image.h"
+#include "core/image_io.h"
 
 namespace iblkit {
 

@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
-#include "engine/core/cube_map.h"
-#include "engine/core/environment_map.h"
-#include "engine/core/spherical_harmonics.h"
+#include "core/cube_map.h"
+#include "core/environment_map.h"
+#include "core/spherical_harmonics.h"
 
 namespace iblkit {
 

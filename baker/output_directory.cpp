@@ -6,7 +6,7 @@
 #include <string>
 #include <system_error>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 

@@ -10,11 +10,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/core/error.h"
-#include "engine/core/frame.h"
-#include "engine/core/image_io.h"
-#include "engine/core/low_discrepancy.h"
-#include "engine/core/microfacet.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/image_io.h"
+#include "core/low_discrepancy.h"
+#include "core/microfacet.h"
 
 namespace iblkit {
 

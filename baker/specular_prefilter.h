@@ -18,8 +18,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "engine/core/cube_map.h"
-#include "engine/core/environment_map.h"
+#include "core/cube_map.h"
+#include "core/environment_map.h"
 
 namespace iblkit {
 

@@ -11,10 +11,10 @@
 #include <limits>
 #include <string>
 
-#include "engine/core/error.h"
-#include "engine/core/frame.h"
-#include "engine/core/low_discrepancy.h"
-#include "engine/core/sampling.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/low_discrepancy.h"
+#include "core/sampling.h"
 #include "raytrace/ray_offset.h"
 #include "raytrace/ray_scene.h"
 

@@ -27,9 +27,9 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "engine/core/mesh.h"
-#include "engine/core/ray.h"
-#include "engine/core/spherical_harmonics.h"
+#include "core/mesh.h"
+#include "core/ray.h"
+#include "core/spherical_harmonics.h"
 
 namespace iblkit {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "baker/vertex_visibility.h"
-#include "engine/core/mesh.h"
+#include "core/mesh.h"
 
 namespace iblkit {
 

@@ -29,8 +29,8 @@
 
 #include "baker/vertex_visibility.h"
 #include "bench/raw_embree.h"
-#include "engine/core/procedural_mesh.h"
-#include "engine/core/scene.h"
+#include "core/procedural_mesh.h"
+#include "core/scene.h"
 #include "raytrace/ray_scene.h"
 
 namespace iblkit {

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "bench/raw_embree.h"
-#include "engine/core/procedural_mesh.h"
+#include "core/procedural_mesh.h"
 #include "raytrace/ray_offset.h"
 #include "raytrace/ray_scene.h"
 

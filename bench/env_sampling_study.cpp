@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
+#include "core/error.h"
+#include "core/image_io.h"
 #include "reference/environment_sampler.h"
 #include "reference/render_scene.h"
 #include "reference/renderer.h"

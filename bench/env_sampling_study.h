@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/core/environment_map.h"
-#include "engine/core/image.h"
-#include "engine/core/scene.h"
+#include "core/environment_map.h"
+#include "core/image.h"
+#include "core/scene.h"
 #include "reference/integrator.h"
 
 namespace iblkit {

@@ -1,6 +1,6 @@
 #include "bench/marked_section.h"
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 

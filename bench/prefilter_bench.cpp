@@ -8,8 +8,8 @@
 
 #include "baker/environment_sh.h"
 #include "baker/specular_prefilter.h"
-#include "engine/core/environment_map_file.h"
-#include "engine/core/latlong.h"
+#include "core/environment_map_file.h"
+#include "core/latlong.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 
 #include <limits>
 
-#include "engine/core/ray.h"
+#include "core/ray.h"
 
 namespace iblkit {
 

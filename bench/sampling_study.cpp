@@ -27,10 +27,10 @@
 #include "bench/env_sampling_study.h"
 #include "bench/marked_section.h"
 #include "bench/sampling_study_report.h"
-#include "engine/core/environment_map_file.h"
-#include "engine/core/error.h"
-#include "engine/core/file_io.h"
-#include "engine/core/scene.h"
+#include "core/environment_map_file.h"
+#include "core/error.h"
+#include "core/file_io.h"
+#include "core/scene.h"
 
 namespace iblkit {
 namespace {

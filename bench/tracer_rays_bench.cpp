@@ -30,9 +30,9 @@
 #include <memory>
 #include <vector>
 
-#include "engine/core/environment_map_file.h"
-#include "engine/core/procedural_mesh.h"
-#include "engine/core/scene.h"
+#include "core/environment_map_file.h"
+#include "core/procedural_mesh.h"
+#include "core/scene.h"
 #include "reference/environment_sampler.h"
 #include "reference/integrator.h"
 #include "reference/ray_recorder.h"

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/core/ray.h"
+#include "core/ray.h"
 
 namespace iblkit {
 

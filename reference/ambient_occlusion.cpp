@@ -1,7 +1,7 @@
 #include "reference/ambient_occlusion.h"
 
-#include "engine/core/frame.h"
-#include "engine/core/sampling.h"
+#include "core/frame.h"
+#include "core/sampling.h"
 #include "raytrace/ray_offset.h"
 
 namespace iblkit {

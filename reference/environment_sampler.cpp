@@ -5,8 +5,8 @@
 #include <glm/gtc/constants.hpp>
 #include <numbers>
 
-#include "engine/core/fast_atan2.h"
-#include "engine/core/latlong.h"
+#include "core/fast_atan2.h"
+#include "core/latlong.h"
 
 namespace iblkit {
 

@@ -23,8 +23,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "engine/core/distribution.h"
-#include "engine/core/environment_map.h"
+#include "core/distribution.h"
+#include "core/environment_map.h"
 
 namespace iblkit {
 

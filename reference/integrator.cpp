@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <glm/gtc/constants.hpp>
 
-#include "engine/core/brdf.h"
-#include "engine/core/error.h"
-#include "engine/core/frame.h"
-#include "engine/core/sampling.h"
+#include "core/brdf.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/sampling.h"
 #include "raytrace/ray_offset.h"
 #include "reference/ambient_occlusion.h"
 

@@ -24,9 +24,9 @@
 #include <optional>
 #include <string>
 
-#include "engine/core/brdf.h"
-#include "engine/core/environment_map.h"
-#include "engine/core/ray.h"
+#include "core/brdf.h"
+#include "core/environment_map.h"
+#include "core/ray.h"
 #include "reference/environment_sampler.h"
 #include "reference/pixel_sampler.h"
 #include "reference/ray_recorder.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 

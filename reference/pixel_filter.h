@@ -14,7 +14,7 @@
 #include <glm/glm.hpp>
 #include <string>
 
-#include "engine/core/distribution.h"
+#include "core/distribution.h"
 
 namespace iblkit {
 

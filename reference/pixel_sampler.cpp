@@ -1,6 +1,6 @@
 #include "reference/pixel_sampler.h"
 
-#include "engine/core/low_discrepancy.h"
+#include "core/low_discrepancy.h"
 
 namespace iblkit {
 

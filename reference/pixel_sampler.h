@@ -16,8 +16,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
-#include "engine/core/low_discrepancy.h"
-#include "engine/core/rng.h"
+#include "core/low_discrepancy.h"
+#include "core/rng.h"
 
 namespace iblkit {
 

@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "engine/core/brdf.h"
-#include "engine/core/material.h"
-#include "engine/core/scene.h"
+#include "core/brdf.h"
+#include "core/material.h"
+#include "core/scene.h"
 #include "raytrace/ray_scene.h"
 
 namespace iblkit {

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "engine/core/camera.h"
-#include "engine/core/image.h"
+#include "core/camera.h"
+#include "core/image.h"
 #include "reference/integrator.h"
 #include "reference/pixel_filter.h"
 

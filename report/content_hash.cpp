@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 

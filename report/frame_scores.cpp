@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
+#include "core/error.h"
+#include "core/image_io.h"
 #include "score/image_metrics.h"
 
 namespace iblkit {

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 #include "score/flip.h"
 
 namespace iblkit {

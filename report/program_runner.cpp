@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 extern char** environ;
 

@@ -8,10 +8,10 @@
 #include <regex>
 
 #include "baker/environment_sh.h"
-#include "engine/core/environment_map_file.h"
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
-#include "engine/core/scene.h"
+#include "core/environment_map_file.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "core/scene.h"
 #include "report/content_hash.h"
 #include "report/program_runner.h"
 #include "report/sh9_truncation.h"

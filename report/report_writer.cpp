@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 

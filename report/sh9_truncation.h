@@ -10,9 +10,9 @@
 #include <span>
 #include <vector>
 
-#include "engine/core/environment_map.h"
-#include "engine/core/image.h"
-#include "engine/core/spherical_harmonics.h"
+#include "core/environment_map.h"
+#include "core/image.h"
+#include "core/spherical_harmonics.h"
 
 namespace iblkit {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <iterator>
 
-#include "engine/core/tone_curve.h"
+#include "core/tone_curve.h"
 
 namespace iblkit {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 

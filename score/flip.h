@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 
 namespace iblkit {
 

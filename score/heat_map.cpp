@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
+#include "core/error.h"
+#include "core/image_io.h"
 #include "score/color_map.h"
 
 namespace iblkit {

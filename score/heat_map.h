@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <span>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 
 namespace iblkit {
 

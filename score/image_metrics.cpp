@@ -5,8 +5,8 @@
 #include <limits>
 #include <vector>
 
-#include "engine/core/error.h"
-#include "engine/core/tone_curve.h"
+#include "core/error.h"
+#include "core/tone_curve.h"
 
 namespace iblkit {
 

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 
 namespace iblkit {
 

@@ -4,8 +4,8 @@
 #include <cctype>
 #include <string>
 
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
+#include "core/error.h"
+#include "core/image_io.h"
 
 namespace iblkit {
 

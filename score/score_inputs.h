@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 
 namespace iblkit {
 

@@ -1,5 +1,5 @@
 // The image-based-lighting terms of the material model (docs/material-model.md, glTF 2.0
-// Appendix B with KHR_materials_specular, as engine/core/brdf.cpp).
+// Appendix B with KHR_materials_specular, as core/brdf.cpp).
 
 // Split-sum specular (Karis 2013, "Real Shading in Unreal Engine 4", "Image Based Lighting"):
 // the directional albedo of the lobe with Schlick's Fresnel F0 + (F90 - F0)(1 - v.h)^5 is

@@ -1,4 +1,4 @@
-// Environment lookups, in the conventions of engine/core (docs/conventions.md).
+// Environment lookups, in the conventions of core (docs/conventions.md).
 
 const float kPi = 3.14159265358979;
 
@@ -8,7 +8,7 @@ vec3 rotateAboutY(vec3 d, vec2 cosSin) {
   return vec3(cosSin.x * d.x + cosSin.y * d.z, d.y, -cosSin.y * d.x + cosSin.x * d.z);
 }
 
-// latLongUv of engine/core/latlong.h: lon = atan2(x, z), lat = atan2(y, hypot(x, z)),
+// latLongUv of core/latlong.h: lon = atan2(x, z), lat = atan2(y, hypot(x, z)),
 // u = 0.5 - lon / 2pi, v = 0.5 - lat / pi (u = 0.5 is +Z, v = 0 is +Y).
 vec2 latLongUv(vec3 d) {
   float lon = atan(d.x, d.z);

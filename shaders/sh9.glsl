@@ -1,4 +1,4 @@
-// Order-3 real spherical harmonics (engine/core/spherical_harmonics.h: Sloan 2008, "Stupid
+// Order-3 real spherical harmonics (core/spherical_harmonics.h: Sloan 2008, "Stupid
 // Spherical Harmonics (SH) Tricks", Appendix A1; k = l(l+1) + m, orthonormal).
 
 void shBasis9Sloan(vec3 d, out float y[9]) {

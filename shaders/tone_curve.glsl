@@ -1,4 +1,4 @@
-// GLSL twin of engine/core/tone_curve.cpp (tested against it through a render):
+// GLSL twin of core/tone_curve.cpp (tested against it through a render):
 //   display = sRGB_OETF( curve( radiance * 2^exposure ) )
 // Curve ids follow iblkit::ToneCurve: 0 Clamp, 1 AcesFitted, 2 Reinhard.
 

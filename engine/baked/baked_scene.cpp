@@ -11,9 +11,9 @@
 #include "baker/environment_sh.h"
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
-#include "engine/core/environment_map_file.h"
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
+#include "core/environment_map_file.h"
+#include "core/error.h"
+#include "core/image_io.h"
 
 namespace iblkit {
 namespace {

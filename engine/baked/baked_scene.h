@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "engine/baked/environment_stages.h"
-#include "engine/core/scene.h"
+#include "core/scene.h"
 
 namespace iblkit {
 

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "baker/specular_prefilter.h"
-#include "engine/core/environment_map.h"
-#include "engine/core/image.h"
-#include "engine/core/spherical_harmonics.h"
+#include "core/environment_map.h"
+#include "core/image.h"
+#include "core/spherical_harmonics.h"
 
 namespace iblkit {
 

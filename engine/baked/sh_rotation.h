@@ -1,7 +1,7 @@
 #pragma once
 // Rotating SH9 coefficients, for turning the environment without re-projecting it (PRT and the SH
 // modes take the rotated coefficients; the transfer vectors stay as baked).
-#include "engine/core/spherical_harmonics.h"
+#include "core/spherical_harmonics.h"
 
 namespace iblkit {
 

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <mutex>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 namespace {

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 namespace {

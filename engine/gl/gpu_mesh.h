@@ -3,7 +3,7 @@
 // the baked _AO, _BENTNORMAL, _SHT0.._SHT2), and its triangle indices.
 #include <epoxy/gl.h>
 
-#include "engine/core/mesh.h"
+#include "core/mesh.h"
 
 namespace iblkit {
 

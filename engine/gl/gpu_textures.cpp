@@ -2,7 +2,7 @@
 
 #include <utility>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 

@@ -2,8 +2,8 @@
 // Uploads of the engine's textures (OpenGL 4.5 direct state access), owned by GlTexture.
 #include <epoxy/gl.h>
 
-#include "engine/core/cube_map.h"
-#include "engine/core/image.h"
+#include "core/cube_map.h"
+#include "core/image.h"
 
 namespace iblkit {
 

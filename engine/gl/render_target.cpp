@@ -3,7 +3,7 @@
 #include <string>
 #include <utility>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 namespace {

@@ -3,7 +3,7 @@
 // multisampled (resolved into a single-sample RGBA32F texture for reading and display).
 #include <epoxy/gl.h>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 
 namespace iblkit {
 

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "engine/baked/baked_scene.h"
-#include "engine/core/camera.h"
-#include "engine/core/material.h"
-#include "engine/core/tone_curve.h"
+#include "core/camera.h"
+#include "core/material.h"
+#include "core/tone_curve.h"
 #include "engine/gl/shading_mode.h"
 
 namespace iblkit {

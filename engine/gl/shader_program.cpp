@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "engine/gl/embedded_shaders.h"
 
 namespace iblkit {

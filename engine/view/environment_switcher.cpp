@@ -5,7 +5,7 @@
 #include <chrono>
 #include <utility>
 
-#include "engine/core/environment_map_file.h"
+#include "core/environment_map_file.h"
 
 namespace iblkit {
 

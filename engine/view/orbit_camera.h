@@ -6,8 +6,8 @@
 // No OpenGL here: the maths is tested on its own (tests/view/orbit_camera_test.cpp).
 #include <glm/glm.hpp>
 
-#include "engine/core/camera.h"
-#include "engine/core/mesh.h"
+#include "core/camera.h"
+#include "core/mesh.h"
 
 namespace iblkit {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/core/material.h"
+#include "core/material.h"
 #include "engine/gl/renderer.h"
 #include "engine/view/environment_switcher.h"
 #include "engine/view/reference_comparison.h"

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
+#include "core/error.h"
+#include "core/image_io.h"
 
 namespace iblkit {
 

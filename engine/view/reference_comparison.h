@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <string>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/renderer.h"
 #include "engine/gl/shader_program.h"

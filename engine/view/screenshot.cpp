@@ -8,9 +8,9 @@
 #include <ctime>
 #include <vector>
 
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
-#include "engine/core/tone_curve.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "core/tone_curve.h"
 
 namespace iblkit {
 

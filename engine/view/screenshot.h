@@ -4,7 +4,7 @@
 // (tone-mapped, and the reference comparison when one is on; the panel left out) as PNG.
 #include <filesystem>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 
 namespace iblkit {
 

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "engine/baked/baked_scene.h"
-#include "engine/core/error.h"
-#include "engine/core/image_io.h"
+#include "core/error.h"
+#include "core/image_io.h"
 #include "engine/gl/gl_debug.h"
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"

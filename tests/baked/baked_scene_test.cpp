@@ -8,7 +8,7 @@
 #include "baker/baked_scene_gltf.h"
 #include "baker/brdf_lut.h"
 #include "baker/environment_sh.h"
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/bake_fixture.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"

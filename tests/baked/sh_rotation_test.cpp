@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "baker/environment_sh.h"
-#include "engine/core/environment_map.h"
+#include "core/environment_map.h"
 
 namespace iblkit {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "engine/core/gltf_load.h"
-#include "engine/core/procedural_mesh.h"
-#include "engine/core/scene.h"
+#include "core/gltf_load.h"
+#include "core/procedural_mesh.h"
+#include "core/scene.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

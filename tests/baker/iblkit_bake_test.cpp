@@ -6,10 +6,10 @@
 #include <nlohmann/json.hpp>
 
 #include "baker/visibility_attributes.h"
-#include "engine/core/gltf_load.h"
-#include "engine/core/image_io.h"
-#include "engine/core/latlong.h"
-#include "engine/core/procedural_mesh.h"
+#include "core/gltf_load.h"
+#include "core/image_io.h"
+#include "core/latlong.h"
+#include "core/procedural_mesh.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
 

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "baker/vertex_visibility.h"
-#include "engine/core/procedural_mesh.h"
+#include "core/procedural_mesh.h"
 #include "support/error_capture.h"
 
 namespace iblkit {

@@ -6,8 +6,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include "baker/environment_sh.h"
-#include "engine/core/image_io.h"
-#include "engine/core/latlong.h"
+#include "core/image_io.h"
+#include "core/latlong.h"
 #include "support/test_paths.h"
 
 namespace iblkit {

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

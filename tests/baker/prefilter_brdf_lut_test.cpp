@@ -4,8 +4,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include "baker/brdf_lut.h"
-#include "engine/core/image_io.h"
-#include "engine/core/microfacet.h"
+#include "core/image_io.h"
+#include "core/microfacet.h"
 #include "support/test_paths.h"
 
 namespace iblkit {

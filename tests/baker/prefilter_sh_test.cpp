@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "baker/environment_sh.h"
-#include "engine/core/environment_map_file.h"
-#include "engine/core/latlong.h"
+#include "core/environment_map_file.h"
+#include "core/latlong.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

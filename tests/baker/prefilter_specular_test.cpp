@@ -5,12 +5,12 @@
 #include <glm/gtc/constants.hpp>
 
 #include "baker/specular_prefilter.h"
-#include "engine/core/error.h"
-#include "engine/core/frame.h"
-#include "engine/core/image_io.h"
-#include "engine/core/latlong.h"
-#include "engine/core/low_discrepancy.h"
-#include "engine/core/microfacet.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/image_io.h"
+#include "core/latlong.h"
+#include "core/low_discrepancy.h"
+#include "core/microfacet.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

@@ -13,8 +13,8 @@
 #include <limits>
 
 #include "baker/vertex_visibility.h"
-#include "engine/core/procedural_mesh.h"
-#include "engine/core/rng.h"
+#include "core/procedural_mesh.h"
+#include "core/rng.h"
 #include "raytrace/ray_scene.h"
 #include "reference/ambient_occlusion.h"
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "baker/vertex_visibility.h"
-#include "engine/core/procedural_mesh.h"
+#include "core/procedural_mesh.h"
 #include "support/error_capture.h"
 
 namespace iblkit {

@@ -6,7 +6,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "engine/core/procedural_mesh.h"
+#include "core/procedural_mesh.h"
 #include "support/error_capture.h"
 
 namespace iblkit {

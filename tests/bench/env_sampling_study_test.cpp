@@ -10,8 +10,8 @@
 #include <climits>
 #include <cmath>
 
-#include "engine/core/environment_map_file.h"
-#include "engine/core/image_io.h"
+#include "core/environment_map_file.h"
+#include "core/image_io.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

@@ -1,4 +1,4 @@
-#include "engine/core/brdf.h"
+#include "core/brdf.h"
 
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <glm/gtc/constants.hpp>
 #include <string>
 
-#include "engine/core/rng.h"
-#include "engine/core/sampling.h"
+#include "core/rng.h"
+#include "core/sampling.h"
 #include "support/chi2.h"
 
 namespace iblkit {

@@ -1,4 +1,4 @@
-#include "engine/core/camera.h"
+#include "core/camera.h"
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 
-#include "engine/core/microfacet.h"
-#include "engine/core/sampling.h"
+#include "core/microfacet.h"
+#include "core/sampling.h"
 
 namespace iblkit::test {
 namespace {

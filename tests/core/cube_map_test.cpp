@@ -1,4 +1,4 @@
-#include "engine/core/cube_map.h"
+#include "core/cube_map.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "support/error_capture.h"
 #include "support/expect_near.h"
 

@@ -1,4 +1,4 @@
-#include "engine/core/distribution.h"
+#include "core/distribution.h"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <limits>
 #include <vector>
 
-#include "engine/core/error.h"
-#include "engine/core/rng.h"
+#include "core/error.h"
+#include "core/rng.h"
 #include "support/chi2.h"
 
 namespace iblkit {

@@ -1,11 +1,11 @@
-#include "engine/core/environment_map_file.h"
+#include "core/environment_map_file.h"
 
 #include <gtest/gtest.h>
 
-#include "engine/core/cube_map.h"
-#include "engine/core/image_io.h"
-#include "engine/core/latlong.h"
-#include "engine/core/light_probe.h"
+#include "core/cube_map.h"
+#include "core/image_io.h"
+#include "core/latlong.h"
+#include "core/light_probe.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

@@ -1,4 +1,4 @@
-#include "engine/core/environment_map.h"
+#include "core/environment_map.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <random>
 #include <string>
 
-#include "engine/core/error.h"
-#include "engine/core/latlong.h"
+#include "core/error.h"
+#include "core/latlong.h"
 #include "support/error_capture.h"
 #include "support/expect_near.h"
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "engine/core/cube_map.h"
-#include "engine/core/latlong.h"
+#include "core/cube_map.h"
+#include "core/latlong.h"
 
 namespace iblkit {
 namespace {

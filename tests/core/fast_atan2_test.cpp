@@ -1,4 +1,4 @@
-#include "engine/core/fast_atan2.h"
+#include "core/fast_atan2.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-#include "engine/core/rng.h"
+#include "core/rng.h"
 
 namespace iblkit {
 namespace {

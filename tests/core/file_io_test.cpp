@@ -1,4 +1,4 @@
-#include "engine/core/file_io.h"
+#include "core/file_io.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <iterator>
 #include <string>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

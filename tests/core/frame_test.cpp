@@ -1,9 +1,9 @@
-#include "engine/core/frame.h"
+#include "core/frame.h"
 
 #include <gtest/gtest.h>
 
-#include "engine/core/rng.h"
-#include "engine/core/sampling.h"
+#include "core/rng.h"
+#include "core/sampling.h"
 
 namespace iblkit {
 namespace {

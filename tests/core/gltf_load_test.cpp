@@ -1,4 +1,4 @@
-#include "engine/core/gltf_load.h"
+#include "core/gltf_load.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
 #include "support/warning_capture.h"

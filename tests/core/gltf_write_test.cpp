@@ -1,4 +1,4 @@
-#include "engine/core/gltf_write.h"
+#include "core/gltf_write.h"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <iterator>
 #include <limits>
 
-#include "engine/core/error.h"
-#include "engine/core/gltf_load.h"
+#include "core/error.h"
+#include "core/gltf_load.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
 #include "support/warning_capture.h"

@@ -1,4 +1,4 @@
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 
 #include <gtest/gtest.h>
 

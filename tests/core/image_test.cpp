@@ -1,4 +1,4 @@
-#include "engine/core/image.h"
+#include "core/image.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "engine/core/latlong.h"
+#include "core/latlong.h"
 
 #include <gtest/gtest.h>
 

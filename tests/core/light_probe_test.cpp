@@ -1,4 +1,4 @@
-#include "engine/core/light_probe.h"
+#include "core/light_probe.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <random>
 #include <string>
 
-#include "engine/core/error.h"
-#include "engine/core/latlong.h"
+#include "core/error.h"
+#include "core/latlong.h"
 
 namespace iblkit {
 namespace {

@@ -1,4 +1,4 @@
-#include "engine/core/low_discrepancy.h"
+#include "core/low_discrepancy.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "engine/core/rng.h"
+#include "core/rng.h"
 #include "support/chi2.h"
 #include "support/digital_nets.h"
 

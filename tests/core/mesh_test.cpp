@@ -1,4 +1,4 @@
-#include "engine/core/mesh.h"
+#include "core/mesh.h"
 
 #include <gtest/gtest.h>
 

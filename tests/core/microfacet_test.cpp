@@ -1,11 +1,11 @@
-#include "engine/core/microfacet.h"
+#include "core/microfacet.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 
-#include "engine/core/rng.h"
+#include "core/rng.h"
 #include "support/chi2.h"
 
 namespace iblkit {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

@@ -1,4 +1,4 @@
-#include "engine/core/procedural_mesh.h"
+#include "core/procedural_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <map>
 #include <utility>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

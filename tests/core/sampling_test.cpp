@@ -1,4 +1,4 @@
-#include "engine/core/sampling.h"
+#include "core/sampling.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <functional>
 #include <glm/gtc/constants.hpp>
 
-#include "engine/core/rng.h"
+#include "core/rng.h"
 #include "support/chi2.h"
 
 namespace iblkit {

@@ -1,4 +1,4 @@
-#include "engine/core/scene_file.h"
+#include "core/scene_file.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
 #include "support/warning_capture.h"

@@ -1,10 +1,10 @@
-#include "engine/core/scene.h"
+#include "core/scene.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
 #include "support/warning_capture.h"

@@ -1,4 +1,4 @@
-#include "engine/core/spherical_harmonics.h"
+#include "core/spherical_harmonics.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "engine/core/tone_curve.h"
+#include "core/tone_curve.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "baker/baked_scene_gltf.h"
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/bake_fixture.h"
 #include "support/test_paths.h"
 

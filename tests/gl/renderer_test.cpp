@@ -9,7 +9,7 @@
 #include <string>
 
 #include "engine/baked/sh_rotation.h"
-#include "engine/core/tone_curve.h"
+#include "core/tone_curve.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/render_target.h"
 #include "gl/test_context.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "engine/core/image.h"
+#include "core/image.h"
 #include "engine/gl/gl_debug.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/render_target.h"

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "engine/core/procedural_mesh.h"
+#include "core/procedural_mesh.h"
 #include "raytrace/ray_scene.h"
 
 namespace iblkit {

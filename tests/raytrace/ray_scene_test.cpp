@@ -7,8 +7,8 @@
 #include <random>
 #include <thread>
 
-#include "engine/core/error.h"
-#include "engine/core/procedural_mesh.h"
+#include "core/error.h"
+#include "core/procedural_mesh.h"
 
 namespace iblkit {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include "engine/core/environment_map_file.h"
-#include "engine/core/latlong.h"
-#include "engine/core/sampling.h"
+#include "core/environment_map_file.h"
+#include "core/latlong.h"
+#include "core/sampling.h"
 #include "support/chi2.h"
 #include "support/test_paths.h"
 

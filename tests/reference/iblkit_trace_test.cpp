@@ -5,7 +5,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
 

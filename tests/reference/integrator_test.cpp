@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/core/latlong.h"
-#include "engine/core/spherical_harmonics.h"
+#include "core/latlong.h"
+#include "core/spherical_harmonics.h"
 #include "reference/test_scenes.h"
 #include "support/error_capture.h"
 

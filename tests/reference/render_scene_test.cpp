@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/core/procedural_mesh.h"
+#include "core/procedural_mesh.h"
 #include "reference/test_scenes.h"
 #include "support/error_capture.h"
 

@@ -5,9 +5,9 @@
 #include <glm/gtc/constants.hpp>
 #include <utility>
 
-#include "engine/core/environment_map.h"
-#include "engine/core/procedural_mesh.h"
-#include "engine/core/scene.h"
+#include "core/environment_map.h"
+#include "core/procedural_mesh.h"
+#include "core/scene.h"
 #include "reference/environment_sampler.h"
 #include "reference/integrator.h"
 #include "reference/render_scene.h"

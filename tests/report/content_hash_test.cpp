@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "support/test_paths.h"
 
 namespace iblkit {

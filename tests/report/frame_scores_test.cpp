@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "engine/core/rng.h"
+#include "core/rng.h"
 #include "score/image_metrics.h"
 
 namespace iblkit {

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/core/error.h"
+#include "core/error.h"
 #include "support/test_paths.h"
 
 namespace iblkit {

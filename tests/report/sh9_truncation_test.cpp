@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "baker/environment_sh.h"
-#include "engine/core/error.h"
-#include "engine/core/latlong.h"
+#include "core/error.h"
+#include "core/latlong.h"
 
 namespace iblkit {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/test_paths.h"
 
 namespace iblkit {

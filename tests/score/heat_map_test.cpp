@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "engine/core/image_io.h"
-#include "engine/core/tone_curve.h"
+#include "core/image_io.h"
+#include "core/tone_curve.h"
 #include "score/color_map.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/test_paths.h"
 
 namespace iblkit {

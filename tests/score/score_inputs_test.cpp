@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 

@@ -8,8 +8,8 @@
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
 #include "engine/baked/baked_scene.h"
-#include "engine/core/latlong.h"
-#include "engine/core/procedural_mesh.h"
+#include "core/latlong.h"
+#include "core/procedural_mesh.h"
 
 namespace iblkit::test {
 

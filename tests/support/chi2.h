@@ -37,7 +37,7 @@
 #include <optional>
 #include <string>
 
-#include "engine/core/rng.h"
+#include "core/rng.h"
 
 namespace iblkit::test {
 

@@ -1,6 +1,6 @@
 #include "support/warning_capture.h"
 
-#include "engine/core/error.h"
+#include "core/error.h"
 
 namespace iblkit::test {
 

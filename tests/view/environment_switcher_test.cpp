@@ -7,7 +7,7 @@
 
 #include <fstream>
 
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/test_paths.h"
 
 namespace iblkit {

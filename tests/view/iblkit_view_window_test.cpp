@@ -10,7 +10,7 @@
 #include <sstream>
 #include <vector>
 
-#include "engine/core/image_io.h"
+#include "core/image_io.h"
 #include "support/test_paths.h"
 
 namespace iblkit {

@@ -1,0 +1,26 @@
+#pragma once
+// Loading an environment map from a file, whatever its layout: a lat-long map (OpenEXR or
+// Radiance .hdr), an OpenEXR cube map (the standard `envmap` attribute = cube, a W x 6W strip),
+// or a light probe photographed as a mirror ball or stored as an angular map. Everything is
+// converted to the lat-long EnvironmentMap the programs share (docs/conventions.md).
+
+#include <filesystem>
+#include <string>
+
+#include "core/environment_map.h"
+
+namespace iblkit {
+
+enum class ProbeFormat { LatLong, MirrorBall, Angular };
+
+// Parses "latlong", "mirrorball" or "angular"; throws Error naming the bad value otherwise.
+ProbeFormat parseProbeFormat(const std::string& name);
+
+// Reads `file` as a lat-long map (an OpenEXR file whose envmap attribute says cube is converted
+// from its cube faces), or converts a square mirror-ball / angular-map probe. Converted maps are
+// `latLongWidth` x latLongWidth/2 (0: twice the source's height, or 4x a cube face's size).
+// Bad input throws Error("<file>: <problem>"); NaN/negative pixels are repaired by the reader.
+EnvironmentMap loadEnvironmentMap(const std::filesystem::path& file,
+                                  ProbeFormat format = ProbeFormat::LatLong, int latLongWidth = 0);
+
+}  // namespace iblkit

@@ -1,0 +1,361 @@
+// OpenEXR reading and writing through the general FrameBuffer interface, so every compression
+// OpenEXR knows (the fetched maps are DWAB) and both half and float channels read the same way.
+#include <Iex.h>
+#include <Imath/half.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfStandardAttributes.h>
+#include <ImfStringAttribute.h>
+#include <ImfTestFile.h>
+#include <ImfTiledInputFile.h>
+#include <ImfTiledOutputFile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "core/image_io.h"
+
+namespace iblkit {
+
+namespace {
+
+// Channel names in Image component order.
+constexpr const char* kRgbaNames[4] = {"R", "G", "B", "A"};
+// Tile size of mip-mapped files; levels smaller than a tile are stored as one partial tile.
+constexpr int kTileSize = 64;
+// The largest finite half.
+constexpr float kHalfMax = static_cast<float>(HALF_MAX);
+
+// OpenEXR reads the file from memory rather than opening it itself, so that a missing or empty
+// file reads the same for every format (readFileBytes), and so that a truncated file can be told
+// apart from other damage: any read past the end is recorded.
+class MemoryStream final : public Imf::IStream {
+ public:
+  MemoryStream(const std::filesystem::path& file, std::vector<char> bytes)
+      : Imf::IStream(file.c_str()), bytes_(std::move(bytes)) {}
+
+  bool isMemoryMapped() const override { return true; }
+  char* readMemoryMapped(int n) override { return take(n); }
+  bool read(char c[], int n) override {
+    std::memcpy(c, take(n), static_cast<std::size_t>(n));
+    return position_ < bytes_.size();
+  }
+  uint64_t tellg() override { return position_; }
+  void seekg(uint64_t position) override { position_ = position; }  // checked by the next read
+
+  bool readPastEnd() const { return readPastEnd_; }
+
+ private:
+  char* take(int n) {
+    if (n < 0 || position_ > bytes_.size() || bytes_.size() - position_ < static_cast<std::uint64_t>(n)) {
+      readPastEnd_ = true;
+      throw Iex::InputExc("unexpected end of file");
+    }
+    char* data = bytes_.data() + position_;
+    position_ += static_cast<std::uint64_t>(n);
+    return data;
+  }
+
+  std::vector<char> bytes_;
+  std::uint64_t position_ = 0;
+  bool readPastEnd_ = false;
+};
+
+// OpenEXR's message as the problem part of ours: one line, and without its own preamble naming
+// the file ("Cannot read image file "<file>". "), which fail() already puts first.
+std::string exrProblem(const std::filesystem::path& file, std::string text) {
+  const std::string preambleEnd = "\"" + file.string() + "\". ";
+  if (const std::size_t at = text.find(preambleEnd); at != std::string::npos)
+    text.erase(0, at + preambleEnd.size());
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+// Runs `body`, turning OpenEXR's exceptions (Iex, std) into Error; our own Errors pass through.
+template <class Body>
+auto rethrowAsError(const std::filesystem::path& file, const MemoryStream* stream, Body&& body) {
+  try {
+    return body();
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    if (stream && stream->readPastEnd()) fail(file, "truncated file (unexpected end of data)");
+    fail(file, exrProblem(file, e.what()));
+  }
+}
+
+// A slice of `components` interleaved values of `type` per pixel, starting at component `c`,
+// addressed with the data window's absolute coordinates (Slice::Make does the offset safely).
+Imf::Slice interleavedSlice(Imf::PixelType type, const void* base, std::size_t componentBytes, int components,
+                            int c, const Imath::Box2i& window, double fillValue = 0.0) {
+  const std::size_t width = static_cast<std::size_t>(window.max.x - window.min.x + 1);
+  const std::size_t xStride = componentBytes * static_cast<std::size_t>(components);
+  return Imf::Slice::Make(type, static_cast<const char*>(base) + componentBytes * static_cast<std::size_t>(c),
+                          window, xStride, xStride * width, 1, 1, fillValue);
+}
+
+EnvmapLayout envmapLayout(const Imf::Header& header) {
+  if (!Imf::hasEnvmap(header)) return EnvmapLayout::None;
+  return Imf::envmap(header) == Imf::ENVMAP_CUBE ? EnvmapLayout::Cube : EnvmapLayout::LatLong;
+}
+
+// An open OpenEXR file as a list of levels: a scanline file has one, a tiled file one per mip level.
+// The image of a level is its data window; for environment maps the data window is the map
+// (ImfEnvmap.h maps directions to data-window pixel positions), whatever its origin.
+class ExrLevelReader {
+ public:
+  ExrLevelReader(const std::filesystem::path& file, MemoryStream& stream) : file_(file) {
+    bool tiled = false, deep = false, multiPart = false;
+    if (!Imf::isOpenExrFile(stream, tiled, deep, multiPart))
+      fail(file, "not an OpenEXR file (bad magic number)");
+    if (deep) fail(file, "deep OpenEXR images are not supported");
+    if (tiled) {
+      tiledFile_.emplace(stream);
+      levels_ = countLevels(*tiledFile_);
+    } else {
+      scanlineFile_.emplace(stream);
+    }
+  }
+
+  int levels() const { return levels_; }
+  const Imf::Header& header() const { return tiledFile_ ? tiledFile_->header() : scanlineFile_->header(); }
+
+  ExrInfo info() const {
+    ExrInfo info;
+    const Imath::Box2i& window = header().dataWindow();
+    info.width = window.max.x - window.min.x + 1;
+    info.height = window.max.y - window.min.y + 1;
+    info.envmap = envmapLayout(header());
+    info.levels = levels_;
+    // "name" and "type" describe the file's structure (multi-part files), not the image.
+    for (auto it = header().begin(); it != header().end(); ++it) {
+      const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute());
+      const std::string name = it.name();
+      if (text && name != "name" && name != "type") info.stringAttributes.emplace_back(name, text->value());
+    }
+    return info;
+  }
+
+  Image read(int level) {
+    if (level < 0 || level >= levels_)
+      fail(file_,
+           "has no level " + std::to_string(level) + " (levels 0 to " + std::to_string(levels_ - 1) + ")");
+    if (scanlineFile_) {
+      const Imath::Box2i window = scanlineFile_->header().dataWindow();
+      return readWindow(window, [&](const Imf::FrameBuffer& frameBuffer) {
+        scanlineFile_->setFrameBuffer(frameBuffer);
+        scanlineFile_->readPixels(window.min.y, window.max.y);
+      });
+    }
+    return readWindow(tiledFile_->dataWindowForLevel(level), [&](const Imf::FrameBuffer& frameBuffer) {
+      tiledFile_->setFrameBuffer(frameBuffer);
+      tiledFile_->readTiles(0, tiledFile_->numXTiles(level) - 1, 0, tiledFile_->numYTiles(level) - 1, level);
+    });
+  }
+
+ private:
+  int countLevels(const Imf::TiledInputFile& in) const {
+    switch (in.header().tileDescription().mode) {
+      case Imf::ONE_LEVEL:
+        return 1;
+      case Imf::MIPMAP_LEVELS:
+        return in.numLevels();
+      default:
+        fail(file_, "ripmap levels are not supported");
+    }
+  }
+
+  // Reads the pixels of `window` as linear RGBA floats (OpenEXR converts half and uint): missing
+  // channels read as 0 and a missing A as 1; a luminance-only (Y) file reads as grey.
+  template <class ReadPixels>
+  Image readWindow(const Imath::Box2i& window, ReadPixels&& readPixels) {
+    checkImageSize(file_, std::int64_t{window.max.x} - window.min.x + 1,
+                   std::int64_t{window.max.y} - window.min.y + 1);
+    const Imf::ChannelList& channels = header().channels();
+    const bool grey = !channels.findChannel("R") && !channels.findChannel("G") && !channels.findChannel("B");
+    if (grey && !channels.findChannel("Y")) fail(file_, "no R, G, B or Y channel");
+    if (grey && (channels.findChannel("RY") || channels.findChannel("BY")))
+      fail(file_, "luminance/chroma (Y, RY, BY) images are not supported");
+    Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    Imf::FrameBuffer frameBuffer;
+    for (int c = 0; c < 4; ++c) {
+      const char* name = grey && c == 0 ? "Y" : kRgbaNames[c];
+      if (grey && (c == 1 || c == 2)) continue;
+      const Imf::Channel* channel = channels.findChannel(name);
+      if (channel && (channel->xSampling != 1 || channel->ySampling != 1))
+        fail(file_, std::string("channel ") + name + " is subsampled (not supported)");
+      frameBuffer.insert(name, interleavedSlice(Imf::FLOAT, image.pixels().data(), sizeof(float), 4, c,
+                                                window, c == 3 ? 1.0 : 0.0));
+    }
+    readPixels(frameBuffer);
+    if (grey)
+      for (glm::vec4& pixel : image.pixels()) pixel.g = pixel.b = pixel.r;
+    return image;
+  }
+
+  std::filesystem::path file_;
+  std::optional<Imf::InputFile> scanlineFile_;
+  std::optional<Imf::TiledInputFile> tiledFile_;
+  int levels_ = 1;
+};
+
+// Opens `file` and runs use(reader), with OpenEXR's errors turned into Error.
+template <class Use>
+auto withExrFile(const std::filesystem::path& file, Use&& use) {
+  MemoryStream stream(file, readFileBytes(file));
+  return rethrowAsError(file, &stream, [&] {
+    ExrLevelReader reader(file, stream);
+    return use(reader);
+  });
+}
+
+// Checks what OpenEXR cannot represent or we would not read back: an empty image, a chain whose
+// sizes are not the ROUND_DOWN mip sizes, a cube map not laid out as six stacked faces, NaN/Inf.
+void checkLevelsForWriting(const std::filesystem::path& file, std::span<const Image> levels,
+                           const ExrWriteOptions& options) {
+  if (levels.empty() || levels[0].empty()) fail(file, "cannot write an empty image");
+  const int width = levels[0].width(), height = levels[0].height();
+  if (levels.size() > 1) {
+    // MIPMAP_LEVELS with ROUND_DOWN: level l is floor(size / 2^l), at least 1, down to 1 x 1.
+    const int expected = static_cast<int>(std::floor(std::log2(std::max(width, height)))) + 1;
+    if (static_cast<int>(levels.size()) != expected)
+      fail(file, "a " + std::to_string(width) + " x " + std::to_string(height) + " mip chain needs " +
+                     std::to_string(expected) + " levels, got " + std::to_string(levels.size()));
+    for (std::size_t l = 1; l < levels.size(); ++l) {
+      const int w = std::max(1, width >> l), h = std::max(1, height >> l);
+      if (levels[l].width() != w || levels[l].height() != h)
+        fail(file, "mip level " + std::to_string(l) + " is " + std::to_string(levels[l].width()) + " x " +
+                       std::to_string(levels[l].height()) + ", expected " + std::to_string(w) + " x " +
+                       std::to_string(h) + " (ROUND_DOWN)");
+    }
+  }
+  if (options.envmap == EnvmapLayout::Cube && height != 6 * width)
+    fail(file, "a cube envmap is six square faces stacked vertically (W x 6W), got " + std::to_string(width) +
+                   " x " + std::to_string(height));
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const std::vector<glm::vec4>& pixels = levels[l].pixels();
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+      if (!glm::any(glm::isnan(pixels[i])) && !glm::any(glm::isinf(pixels[i]))) continue;
+      const int x = static_cast<int>(i % static_cast<std::size_t>(levels[l].width()));
+      const int y = static_cast<int>(i / static_cast<std::size_t>(levels[l].width()));
+      fail(file, "cannot write NaN or Inf (level " + std::to_string(l) + ", pixel " + std::to_string(x) +
+                     ", " + std::to_string(y) + ")");
+    }
+  }
+}
+
+// A level's pixels as the file stores them: the Image's own floats, or a half copy. Values beyond
+// the largest half (65504) would become Inf, so they are clamped there; `clamped` counts them.
+class WritablePixels {
+ public:
+  WritablePixels(const Image& image, PixelType type, std::size_t& clamped) : image_(image) {
+    if (type == PixelType::Float) return;
+    halves_.reserve(image.pixelCount() * 4);
+    for (const glm::vec4& pixel : image.pixels()) {
+      for (int c = 0; c < 4; ++c) {
+        if (std::abs(pixel[c]) > kHalfMax) ++clamped;
+        halves_.emplace_back(std::clamp(pixel[c], -kHalfMax, kHalfMax));
+      }
+    }
+  }
+
+  Imf::FrameBuffer frameBuffer(const Imath::Box2i& window, int channelCount) const {
+    Imf::FrameBuffer frameBuffer;
+    for (int c = 0; c < channelCount; ++c) {
+      frameBuffer.insert(
+          kRgbaNames[c],
+          halves_.empty() ? interleavedSlice(Imf::FLOAT, image_.pixels().data(), sizeof(float), 4, c, window)
+                          : interleavedSlice(Imf::HALF, halves_.data(), sizeof(Imath::half), 4, c, window));
+    }
+    return frameBuffer;
+  }
+
+ private:
+  const Image& image_;
+  std::vector<Imath::half> halves_;
+};
+
+void writeLevels(const std::filesystem::path& file, std::span<const Image> levels,
+                 const ExrWriteOptions& options) {
+  checkLevelsForWriting(file, levels, options);
+  const int channelCount = options.writeAlpha ? 4 : 3;
+  const Imf::PixelType type = options.pixelType == PixelType::Half ? Imf::HALF : Imf::FLOAT;
+  std::size_t clamped = 0;
+  std::vector<WritablePixels> pixels;
+  pixels.reserve(levels.size());
+  for (const Image& level : levels) pixels.emplace_back(level, options.pixelType, clamped);
+  if (clamped) warn(file, std::to_string(clamped) + " pixel values beyond the largest half (65504) clamped");
+
+  writeAtomically(file, [&](const std::filesystem::path& temporary) {
+    rethrowAsError(file, nullptr, [&] {
+      Imf::Header header(levels[0].width(), levels[0].height());
+      header.compression() = Imf::ZIP_COMPRESSION;
+      for (int c = 0; c < channelCount; ++c) header.channels().insert(kRgbaNames[c], Imf::Channel(type));
+      if (options.envmap != EnvmapLayout::None)
+        Imf::addEnvmap(header, options.envmap == EnvmapLayout::Cube ? Imf::ENVMAP_CUBE : Imf::ENVMAP_LATLONG);
+      for (const auto& [name, value] : options.stringAttributes)
+        header.insert(name, Imf::StringAttribute(value));
+      if (levels.size() == 1) {
+        Imf::OutputFile out(temporary.c_str(), header);
+        out.setFrameBuffer(pixels[0].frameBuffer(header.dataWindow(), channelCount));
+        out.writePixels(levels[0].height());
+        return;
+      }
+      header.setTileDescription(
+          Imf::TileDescription(kTileSize, kTileSize, Imf::MIPMAP_LEVELS, Imf::ROUND_DOWN));
+      Imf::TiledOutputFile out(temporary.c_str(), header);
+      for (int l = 0; l < out.numLevels(); ++l) {
+        out.setFrameBuffer(
+            pixels[static_cast<std::size_t>(l)].frameBuffer(out.dataWindowForLevel(l), channelCount));
+        out.writeTiles(0, out.numXTiles(l) - 1, 0, out.numYTiles(l) - 1, l);
+      }
+    });
+  });
+}
+
+}  // namespace
+
+Image readExr(const std::filesystem::path& file, ExrInfo* info, int level, PixelRepair repair) {
+  Image image = withExrFile(file, [&](ExrLevelReader& reader) {
+    if (info) *info = reader.info();
+    return reader.read(level);
+  });
+  if (repair == PixelRepair::Repair) repairPixels(file, {&image, 1});
+  return image;
+}
+
+std::vector<Image> readExrLevels(const std::filesystem::path& file, ExrInfo* info) {
+  std::vector<Image> levels = withExrFile(file, [&](ExrLevelReader& reader) {
+    if (info) *info = reader.info();
+    std::vector<Image> images;
+    for (int l = 0; l < reader.levels(); ++l) images.push_back(reader.read(l));
+    return images;
+  });
+  repairPixels(file, levels);
+  return levels;
+}
+
+void writeExr(const std::filesystem::path& file, const Image& image, const ExrWriteOptions& options) {
+  writeLevels(file, {&image, 1}, options);
+}
+
+void writeExrLevels(const std::filesystem::path& file, const std::vector<Image>& levels,
+                    const ExrWriteOptions& options) {
+  writeLevels(file, levels, options);
+}
+
+}  // namespace iblkit

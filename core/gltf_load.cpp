@@ -1,0 +1,387 @@
+#include "core/gltf_load.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <numeric>
+#include <span>
+#include <string>
+#include <utility>
+
+#include "core/error.h"
+#include "core/gltf_model.h"
+
+namespace iblkit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string primitiveName(int mesh, int primitive) {
+  return "mesh " + std::to_string(mesh) + " primitive " + std::to_string(primitive);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Materials
+
+// A [0, 1] factor; values outside are clamped with a warning rather than silently.
+float unitFactor(double value, const std::string& what, const fs::path& file) {
+  if (value >= 0.0 && value <= 1.0) return float(value);
+  warn(file, what + " " + std::to_string(value) + " clamped to [0, 1]");
+  return float(std::clamp(value, 0.0, 1.0));
+}
+
+glm::vec3 colorFactor(const std::vector<double>& values, const std::string& what, const fs::path& file) {
+  if (values.size() < 3) fail(file, what + " must have at least 3 numbers");
+  return glm::vec3(unitFactor(values[0], what, file), unitFactor(values[1], what, file),
+                   unitFactor(values[2], what, file));
+}
+
+// A number inside an extension object, or `fallback` when absent.
+double extensionNumber(const tinygltf::Value& extension, const char* key, double fallback,
+                       const std::string& what, const fs::path& file) {
+  if (!extension.Has(key)) return fallback;
+  const tinygltf::Value& value = extension.Get(key);
+  if (!value.IsNumber()) fail(file, what + "." + key + " must be a number");
+  return value.GetNumberAsDouble();
+}
+
+std::vector<double> extensionNumbers(const tinygltf::Value& extension, const char* key,
+                                     std::vector<double> fallback, const std::string& what,
+                                     const fs::path& file) {
+  if (!extension.Has(key)) return fallback;
+  const tinygltf::Value& value = extension.Get(key);
+  std::vector<double> numbers;
+  for (int i = 0; value.IsArray() && i < int(value.ArrayLen()); ++i) {
+    if (!value.Get(i).IsNumber()) break;
+    numbers.push_back(value.Get(i).GetNumberAsDouble());
+  }
+  if (!value.IsArray() || numbers.size() != value.ArrayLen())
+    fail(file, what + "." + key + " must be an array of numbers");
+  return numbers;
+}
+
+bool usesTextures(const tinygltf::Material& m) {
+  return m.pbrMetallicRoughness.baseColorTexture.index >= 0 ||
+         m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 || m.normalTexture.index >= 0 ||
+         m.occlusionTexture.index >= 0 || m.emissiveTexture.index >= 0;
+}
+
+Material convertMaterial(const tinygltf::Material& source, int index, const fs::path& file) {
+  const std::string what = "material " + std::to_string(index);
+  Material material;
+  material.name = source.name;
+  const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+  material.baseColor = colorFactor(pbr.baseColorFactor, what + " baseColorFactor", file);
+  material.metallic = unitFactor(pbr.metallicFactor, what + " metallicFactor", file);
+  material.roughness = unitFactor(pbr.roughnessFactor, what + " roughnessFactor", file);
+  // emissiveFactor is [0, 1] per the schema; KHR_materials_emissive_strength scales it beyond.
+  material.emissive = colorFactor(source.emissiveFactor, what + " emissiveFactor", file);
+
+  const auto strength = source.extensions.find("KHR_materials_emissive_strength");
+  if (strength != source.extensions.end()) {
+    const std::string ext = what + " KHR_materials_emissive_strength";
+    const double s = extensionNumber(strength->second, "emissiveStrength", 1.0, ext, file);
+    if (!(s >= 0.0)) fail(file, ext + ".emissiveStrength must be >= 0");
+    material.emissive *= float(s);
+  }
+  const auto specular = source.extensions.find("KHR_materials_specular");
+  if (specular != source.extensions.end()) {
+    const std::string ext = what + " KHR_materials_specular";
+    material.specular = unitFactor(extensionNumber(specular->second, "specularFactor", 1.0, ext, file),
+                                   ext + " specularFactor", file);
+    const std::vector<double> color =
+        extensionNumbers(specular->second, "specularColorFactor", {1.0, 1.0, 1.0}, ext, file);
+    // specularColorFactor may exceed 1 (the extension clamps F0 after multiplying), so only
+    // negative values are rejected.
+    if (color.size() != 3 || *std::min_element(color.begin(), color.end()) < 0.0)
+      fail(file, ext + ".specularColorFactor must be 3 numbers >= 0");
+    material.specularColor = glm::vec3(float(color[0]), float(color[1]), float(color[2]));
+  }
+  return material;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Primitives
+
+void requireFinite(std::span<const float> values, const std::string& what, const fs::path& file) {
+  for (float v : values)
+    if (!std::isfinite(v)) fail(file, what);
+}
+
+// Triangle lists from the three triangle modes, glTF 2.0 section 3.7.2.1.
+std::vector<std::uint32_t> triangleList(std::vector<std::uint32_t> v, int mode, const std::string& where,
+                                        const fs::path& file) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    if (v.size() % 3 != 0)
+      fail(file, where + ": " + std::to_string(v.size()) + " indices do not make whole triangles");
+    return v;
+  }
+  std::vector<std::uint32_t> triangles;
+  for (std::size_t i = 0; i + 2 < v.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP)
+      triangles.insert(triangles.end(), {v[i], v[i + 1 + i % 2], v[i + 2 - i % 2]});
+    else
+      triangles.insert(triangles.end(), {v[i + 1], v[i + 2], v[0]});
+  }
+  return triangles;
+}
+
+template <typename Vec>
+std::vector<Vec> toVectors(const std::vector<float>& values) {
+  std::vector<Vec> result(values.size() / Vec::length());
+  if (!result.empty()) std::memcpy(result.data(), values.data(), result.size() * sizeof(Vec));
+  return result;
+}
+
+class Loader {
+ public:
+  Loader(const tinygltf::Model& model, const fs::path& file) : model_(model), file_(file) {}
+
+  GltfContents load() {
+    bool textures = false;
+    for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+      contents_.materials.push_back(convertMaterial(model_.materials[i], int(i), file_));
+      textures = textures || usesTextures(model_.materials[i]);
+    }
+    if (textures) warn(file_, "textures are ignored; materials use their constant factors");
+
+    localMeshes_.resize(model_.meshes.size());
+    traverse(rootNodes());
+    if (contents_.meshes.empty()) fail(file_, "no triangle meshes");
+    if (cameraZfarMissing_) {
+      Bounds bounds;
+      for (const Mesh& mesh : contents_.meshes) bounds.extend(mesh.bounds());
+      contents_.camera->zfar = clipPlanesFor(contents_.camera->position, bounds).zfar;
+    }
+    return std::move(contents_);
+  }
+
+ private:
+  std::vector<int> rootNodes() const {
+    if (model_.defaultScene >= int(model_.scenes.size()))
+      fail(file_, "default scene " + std::to_string(model_.defaultScene) + " does not exist");
+    if (model_.defaultScene >= 0) return model_.scenes[model_.defaultScene].nodes;
+    if (!model_.scenes.empty()) return model_.scenes[0].nodes;
+    std::vector<bool> isChild(model_.nodes.size(), false);
+    for (const tinygltf::Node& node : model_.nodes)
+      for (int child : node.children)
+        if (child >= 0 && std::size_t(child) < isChild.size()) isChild[child] = true;
+    std::vector<int> roots;
+    for (std::size_t i = 0; i < isChild.size(); ++i)
+      if (!isChild[i]) roots.push_back(int(i));
+    return roots;
+  }
+
+  glm::mat4 localTransform(const tinygltf::Node& node, int index) const {
+    const std::string what = "node " + std::to_string(index);
+    if (!node.matrix.empty()) {
+      if (node.matrix.size() != 16) fail(file_, what + ": matrix must have 16 numbers");
+      glm::dmat4 m;
+      std::copy(node.matrix.begin(), node.matrix.end(), glm::value_ptr(m));  // column-major, as glTF
+      return glm::mat4(m);
+    }
+    glm::mat4 m(1.0f);
+    if (!node.translation.empty()) {
+      if (node.translation.size() != 3) fail(file_, what + ": translation must have 3 numbers");
+      m = glm::translate(m, glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
+    }
+    if (!node.rotation.empty()) {
+      if (node.rotation.size() != 4) fail(file_, what + ": rotation must have 4 numbers");
+      // glTF stores x, y, z, w; glm's constructor takes w first.
+      const glm::quat q(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
+                        float(node.rotation[2]));
+      if (!(glm::length(q) > 0.0f)) fail(file_, what + ": rotation is not a valid quaternion");
+      m *= glm::mat4_cast(glm::normalize(q));
+    }
+    if (!node.scale.empty()) {
+      if (node.scale.size() != 3) fail(file_, what + ": scale must have 3 numbers");
+      m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+    }
+    return m;
+  }
+
+  // Depth-first, pre-order, children in their listed order; iterative so deep hierarchies
+  // cannot overflow the call stack.
+  void traverse(const std::vector<int>& roots) {
+    std::vector<bool> visited(model_.nodes.size(), false);
+    std::vector<std::pair<int, glm::mat4>> stack;
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.emplace_back(*root, glm::mat4(1.0f));
+    while (!stack.empty()) {
+      const auto [index, parent] = stack.back();
+      stack.pop_back();
+      if (index < 0 || std::size_t(index) >= model_.nodes.size())
+        fail(file_, "node " + std::to_string(index) + " does not exist");
+      if (visited[index])
+        fail(file_, "node " + std::to_string(index) +
+                        " is reached twice in the scene graph (a cycle or two parents)");
+      visited[index] = true;
+      const tinygltf::Node& node = model_.nodes[index];
+      const glm::mat4 world = parent * localTransform(node, index);
+      if (node.mesh >= 0) instantiate(node.mesh, index, world);
+      if (node.camera >= 0 && !contents_.camera) readCamera(node.camera, index, world);
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+        stack.emplace_back(*child, world);
+    }
+  }
+
+  // The baker marks the ground of a .json scene with node extras {"isGround": true}
+  // (baked_scene_gltf.h), so a baked scene is framed without it, as the original scene was.
+  static bool isGroundNode(const tinygltf::Node& node) {
+    const tinygltf::Value& flag = node.extras.Get("isGround");
+    return flag.IsBool() && flag.Get<bool>();
+  }
+
+  void instantiate(int meshIndex, int nodeIndex, const glm::mat4& world) {
+    if (std::size_t(meshIndex) >= model_.meshes.size())
+      fail(file_,
+           "node " + std::to_string(nodeIndex) + ": mesh " + std::to_string(meshIndex) + " does not exist");
+    std::vector<std::optional<Mesh>>& locals = localMeshes_[meshIndex];
+    if (locals.empty()) {
+      const tinygltf::Mesh& mesh = model_.meshes[meshIndex];
+      for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+        locals.push_back(readPrimitive(meshIndex, int(p)));
+    }
+    for (const std::optional<Mesh>& local : locals) {
+      if (!local) continue;
+      Mesh mesh = *local;
+      mesh.source.node = nodeIndex;
+      mesh.isGround = isGroundNode(model_.nodes[nodeIndex]);
+      const std::string where = primitiveName(mesh.source.mesh, mesh.source.primitive);
+      transformMesh(mesh, world);
+      requireFinite(
+          std::span(reinterpret_cast<const float*>(mesh.positions.data()), 3 * mesh.positions.size()),
+          where + ": non-finite vertex position", file_);
+      if (const std::size_t dropped = removeZeroAreaTriangles(mesh))
+        warn(file_, where + ": dropped " + std::to_string(dropped) + " zero-area triangles");
+      if (mesh.indices.empty()) continue;
+      const bool hadNormals = !mesh.normals.empty();
+      if (const std::size_t repaired = repairNormals(mesh)) {
+        warn(file_, hadNormals ? where + ": replaced " + std::to_string(repaired) +
+                                     " zero-length or NaN normals with angle-weighted normals"
+                               : where + " has no normals; generated angle-weighted normals");
+      }
+      contents_.meshes.push_back(std::move(mesh));
+    }
+  }
+
+  // A primitive in its mesh's local space, checked; nullopt for points and lines.
+  std::optional<Mesh> readPrimitive(int meshIndex, int primitiveIndex) {
+    const tinygltf::Primitive& primitive = model_.meshes[meshIndex].primitives[primitiveIndex];
+    const std::string where = primitiveName(meshIndex, primitiveIndex);
+    if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP) {
+      warn(file_, where + " is points or lines (mode " + std::to_string(primitive.mode) + "); skipped");
+      return std::nullopt;
+    }
+    if (primitive.mode < TINYGLTF_MODE_TRIANGLES || primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+      fail(file_, where + ": unknown primitive mode " + std::to_string(primitive.mode));
+
+    Mesh mesh;
+    const std::string& name = model_.meshes[meshIndex].name;
+    mesh.name = name.empty() ? "mesh " + std::to_string(meshIndex) : name;
+    mesh.source = MeshSource{0, -1, meshIndex, primitiveIndex};
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) fail(file_, where + " has no POSITION attribute");
+    mesh.positions = toVectors<glm::vec3>(gltf::readFloats(model_, position->second, 3, "POSITION", file_));
+    const std::size_t vertexCount = mesh.positions.size();
+
+    for (const auto& [semantic, accessor] : primitive.attributes) {
+      const bool custom = semantic.size() > 1 && semantic[0] == '_';
+      if (semantic != "NORMAL" && semantic != "TEXCOORD_0" && !custom) continue;
+      int components = semantic == "NORMAL" ? 3 : semantic == "TEXCOORD_0" ? 2 : 0;
+      if (custom) {
+        components = accessor >= 0 && std::size_t(accessor) < model_.accessors.size()
+                         ? gltf::componentCount(model_.accessors[accessor].type)
+                         : 1;
+        if (components == 0) {
+          warn(file_, where + ": attribute " + semantic + " is a matrix; skipped");
+          continue;
+        }
+      }
+      std::vector<float> values = gltf::readFloats(model_, accessor, components, semantic, file_);
+      if (values.size() != vertexCount * components)
+        fail(file_, where + ": " + semantic + " has " + std::to_string(values.size() / components) +
+                        " elements but POSITION has " + std::to_string(vertexCount));
+      if (semantic == "NORMAL") {
+        mesh.normals = toVectors<glm::vec3>(values);
+      } else {
+        requireFinite(values, where + ": non-finite " + semantic + " value", file_);
+        if (custom)
+          mesh.attributes[semantic] = VertexAttribute{components, std::move(values)};
+        else
+          mesh.texcoords = toVectors<glm::vec2>(values);
+      }
+    }
+
+    std::vector<std::uint32_t> vertices(vertexCount);
+    if (primitive.indices >= 0)
+      vertices = gltf::readIndices(model_, primitive.indices, file_);
+    else
+      std::iota(vertices.begin(), vertices.end(), 0u);
+    for (std::uint32_t index : vertices)
+      if (index >= vertexCount)
+        fail(file_, where + ": index " + std::to_string(index) + " out of range (" +
+                        std::to_string(vertexCount) + " vertices)");
+    mesh.indices = triangleList(std::move(vertices), primitive.mode, where, file_);
+    mesh.material = materialIndex(primitive.material, where);
+    return mesh;
+  }
+
+  int materialIndex(int material, const std::string& where) {
+    if (material >= int(model_.materials.size()))
+      fail(file_, where + ": material " + std::to_string(material) + " does not exist");
+    if (material >= 0) return material;
+    if (defaultMaterial_ < 0) {
+      Material fallback;
+      fallback.name = "default";
+      contents_.materials.push_back(fallback);
+      defaultMaterial_ = int(contents_.materials.size()) - 1;
+    }
+    return defaultMaterial_;
+  }
+
+  void readCamera(int cameraIndex, int nodeIndex, const glm::mat4& world) {
+    const std::string what = "camera " + std::to_string(cameraIndex);
+    if (std::size_t(cameraIndex) >= model_.cameras.size())
+      fail(file_, "node " + std::to_string(nodeIndex) + ": " + what + " does not exist");
+    const tinygltf::Camera& camera = model_.cameras[cameraIndex];
+    if (camera.type != "perspective") {
+      warn(file_, what + " is not a perspective camera; ignored");
+      return;
+    }
+    const tinygltf::PerspectiveCamera& p = camera.perspective;
+    if (!(p.yfov > 0.0 && p.yfov < glm::pi<double>())) fail(file_, what + ": yfov must be in (0, pi)");
+    if (!(p.znear > 0.0)) fail(file_, what + ": znear must be > 0");
+    if (p.zfar != 0.0 && !(p.zfar > p.znear)) fail(file_, what + ": zfar must be greater than znear");
+
+    const glm::vec3 position(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    const glm::vec3 forward = glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f);
+    const glm::vec3 up = glm::mat3(world) * glm::vec3(0.0f, 1.0f, 0.0f);
+    if (!(glm::length(glm::cross(forward, up)) > 0.0f) || !std::isfinite(glm::length(position)))
+      fail(file_, "node " + std::to_string(nodeIndex) + ": degenerate camera transform");
+    // zfar 0 means infinite in glTF; load() replaces it once the scene's bounds are known.
+    cameraZfarMissing_ = p.zfar == 0.0;
+    contents_.camera = Camera::lookAt(position, position + forward, up, float(p.yfov), float(p.znear),
+                                      cameraZfarMissing_ ? float(p.znear) : float(p.zfar));
+  }
+
+  const tinygltf::Model& model_;
+  const fs::path& file_;
+  GltfContents contents_;
+  std::vector<std::vector<std::optional<Mesh>>> localMeshes_;  // per glTF mesh, per primitive
+  int defaultMaterial_ = -1;
+  bool cameraZfarMissing_ = false;
+};
+
+}  // namespace
+
+GltfContents loadGltf(const fs::path& file) {
+  const tinygltf::Model model = gltf::readModel(file);
+  return Loader(model, file).load();
+}
+
+}  // namespace iblkit

@@ -1,0 +1,336 @@
+#include "core/scene_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <initializer_list>
+#include <iterator>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/gltf_load.h"
+#include "core/procedural_mesh.h"
+
+namespace iblkit {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr int kMaxImageSize = 16384;
+
+// Reads one JSON object strictly: only the listed keys are allowed, and every error names the
+// key path ("models[0].scale").
+class ObjectReader {
+ public:
+  ObjectReader(const json& object, std::string path, const fs::path& file,
+               std::initializer_list<const char*> keys)
+      : object_(object), path_(std::move(path)), file_(file) {
+    if (!object.is_object()) fail(file_, (path_.empty() ? "the document" : path_) + ": expected an object");
+    for (const auto& [key, value] : object.items()) {
+      bool known = false;
+      for (const char* allowed : keys) known = known || key == allowed;
+      if (known) continue;
+      std::string expected;
+      for (const char* allowed : keys) expected += (expected.empty() ? "" : ", ") + std::string(allowed);
+      fail(file_, keyPath(key) + ": unknown key (expected one of: " + expected + ")");
+    }
+  }
+
+  bool has(const char* key) const { return object_.contains(key); }
+  const json& at(const char* key) const { return object_.at(key); }
+
+  std::string keyPath(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+  [[noreturn]] void wrongValue(const char* key, const std::string& expected) const {
+    fail(file_, keyPath(key) + ": expected " + expected);
+  }
+
+  const json& required(const char* key) const {
+    if (!has(key))
+      fail(file_, (path_.empty() ? "the document" : path_) + ": missing required key '" + key + "'");
+    return at(key);
+  }
+
+  std::string string(const char* key) const {
+    const json& value = required(key);
+    if (!value.is_string() || value.get<std::string>().empty()) wrongValue(key, "a non-empty string");
+    return value.get<std::string>();
+  }
+
+  bool boolean(const char* key, bool fallback) const {
+    if (!has(key)) return fallback;
+    if (!at(key).is_boolean()) wrongValue(key, "true or false");
+    return at(key).get<bool>();
+  }
+
+  // A number in [min, max]; `fallback` when absent.
+  double number(const char* key, double fallback, double min = -kInfinity, double max = kInfinity) const {
+    if (!has(key)) return fallback;
+    const json& value = at(key);
+    if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < min ||
+        value.get<double>() > max) {
+      std::ostringstream range;
+      if (min > -kInfinity && max < kInfinity)
+        range << " in [" << min << ", " << max << "]";
+      else if (min > -kInfinity)
+        range << " >= " << min;
+      wrongValue(key, "a number" + range.str());
+    }
+    return value.get<double>();
+  }
+
+  int integer(const char* key, int fallback, int min, int max) const {
+    if (!has(key)) return fallback;
+    const json& value = at(key);
+    if (!value.is_number_integer() || value.get<long long>() < min || value.get<long long>() > max)
+      wrongValue(key, "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+    return value.get<int>();
+  }
+
+  // An array of exactly n numbers, or nothing when `value` is not one.
+  static std::optional<std::vector<double>> numbers(const json& value, std::size_t n) {
+    if (!value.is_array() || value.size() != n) return std::nullopt;
+    std::vector<double> result;
+    for (const json& element : value) {
+      if (!element.is_number() || !std::isfinite(element.get<double>())) return std::nullopt;
+      result.push_back(element.get<double>());
+    }
+    return result;
+  }
+
+  glm::vec3 vec3(const char* key, const glm::vec3& fallback) const {
+    if (!has(key)) return fallback;
+    const auto v = numbers(at(key), 3);
+    if (!v) wrongValue(key, "an array of 3 numbers");
+    return glm::vec3(float((*v)[0]), float((*v)[1]), float((*v)[2]));
+  }
+
+  // A color: 3 numbers in [0, max].
+  glm::vec3 color(const char* key, const glm::vec3& fallback, double max) const {
+    if (!has(key)) return fallback;
+    const auto v = numbers(at(key), 3);
+    bool valid = v.has_value();
+    for (std::size_t i = 0; valid && i < 3; ++i) valid = (*v)[i] >= 0.0 && (*v)[i] <= max;
+    if (!valid) {
+      std::ostringstream expected;
+      expected << "an array of 3 numbers in [0, " << max << "]";
+      wrongValue(key, expected.str());
+    }
+    return glm::vec3(float((*v)[0]), float((*v)[1]), float((*v)[2]));
+  }
+
+  const fs::path& file() const { return file_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  const json& object_;
+  std::string path_;
+  const fs::path& file_;
+};
+
+// "material": {...} overrides on top of `material`; ranges follow glTF (emissive unbounded, as
+// with KHR_materials_emissive_strength; specularColor up to the extension's practical range).
+void applyMaterialOverrides(const ObjectReader& parent, Material& material) {
+  if (!parent.has("material")) return;
+  const ObjectReader m(parent.at("material"), parent.keyPath("material"), parent.file(),
+                       {"baseColor", "metallic", "roughness", "specular", "specularColor", "emissive"});
+  material.baseColor = m.color("baseColor", material.baseColor, 1.0);
+  material.metallic = float(m.number("metallic", material.metallic, 0.0, 1.0));
+  material.roughness = float(m.number("roughness", material.roughness, 0.0, 1.0));
+  material.specular = float(m.number("specular", material.specular, 0.0, 1.0));
+  material.specularColor = m.color("specularColor", material.specularColor, kInfinity);
+  material.emissive = m.color("emissive", material.emissive, kInfinity);
+}
+
+glm::mat4 modelTransform(const ObjectReader& model) {
+  const glm::vec3 translation = model.vec3("translation", glm::vec3(0.0f));
+  glm::quat rotation(1.0f, 0.0f, 0.0f, 0.0f);
+  if (model.has("rotation")) {
+    const auto q = ObjectReader::numbers(model.at("rotation"), 4);
+    // glTF order x, y, z, w; glm's constructor takes w first.
+    if (!q || !(std::hypot((*q)[0], (*q)[1], (*q)[2]) + std::abs((*q)[3]) > 0.0))
+      model.wrongValue("rotation", "a quaternion [x, y, z, w] (not all zero)");
+    rotation = glm::normalize(glm::quat(float((*q)[3]), float((*q)[0]), float((*q)[1]), float((*q)[2])));
+  }
+  glm::vec3 scale(1.0f);
+  if (model.has("scale")) {
+    const json& value = model.at("scale");
+    const auto v = value.is_number() ? ObjectReader::numbers(json::array({value, value, value}), 3)
+                                     : ObjectReader::numbers(value, 3);
+    if (!v || (*v)[0] == 0.0 || (*v)[1] == 0.0 || (*v)[2] == 0.0)
+      model.wrongValue("scale", "a nonzero number or an array of 3 nonzero numbers");
+    scale = glm::vec3(float((*v)[0]), float((*v)[1]), float((*v)[2]));
+  }
+  return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) *
+         glm::scale(glm::mat4(1.0f), scale);
+}
+
+// A built-in shape: "sphere" is a unit sphere at the origin (place and size it with translation
+// and scale), finely tessellated so that its silhouette and interpolated normals are smooth at
+// the bundled image sizes. Its material is a white dielectric (glTF defaults with metallic 0),
+// which the model's "material" overrides.
+GltfContents shapeContents(const ObjectReader& model) {
+  const std::string shape = model.string("shape");
+  if (shape != "sphere") model.wrongValue("shape", "\"sphere\"");
+  constexpr int kRings = 96, kSegments = 192;
+  const ProceduralMesh sphere = uvSphere(glm::vec3(0.0f), 1.0f, kRings, kSegments);
+  Mesh mesh;
+  mesh.name = shape;
+  mesh.positions = sphere.positions;
+  mesh.normals = sphere.normals;
+  mesh.indices = sphere.indices;
+  Material material;
+  material.name = shape;
+  material.metallic = 0.0f;
+  GltfContents contents;
+  contents.meshes.push_back(std::move(mesh));
+  contents.materials.push_back(material);
+  return contents;
+}
+
+void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene) {
+  const json& models = root.required("models");
+  if (!models.is_array() || models.empty()) root.wrongValue("models", "a non-empty array of models");
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    const ObjectReader model(models[i], "models[" + std::to_string(i) + "]", root.file(),
+                             {"file", "shape", "translation", "rotation", "scale", "material"});
+    if (model.has("file") == model.has("shape"))
+      fail(root.file(), model.path() + ": needs exactly one of 'file' and 'shape'");
+    fs::path path;
+    GltfContents contents;
+    if (model.has("file")) {
+      path = (folder / model.string("file")).lexically_normal();
+      contents = loadGltf(path);
+    } else {
+      contents = shapeContents(model);
+      path = "shape:" + model.string("shape");
+    }
+    const glm::mat4 transform = modelTransform(model);
+
+    const int materialOffset = int(scene.materials.size());
+    for (Material& material : contents.materials) {
+      applyMaterialOverrides(model, material);
+      scene.materials.push_back(material);
+    }
+    for (Mesh& mesh : contents.meshes) {
+      transformMesh(mesh, transform);
+      mesh.material += materialOffset;
+      mesh.source.model = int(i);
+      scene.meshes.push_back(std::move(mesh));
+    }
+    scene.modelFiles.push_back(path);
+  }
+}
+
+// A square of side `size` at height `height`, centred under the objects, facing +Y.
+Mesh groundMesh(const glm::vec3& center, float height, float size, int material) {
+  Mesh ground;
+  ground.name = "ground";
+  ground.isGround = true;
+  ground.material = material;
+  ground.source = MeshSource{-1, -1, -1, -1};
+  const float h = 0.5f * size;
+  for (const glm::vec2 corner : {glm::vec2(-h, -h), glm::vec2(h, -h), glm::vec2(h, h), glm::vec2(-h, h)}) {
+    ground.positions.emplace_back(center.x + corner.x, height, center.z + corner.y);
+    ground.normals.emplace_back(0.0f, 1.0f, 0.0f);
+  }
+  // Counter-clockwise seen from above: cross(p3 - p0, p2 - p0) points along +Y.
+  ground.indices = {0, 3, 2, 0, 2, 1};
+  return ground;
+}
+
+void readGround(const ObjectReader& root, Scene& scene) {
+  if (!root.has("ground")) return;
+  const ObjectReader ground(root.at("ground"), "ground", root.file(),
+                            {"enabled", "height", "size", "material"});
+  if (!ground.boolean("enabled", true)) return;
+  const float height = float(ground.number("height", scene.bounds.min.y));
+  const float size = float(ground.number("size", 10.0 * scene.bounds.radius(), 0.0));
+  if (!(size > 0.0f)) ground.wrongValue("size", "a number > 0");
+  // A neutral grey dielectric unless overridden.
+  Material material;
+  material.name = "ground";
+  material.baseColor = glm::vec3(0.5f);
+  material.metallic = 0.0f;
+  applyMaterialOverrides(ground, material);
+  scene.materials.push_back(material);
+  scene.meshes.push_back(groundMesh(scene.bounds.center(), height, size, int(scene.materials.size()) - 1));
+}
+
+void readEnvironment(const ObjectReader& root, const fs::path& folder, Scene& scene) {
+  if (!root.has("environment")) return;
+  const ObjectReader environment(root.at("environment"), "environment", root.file(),
+                                 {"file", "rotation", "intensity"});
+  const std::string name = environment.string("file");
+  scene.environment.file = (folder / name).lexically_normal();
+  std::error_code error;
+  if (!fs::is_regular_file(scene.environment.file, error))
+    fail(root.file(), "environment.file: '" + name + "' does not exist");
+  scene.environment.rotationDegrees = float(environment.number("rotation", 0.0));
+  scene.environment.intensity = float(environment.number("intensity", 1.0, 0.0));
+}
+
+void readCamera(const ObjectReader& root, Scene& scene) {
+  if (!root.has("camera")) return;
+  const ObjectReader camera(root.at("camera"), "camera", root.file(),
+                            {"position", "target", "up", "yfov", "znear", "zfar"});
+  camera.required("position");
+  camera.required("target");
+  const glm::vec3 position = camera.vec3("position", glm::vec3(0.0f));
+  const glm::vec3 target = camera.vec3("target", glm::vec3(0.0f));
+  const glm::vec3 up = camera.vec3("up", glm::vec3(0.0f, 1.0f, 0.0f));
+  if (target == position) camera.wrongValue("target", "a point different from camera.position");
+  if (!(glm::length(glm::cross(target - position, up)) > 0.0f))
+    camera.wrongValue("up", "a direction not parallel to the view direction");
+  const double yfov = camera.number("yfov", 45.0, 0.0, 180.0);
+  if (yfov <= 0.0 || yfov >= 180.0) camera.wrongValue("yfov", "degrees in (0, 180)");
+  const ClipPlanes automatic = clipPlanesFor(position, scene.bounds);
+  const double znear = camera.number("znear", automatic.znear, 0.0);
+  if (!(znear > 0.0)) camera.wrongValue("znear", "a number > 0");
+  const double zfar = camera.number("zfar", std::max(double(automatic.zfar), 2.0 * znear), 0.0);
+  if (!(zfar > znear)) camera.wrongValue("zfar", "a number greater than znear");
+  scene.camera = Camera::lookAt(position, target, up, float(glm::radians(yfov)), float(znear), float(zfar));
+}
+
+json parseDocument(const fs::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream) fail(file, "cannot read file");
+  const std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    fail(file, std::string("invalid JSON: ") + e.what());
+  }
+}
+
+}  // namespace
+
+Scene loadSceneFile(const fs::path& file) {
+  const json document = parseDocument(file);
+  const ObjectReader root(document, "", file,
+                          {"models", "ground", "environment", "camera", "width", "height"});
+  const fs::path folder = file.parent_path();
+
+  Scene scene;
+  scene.file = file;
+  readModels(root, folder, scene);
+  scene.bounds = objectBounds(scene.meshes);
+  readGround(root, scene);
+  readEnvironment(root, folder, scene);
+  readCamera(root, scene);
+  scene.width = root.integer("width", kDefaultImageWidth, 1, kMaxImageSize);
+  scene.height = root.integer("height", kDefaultImageHeight, 1, kMaxImageSize);
+  return scene;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,317 @@
+// iblkit-bake: precomputes what the real-time engine needs for a scene (docs/baker.md).
+//
+//   iblkit-bake SCENE [--env ENV] [--env-format latlong|mirrorball|angular] -o OUTDIR [--ao-rays N]
+//               [--ao-distance D] [--ao-falloff P] [--ao-area] [--bounces N] [--seed S] [--threads T]
+//               [--sh-window auto|none|BANDS] [--specular-samples N] [--lut-size N]
+//
+// OUTDIR/scene.glb  the whole flattened scene (world-space meshes, ground included, materials with
+//                   the scene's overrides applied, camera) with per-vertex visibility attributes
+//                   (visibility_attributes.h);
+// OUTDIR/bake.json  inputs, parameters, per-stage timings and ray counts.
+// OUTDIR appears only when everything is written (output_directory.h).
+
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "baker/baked_scene_gltf.h"
+#include "baker/brdf_lut.h"
+#include "baker/environment_sh.h"
+#include "baker/irradiance_cube.h"
+#include "baker/output_directory.h"
+#include "baker/specular_prefilter.h"
+#include "baker/vertex_visibility.h"
+#include "baker/visibility_attributes.h"
+#include "core/environment_map_file.h"
+#include "core/error.h"
+#include "core/scene.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr const char* kProgram = "iblkit-bake";
+constexpr const char* kVersion = "iblkit-bake 1";
+
+struct Options {
+  fs::path scene, environment, output;
+  int aoRays = 256;
+  float aoDistance = 0.0f;
+  float aoFalloff = 0.0f;
+  bool aoArea = false;
+  int bounces = 0;
+  std::uint32_t seed = 0;
+  int threads = 0;  // 0: every core
+  std::string envFormat = "latlong";
+  std::string shWindow = "auto";  // "auto", "none" or a cutoff in bands
+  std::uint32_t specularSamples = 1024;
+  int lutSize = 128;
+};
+
+class Stopwatch {
+ public:
+  // Seconds since the previous call (or construction).
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// A one-line progress bar on stderr, redrawn when the whole percentage changes; only when stderr
+// is a terminal, so logs and tests see no carriage returns. Called from the worker threads.
+std::function<void(std::size_t, std::size_t)> progressBar(const char* stage) {
+  if (!isatty(STDERR_FILENO)) return {};
+  struct State {
+    std::mutex mutex;
+    int shown = -1;
+  };
+  auto state = std::make_shared<State>();
+  return [state, stage](std::size_t done, std::size_t total) {
+    const int percent = total ? int(100 * done / total) : 100;
+    const std::lock_guard lock(state->mutex);
+    if (percent <= state->shown) return;
+    state->shown = percent;
+    constexpr int kWidth = 40;
+    const int filled = percent * kWidth / 100;
+    std::fprintf(stderr, "\r%s: %s [%s%s] %3d%%%s", kProgram, stage, std::string(filled, '#').c_str(),
+                 std::string(kWidth - filled, ' ').c_str(), percent, percent == 100 ? "\n" : "");
+  };
+}
+
+void writeJson(const fs::path& file, const json& document) {
+  std::ofstream stream(file);
+  stream << document.dump(2) << '\n';
+  if (!stream.flush()) fail(file, "cannot write file");
+}
+
+// The grey diffuse albedo of a mesh for --bounces: the Rec. 709 luminance of the Lambert lobe's
+// colour, baseColor * (1 - metallic) (material.h), clamped to [0, 1].
+float diffuseAlbedo(const Scene& scene, const Mesh& mesh) {
+  if (mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size()) return 0.0f;
+  const Material& material = scene.materials[std::size_t(mesh.material)];
+  const glm::vec3 diffuse = material.baseColor * (1.0f - material.metallic);
+  return std::clamp(glm::dot(diffuse, glm::vec3(0.2126f, 0.7152f, 0.0722f)), 0.0f, 1.0f);
+}
+
+// The sinc^4 window cutoff for SH9: automatic (the largest cutoff keeping irradiance >= 0), none
+// (0), or a number of bands.
+float shWindowCutoff(const std::string& choice, const SphericalHarmonics9& sh) {
+  if (choice == "auto") return automaticShWindowCutoff(sh);
+  if (choice == "none") return 0.0f;
+  try {
+    std::size_t used = 0;
+    const float cutoff = std::stof(choice, &used);
+    if (used == choice.size() && cutoff > 0.0f) return cutoff;
+  } catch (const std::exception&) {
+  }
+  throw Error("--sh-window: expected auto, none or a positive number of bands, got '" + choice + "'");
+}
+
+// Face size of env/irradiance.exr (irradiance is smooth: 16 is plenty, docs/prefilter.md).
+constexpr int kIrradianceCubeSize = 16;
+
+// The environment stages: env/sh9.json (SH9 radiance, windowed), env/irradiance.exr (brute-force
+// irradiance cube, and the SH9 irradiance's error against it in bake.json), env/specular.exr (GGX
+// mip chain as an OpenEXR cube map) and env/brdf_lut.exr (split-sum DFG table), written into
+// `folder`.
+json bakeEnvironment(const EnvironmentMap& environment, const Options& options, const fs::path& folder,
+                     Stopwatch& stopwatch, json& timings) {
+  fs::create_directories(folder / "env");
+  // The environment stages, one step each on the terminal's progress bar (the specular chain is
+  // most of the time).
+  const auto progress = progressBar("environment");
+  auto step = [&](std::size_t done) {
+    if (progress) progress(done, 4);
+  };
+  step(0);
+  const SphericalHarmonics9 sh = projectEnvironmentSh9(environment);
+  const float cutoff = shWindowCutoff(options.shWindow, sh);
+  writeSh9Json(folder / "env" / "sh9.json", sh, cutoff);
+  timings["sh9_s"] = stopwatch.lap();
+  step(1);
+  const CubeMap irradiance = irradianceCube(environment, kIrradianceCubeSize);
+  writeIrradianceCubeExr(folder / "env" / "irradiance.exr", irradiance);
+  const IrradianceError shError = shIrradianceError(irradiance, cutoff > 0.0f ? windowSh9(sh, cutoff) : sh);
+  timings["irradiance_s"] = stopwatch.lap();
+  step(2);
+  SpecularPrefilterOptions specularOptions;
+  specularOptions.sampleCount = options.specularSamples;
+  const SpecularCube specular = prefilterSpecular(environment, specularOptions);
+  writeSpecularCubeExr(folder / "env" / "specular.exr", specular);
+  timings["specular_s"] = stopwatch.lap();
+  step(3);
+  writeBrdfLutExr(folder / "env" / "brdf_lut.exr", computeBrdfLut(options.lutSize));
+  timings["brdf_lut_s"] = stopwatch.lap();
+  step(4);
+  return {{"sh_window_cutoff", cutoff},
+          {"irradiance_cube_size", kIrradianceCubeSize},
+          {"sh9_irradiance_error",
+           {{"mean_relative", shError.meanRelative}, {"max_relative", shError.maxRelative}}},
+          {"specular_face_size", specular.levels.front().size},
+          {"specular_roughness_per_level", specular.roughness},
+          {"brdf_lut_size", options.lutSize}};
+}
+
+int bake(const Options& options) {
+  Stopwatch stopwatch;
+  json timings;
+  Scene scene = loadScene(options.scene);
+  timings["load_s"] = stopwatch.lap();
+
+  const fs::path environment = options.environment.empty() ? scene.environment.file : options.environment;
+  std::error_code error;
+  if (!environment.empty() && !fs::is_regular_file(environment, error)) fail(environment, "does not exist");
+  // Loaded before the long visibility stage, so a bad map fails fast.
+  std::optional<EnvironmentMap> environmentMap;
+  if (!environment.empty()) {
+    environmentMap = loadEnvironmentMap(environment, parseProbeFormat(options.envFormat));
+    environmentMap->setRotationDegrees(scene.environment.rotationDegrees);
+    environmentMap->setIntensity(scene.environment.intensity);
+    timings["load_environment_s"] = stopwatch.lap();
+  }
+
+  VisibilitySettings settings;
+  settings.rayCount = options.aoRays;
+  settings.maxDistance = options.aoDistance;
+  settings.seed = options.seed;
+  settings.falloff = options.aoFalloff;
+  settings.areaSampling = options.aoArea;
+  settings.bounces = options.bounces;
+  if (options.bounces > 0)
+    for (const Mesh& mesh : scene.meshes) settings.albedo.push_back(diffuseAlbedo(scene, mesh));
+  settings.progress = progressBar("visibility");
+  VisibilityStatistics statistics;
+  const std::vector<MeshVisibility> visibility = bakeVertexVisibility(scene.meshes, settings, &statistics);
+  const double visibilitySeconds = stopwatch.lap();
+  timings["visibility_s"] = visibilitySeconds;
+  timings["visibility_build_s"] = statistics.buildSeconds;
+  timings["visibility_rays_s"] = statistics.raySeconds;
+  timings["bounces_s"] = statistics.bounceSeconds;
+  attachVisibilityAttributes(scene.meshes, visibility);
+
+  std::size_t triangles = 0;
+  for (const Mesh& mesh : scene.meshes) triangles += mesh.triangleCount();
+  writeDirectoryAtomically(options.output, [&](const fs::path& folder) {
+    writeSceneGlb(scene, folder / "scene.glb");
+    timings["write_scene_s"] = stopwatch.lap();
+    json outputs = {"scene.glb", "bake.json"};
+    json environmentReport = nullptr;
+    if (environmentMap) {
+      environmentReport = bakeEnvironment(*environmentMap, options, folder, stopwatch, timings);
+      for (const char* file : {"env/sh9.json", "env/irradiance.exr", "env/specular.exr", "env/brdf_lut.exr"})
+        outputs.push_back(file);
+    }
+    const json report = {
+        {"version", kVersion},
+        {"inputs",
+         {{"scene", fs::absolute(options.scene).lexically_normal().string()},
+          // Absolute, so the bake loads from any working directory (the engine draws the sky from it).
+          {"environment",
+           environment.empty() ? json(nullptr) : json(fs::absolute(environment).lexically_normal().string())}}},
+        {"parameters",
+         {{"ao_rays", options.aoRays},
+          {"ao_distance", options.aoDistance},
+          {"ao_falloff", options.aoFalloff},
+          {"ao_area", options.aoArea},
+          {"bounces", options.bounces},
+          {"seed", options.seed},
+          {"env_format", options.envFormat},
+          {"environment_rotation_degrees", scene.environment.rotationDegrees},
+          {"environment_intensity", scene.environment.intensity},
+          {"sh_window", options.shWindow},
+          {"specular_samples", options.specularSamples}}},
+        {"environment", environmentReport},
+        {"outputs", outputs},
+        {"timings", timings},
+        {"counts",
+         {{"meshes", scene.meshes.size()},
+          {"vertices", statistics.vertices},
+          {"triangles", triangles},
+          {"rays", statistics.rays},
+          {"bounce_rays", statistics.bounceRays},
+          {"rejected_directions", statistics.rejected}}},
+        {"rays_per_second", visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0},
+        {"trace_rays_per_second",
+         statistics.raySeconds > 0.0 ? double(statistics.rays) / statistics.raySeconds : 0.0}};
+    writeJson(folder / "bake.json", report);
+  });
+  std::cout << kProgram << ": wrote " << options.output.string() << " (" << statistics.vertices
+            << " vertices, " << statistics.rays << " rays in " << visibilitySeconds << " s)\n";
+  return 0;
+}
+
+}  // namespace
+}  // namespace iblkit
+
+int main(int argc, char** argv) {
+  iblkit::Options options;
+  CLI::App app{"Bakes per-vertex ambient occlusion, bent normals and SH transfer for a scene."};
+  app.add_option("scene", options.scene, "scene: .json description, .gltf or .glb")->required();
+  app.add_option("--env", options.environment, "environment map (default: the scene's)");
+  app.add_option("-o,--output", options.output, "output folder, replaced only after success")->required();
+  app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex")
+      ->check(CLI::Range(1, 1 << 24))
+      ->capture_default_str();
+  app.add_option("--ao-distance", options.aoDistance,
+                 "occluders beyond this distance are ignored; 0 = infinite")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--ao-falloff", options.aoFalloff,
+                 "occlusion falloff exponent p: a hit at distance t occludes by (1 - t / D)^p; 0 = off "
+                 "(needs --ao-distance D)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_flag("--ao-area", options.aoArea,
+               "sample ray origins over each vertex's one-ring (large triangles)");
+  app.add_option("--bounces", options.bounces, "interreflection bounces added to the SH transfer")
+      ->check(CLI::Range(0, 16))
+      ->capture_default_str();
+  app.add_option("--seed", options.seed, "sample scrambling seed")->capture_default_str();
+  app.add_option("--env-format", options.envFormat, "environment layout: latlong, mirrorball or angular")
+      ->check(CLI::IsMember({"latlong", "mirrorball", "angular"}))
+      ->capture_default_str();
+  app.add_option("--sh-window", options.shWindow, "SH9 ringing window: auto, none or a cutoff in bands")
+      ->capture_default_str();
+  app.add_option("--specular-samples", options.specularSamples,
+                 "GGX samples per texel for the roughest level")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  app.add_option("--lut-size", options.lutSize, "DFG table size")
+      ->check(CLI::Range(8, 1024))
+      ->capture_default_str();
+  app.add_option("--threads", options.threads, "worker threads; 0 = every core")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  std::unique_ptr<tbb::global_control> threads;
+  if (options.threads > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    std::size_t(options.threads));
+  try {
+    return iblkit::bake(options);
+  } catch (const std::exception& e) {
+    std::cerr << iblkit::kProgram << ": " << e.what() << '\n';
+    return 1;
+  }
+}

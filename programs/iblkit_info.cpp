@@ -1,0 +1,170 @@
+// iblkit-info FILE...: what iblkit reads from images, environment maps, glTF models and scene
+// files: size, layout and pixel statistics, or meshes, triangles, materials, bounds, camera and
+// environment. `--json` prints one JSON object per file; `--png OUT` writes a tone-mapped preview
+// of one image. A file that cannot be read gets one line on stderr and a non-zero exit status.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/cube_map.h"
+#include "core/environment_map.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "core/scene.h"
+
+namespace {
+
+using iblkit::Image;
+using nlohmann::json;
+
+std::string lowerExtension(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool isImage(const std::filesystem::path& file) {
+  const std::string ext = lowerExtension(file);
+  return ext == ".exr" || ext == ".hdr" || ext == ".pic" || ext == ".png";
+}
+
+json vec3Json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+std::string vec3Text(const glm::vec3& v) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", v.x, v.y, v.z);
+  return text;
+}
+
+const char* layoutName(iblkit::EnvmapLayout layout) {
+  switch (layout) {
+    case iblkit::EnvmapLayout::LatLong:
+      return "latlong";
+    case iblkit::EnvmapLayout::Cube:
+      return "cube";
+    case iblkit::EnvmapLayout::None:
+      break;
+  }
+  return "none";
+}
+
+json describeImage(const std::filesystem::path& file, Image* pixels) {
+  iblkit::ExrInfo info;
+  *pixels = lowerExtension(file) == ".exr" ? iblkit::readExr(file, &info) : iblkit::readImage(file);
+  // A file that declares itself an environment map must be one.
+  if (info.envmap == iblkit::EnvmapLayout::LatLong) iblkit::EnvironmentMap::fromImage(*pixels, file);
+  if (info.envmap == iblkit::EnvmapLayout::Cube) iblkit::cubeFromExrStrip(*pixels, file);
+  const Image::Stats s = pixels->stats();
+  return {{"file", file.string()},
+          {"kind", "image"},
+          {"width", pixels->width()},
+          {"height", pixels->height()},
+          {"envmap", layoutName(info.envmap)},
+          {"levels", info.levels},
+          {"latLongAspect", pixels->width() == 2 * pixels->height()},
+          {"min", vec3Json(s.min)},
+          {"max", vec3Json(s.max)},
+          {"mean", vec3Json(s.mean)},
+          {"maxLuminance", s.maxLuminance},
+          {"meanLuminance", s.meanLuminance}};
+}
+
+json describeScene(const std::filesystem::path& file) {
+  const iblkit::Scene scene = iblkit::loadScene(file);
+  std::size_t vertices = 0, triangles = 0, groundMeshes = 0;
+  for (const iblkit::Mesh& mesh : scene.meshes) {
+    vertices += mesh.vertexCount();
+    triangles += mesh.triangleCount();
+    groundMeshes += mesh.isGround ? 1 : 0;
+  }
+  json attributes = json::array();
+  for (const iblkit::Mesh& mesh : scene.meshes)
+    for (const auto& [name, attribute] : mesh.attributes)
+      if (std::find(attributes.begin(), attributes.end(), name) == attributes.end())
+        attributes.push_back(name);
+  return {{"file", file.string()},
+          {"kind", "scene"},
+          {"meshes", scene.meshes.size()},
+          {"groundMeshes", groundMeshes},
+          {"vertices", vertices},
+          {"triangles", triangles},
+          {"materials", scene.materials.size()},
+          {"customAttributes", attributes},
+          {"boundsMin", vec3Json(scene.bounds.min)},
+          {"boundsMax", vec3Json(scene.bounds.max)},
+          {"camera", scene.camera ? "scene" : "framed"},
+          {"environment", scene.environment.file.string()},
+          {"environmentRotation", scene.environment.rotationDegrees},
+          {"environmentIntensity", scene.environment.intensity},
+          {"size", json::array({scene.width, scene.height})}};
+}
+
+void printText(const json& d) {
+  std::printf("%s\n", d["file"].get<std::string>().c_str());
+  if (d["kind"] == "image") {
+    std::printf("  image %dx%d, envmap %s, %d level(s)%s\n", d["width"].get<int>(), d["height"].get<int>(),
+                d["envmap"].get<std::string>().c_str(), d["levels"].get<int>(),
+                d["latLongAspect"].get<bool>() ? ", 2:1 (lat-long)" : "");
+    const auto v = [&](const char* key) {
+      return vec3Text(glm::vec3(d[key][0].get<float>(), d[key][1].get<float>(), d[key][2].get<float>()));
+    };
+    std::printf("  min %s max %s mean %s\n", v("min").c_str(), v("max").c_str(), v("mean").c_str());
+    std::printf("  luminance max %.4g mean %.4g\n", d["maxLuminance"].get<float>(),
+                d["meanLuminance"].get<float>());
+    return;
+  }
+  std::printf("  %zu mesh(es) (%zu ground), %zu vertices, %zu triangles, %zu material(s)\n",
+              d["meshes"].get<std::size_t>(), d["groundMeshes"].get<std::size_t>(),
+              d["vertices"].get<std::size_t>(), d["triangles"].get<std::size_t>(),
+              d["materials"].get<std::size_t>());
+  const auto v = [&](const char* key) {
+    return vec3Text(glm::vec3(d[key][0].get<float>(), d[key][1].get<float>(), d[key][2].get<float>()));
+  };
+  std::printf("  bounds %s to %s, camera %s\n", v("boundsMin").c_str(), v("boundsMax").c_str(),
+              d["camera"].get<std::string>().c_str());
+  if (!d["environment"].get<std::string>().empty())
+    std::printf("  environment %s (rotation %g degrees, intensity %g)\n",
+                d["environment"].get<std::string>().c_str(), d["environmentRotation"].get<float>(),
+                d["environmentIntensity"].get<float>());
+  if (!d["customAttributes"].empty()) std::printf("  attributes %s\n", d["customAttributes"].dump().c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"iblkit-info: what iblkit reads from images, environment maps, glTF models and scenes"};
+  std::vector<std::string> files;
+  bool asJson = false;
+  std::string png;
+  iblkit::ToneMapping toneMapping;
+  app.add_option("files", files, "images (.exr .hdr .png), models (.glb .gltf) or scenes (.json)")
+      ->required();
+  app.add_flag("--json", asJson, "one JSON object per file");
+  app.add_option("--png", png, "write a tone-mapped PNG preview of the (single) image");
+  app.add_option("--exposure", toneMapping.exposure, "preview exposure in stops");
+  CLI11_PARSE(app, argc, argv);
+  if (!png.empty() && (files.size() != 1 || !isImage(files.front()))) {
+    std::fprintf(stderr, "iblkit-info: --png needs exactly one image file\n");
+    return 2;
+  }
+
+  int status = 0;
+  for (const std::string& name : files) {
+    try {
+      Image pixels;
+      const json d = isImage(name) ? describeImage(name, &pixels) : describeScene(name);
+      if (!png.empty()) iblkit::writePng(png, pixels, toneMapping);
+      if (asJson)
+        std::printf("%s\n", d.dump().c_str());
+      else
+        printText(d);
+    } catch (const iblkit::Error& e) {
+      std::fprintf(stderr, "iblkit-info: %s\n", e.what());
+      status = 1;
+    }
+  }
+  return status;
+}

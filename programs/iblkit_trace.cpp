@@ -1,0 +1,196 @@
+// iblkit-trace SCENE -o OUT.exr: the reference path tracer. Renders the image the real-time
+// engine approximates (same scene, camera, environment and material model) with Embree, and
+// writes OpenEXR (plus optional feature layers and a PNG preview). docs/reference-tracer.md
+// describes the integrators, options and conventions.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "core/environment_map_file.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "core/scene.h"
+#include "reference/environment_sampler.h"
+#include "reference/integrator.h"
+#include "reference/render_scene.h"
+#include "reference/renderer.h"
+
+namespace iblkit {
+namespace {
+
+struct Options {
+  std::filesystem::path scene, output, png;
+  std::filesystem::path albedo, normal, depth, variance, mask, bentNormal;
+  std::filesystem::path environment;
+  float environmentRotation = 0.0f, environmentIntensity = 1.0f;
+  bool misCompensation = false;
+  std::string integrator = "path", envSampling = "mis", filter = "box";
+  int maxDepth = 16;
+  float aoDistance = std::numeric_limits<float>::infinity();
+  int samplesPerPixel = 64;
+  double timeSeconds = 0.0;
+  int width = 0, height = 0;
+  std::uint32_t seed = 0;
+  int threads = 0;
+  float exposure = 0.0f;
+  std::optional<float> phongExponent;
+};
+
+// Fails early, before a long render, when an output cannot be written.
+void checkOutputFolder(const std::filesystem::path& file) {
+  if (file.empty()) return;
+  const std::filesystem::path folder = file.parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder)) fail(file, "folder does not exist");
+}
+
+// A progress bar with the estimated time left, redrawn in place (only on a terminal).
+void drawProgress(double fraction, double seconds) {
+  static double lastDrawn = -1.0;
+  if (fraction < 1.0 && seconds - lastDrawn < 0.25) return;
+  lastDrawn = seconds;
+  constexpr int kWidth = 40;
+  const int filled = static_cast<int>(fraction * kWidth);
+  const double eta = fraction > 0.0 ? seconds * (1.0 - fraction) / fraction : 0.0;
+  std::fprintf(stderr, "\r[%s%s] %3d%%  ETA %.0f s ",
+               std::string(static_cast<std::size_t>(filled), '#').c_str(),
+               std::string(static_cast<std::size_t>(kWidth - filled), ' ').c_str(),
+               static_cast<int>(fraction * 100.0), eta);
+  std::fflush(stderr);
+}
+
+int run(const Options& options, const CLI::App& app) {
+  // Before any file is read, naming the option (render() would say "render: ...").
+  requireInRange("--spp", options.samplesPerPixel, 1, kMaxSamplesPerPixel);
+  if (app.count("--width")) requireInRange("--width", options.width, 1, kMaxImageSide);
+  if (app.count("--height")) requireInRange("--height", options.height, 1, kMaxImageSide);
+  if (options.threads < 0) fail("--threads", "must be >= 0 (0: all cores)");
+  if (options.maxDepth < 1)
+    fail("--max-depth", "must be at least 1, got " + std::to_string(options.maxDepth));
+  if (!(options.aoDistance > 0.0f)) fail("--ao-distance", "must be positive");
+  if (!(options.timeSeconds >= 0.0) || !std::isfinite(options.timeSeconds))
+    fail("--time", "must be a finite number of seconds >= 0");
+  if (!std::isfinite(options.environmentIntensity) || options.environmentIntensity < 0.0f)
+    fail("--env-intensity", "must be finite and >= 0");
+  if (!std::isfinite(options.environmentRotation)) fail("--env-rotation", "must be finite");
+  IntegratorSettings integratorSettings;
+  integratorSettings.kind = parseIntegratorKind(options.integrator);
+  integratorSettings.envSampling = parseEnvSampling(options.envSampling);
+  integratorSettings.maxDepth = options.maxDepth;
+  integratorSettings.aoDistance = options.aoDistance;
+  const PixelFilterKind filter = parsePixelFilter(options.filter);
+  if (options.phongExponent) {
+    if (!std::isfinite(*options.phongExponent) || *options.phongExponent < 0.0f)
+      fail("--phong", "exponent must be finite and >= 0");
+    integratorSettings.phong = PhongLobe{*options.phongExponent};
+  }
+  if (!options.bentNormal.empty() && integratorSettings.kind != IntegratorKind::AmbientOcclusion)
+    fail("--bent-normal", "needs --integrator ao");
+  for (const auto* file : {&options.output, &options.png, &options.albedo, &options.normal, &options.depth,
+                           &options.variance, &options.mask, &options.bentNormal})
+    checkOutputFolder(*file);
+
+  Scene scene = loadScene(options.scene);
+  RenderSettings settings;
+  settings.width = app.count("--width") ? options.width : scene.width;
+  settings.height = app.count("--height") ? options.height : scene.height;
+  settings.samplesPerPixel = options.samplesPerPixel;
+  settings.timeSeconds = options.timeSeconds;
+  settings.seed = options.seed;
+  settings.threads = options.threads;
+  settings.filter = filter;
+
+  const std::filesystem::path environmentFile =
+      options.environment.empty() ? scene.environment.file : options.environment;
+  if (environmentFile.empty()) fail(options.scene, "the scene names no environment map (give --env FILE)");
+  EnvironmentMap environment = loadEnvironmentMap(environmentFile);
+  environment.setRotationDegrees(app.count("--env-rotation") ? options.environmentRotation
+                                                             : scene.environment.rotationDegrees);
+  environment.setIntensity(app.count("--env-intensity") ? options.environmentIntensity
+                                                        : scene.environment.intensity);
+  const EnvironmentSampler environmentSampler(environment, options.misCompensation);
+  if (environmentSampler.isBlack())
+    warn(environmentFile, "environment is black everywhere: only emission will show");
+
+  const float aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
+  const Camera camera = sceneCamera(scene, aspect);
+  const RenderScene renderScene(std::move(scene));
+  const Integrator integrator(renderScene, environment, environmentSampler, integratorSettings);
+
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  const RenderResult result =
+      render(integrator, camera, settings, terminal ? RenderProgress(drawProgress) : RenderProgress());
+  if (terminal) std::fputs("\n", stderr);
+
+  const ExrWriteOptions exrOptions{.pixelType = PixelType::Float};
+  writeExr(options.output, result.beauty, exrOptions);
+  const std::pair<const std::filesystem::path*, const Image*> layers[] = {
+      {&options.albedo, &result.albedo}, {&options.normal, &result.normal},
+      {&options.depth, &result.depth},   {&options.variance, &result.variance},
+      {&options.mask, &result.mask},     {&options.bentNormal, &result.bentNormal}};
+  for (const auto& [file, image] : layers)
+    if (!file->empty()) writeExr(*file, *image, exrOptions);
+  if (!options.png.empty()) writePng(options.png, result.beauty, ToneMapping{.exposure = options.exposure});
+
+  const double megaRaysPerSecond =
+      result.seconds > 0.0 ? static_cast<double>(result.rays) / result.seconds * 1e-6 : 0.0;
+  std::printf("%dx%d, %d spp, %.2f s, %.2f Mrays/s\n", settings.width, settings.height,
+              result.samplesPerPixel, result.seconds, megaRaysPerSecond);
+  return 0;
+}
+
+}  // namespace
+}  // namespace iblkit
+
+int main(int argc, char** argv) {
+  using namespace iblkit;
+  Options options;
+  CLI::App app{"iblkit-trace: reference path tracer (Embree), renders a scene under its environment map"};
+  app.add_option("scene", options.scene, "scene (.json, .gltf or .glb)")->required();
+  app.add_option("-o,--output", options.output, "beauty image, OpenEXR float RGB")->required();
+  app.add_option("--png", options.png, "PNG preview (tone-mapped, sRGB)");
+  app.add_option("--exposure", options.exposure, "PNG exposure in stops");
+  app.add_option("--albedo", options.albedo, "first-hit base colour, OpenEXR");
+  app.add_option("--normal", options.normal, "first-hit world shading normal, OpenEXR");
+  app.add_option("--depth", options.depth, "distance to the first hit (metres), OpenEXR");
+  app.add_option("--variance", options.variance, "variance of each beauty pixel's mean, OpenEXR");
+  app.add_option("--mask", options.mask, "coverage of non-ground objects, OpenEXR");
+  app.add_option("--bent-normal", options.bentNormal, "ao only: mean unoccluded direction, OpenEXR");
+  app.add_option("--env", options.environment, "environment map (overrides the scene's)");
+  app.add_option("--env-rotation", options.environmentRotation, "degrees about +Y (overrides the scene's)");
+  app.add_option("--env-intensity", options.environmentIntensity,
+                 "radiance multiplier (overrides the scene's)");
+  app.add_flag("--mis-compensation", options.misCompensation, "MIS compensation in the environment sampler");
+  app.add_option("--integrator", options.integrator, "path, direct or ao");
+  app.add_option("--env-sampling", options.envSampling, "uniform, cosine, brdf, env or mis");
+  app.add_option("--phong", options.phongExponent,
+                 "every surface uses the modified Phong lobe of this exponent (sampling study)");
+  app.add_option("--max-depth", options.maxDepth, "most scattering events of a path");
+  app.add_option("--ao-distance", options.aoDistance, "ao: occluders farther away do not count");
+  app.add_option("--spp", options.samplesPerPixel, "samples per pixel (per pass with --time)");
+  app.add_option("--time", options.timeSeconds, "render passes of --spp until this many seconds have passed");
+  app.add_option("--width", options.width, "image width (default: the scene's)");
+  app.add_option("--height", options.height, "image height (default: the scene's)");
+  app.add_option("--filter", options.filter, "pixel filter: box or gaussian (sigma 0.5 px, radius 1.5 px)");
+  app.add_option("--seed", options.seed, "random seed");
+  app.add_option("--threads", options.threads, "worker threads (0: all)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "iblkit-trace: " << e.what() << "\n";
+    return 1;
+  }
+  try {
+    return run(options, app);
+  } catch (const std::exception& e) {
+    std::cerr << "iblkit-trace: " << e.what() << "\n";
+    return 1;
+  }
+}

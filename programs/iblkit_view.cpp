@@ -1,0 +1,294 @@
+// iblkit-view: the real-time engine's program (docs/engine.md).
+//
+//   iblkit-view OUTDIR|SCENE --headless -o IMAGE [--width W] [--height H] [--mode M]
+//               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
+//               [--bench N] [--no-sky] [--ao-rays N]
+//
+// OUTDIR is an iblkit-bake folder; a .json/.gltf/.glb scene is baked in memory first. -o .exr
+// writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
+// Without --headless the window viewer runs (engine/view/viewer.h, docs/viewer.md):
+//
+//   iblkit-view OUTDIR|SCENE [--env ENV] [--env-dir DIR] [--reference REF.exr] [--compare VIEW] [--frames N] [--screenshot FILE]
+//               [--no-panel] [--width W] [--height H] [--mode M] [--exposure E] ...
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/image_io.h"
+#include "engine/gl/gl_debug.h"
+#include "engine/gl/headless_context.h"
+#include "engine/gl/render_target.h"
+#include "engine/gl/renderer.h"
+#include "engine/view/viewer.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kProgram = "iblkit-view";
+
+struct Options {
+  fs::path input, output, normalOutput, depthOutput;
+  bool headless = false;
+  int width = 0, height = 0;  // 0: the scene's size
+  std::string mode = "full";  // or "all" with --bench
+  float exposure = 0.0f;
+  float envRotation = 0.0f;
+  int samples = 1;
+  bool sampleShading = false;
+  int supersample = 1;
+  int bench = 0;
+  int aoRays = 64;
+  bool noSky = false;
+  // The window viewer's.
+  std::filesystem::path envDir, environment, reference, screenshot;
+  std::string compare = "split";
+  int frames = 0;
+  bool noPanel = false;
+};
+
+std::string lowerExtension(const fs::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return extension;
+}
+
+void requireExtension(const fs::path& file, std::initializer_list<const char*> allowed) {
+  const std::string extension = lowerExtension(file);
+  std::string list;
+  for (const char* a : allowed) {
+    if (extension == a) return;
+    list += (list.empty() ? "" : " or ") + std::string(a);
+  }
+  fail(file, "unsupported output format (expected " + list + ")");
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct FrameTimes {
+  double cpuMs = 0.0, gpuMs = 0.0;
+};
+
+// Median frame times of each mode over `frames` rounds; each round renders every mode once, in
+// turn, so that load from other processes weighs on all modes alike. CPU time runs from the first
+// GL call to glFinish; GPU time is a GL_TIME_ELAPSED query around the frame (llvmpipe's is not
+// meaningful: it renders when glFinish asks).
+std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, const Camera& camera,
+                                  const FrameSettings& settings, const std::vector<ShadingMode>& modes,
+                                  int frames) {
+  std::vector<std::vector<double>> cpu(modes.size()), gpu(modes.size());
+  GLuint query = 0;
+  glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+  for (int frame = 0; frame < frames; ++frame)
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+      FrameSettings modeSettings = settings;
+      modeSettings.mode = modes[m];
+      const auto start = std::chrono::steady_clock::now();
+      glBeginQuery(GL_TIME_ELAPSED, query);
+      renderer.render(camera, modeSettings, target.framebuffer(), target.width(), target.height());
+      target.resolve();
+      glEndQuery(GL_TIME_ELAPSED);
+      glFinish();
+      cpu[m].push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      GLuint64 nanoseconds = 0;
+      glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);
+      gpu[m].push_back(double(nanoseconds) * 1e-6);
+    }
+  glDeleteQueries(1, &query);
+  checkGlErrors("benchmark");
+  std::vector<FrameTimes> times;
+  for (std::size_t m = 0; m < modes.size(); ++m) times.push_back({median(cpu[m]), median(gpu[m])});
+  return times;
+}
+
+// The target's colour, box-filtered down by the supersampling factor (a power of two).
+Image readFrame(RenderTarget& target, int supersample) {
+  Image image = target.readColor();
+  for (int factor = supersample; factor > 1; factor /= 2) image = downsample2x(image);
+  return image;
+}
+
+void writeLayer(Renderer& renderer, RenderTarget& target, const Camera& camera, FrameSettings settings,
+                FrameLayer layer, const fs::path& file, int supersample) {
+  settings.layer = layer;
+  renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
+  const Image image = readFrame(target, supersample);
+  checkGlErrors("render");
+  writeExr(file, image, {.pixelType = PixelType::Float, .writeAlpha = true});
+}
+
+int runHeadless(const Options& options) {
+  if (options.output.empty() && options.bench == 0)
+    throw Error("-o: an output image is required with --headless");
+  if (!options.output.empty()) requireExtension(options.output, {".exr", ".png"});
+  for (const fs::path& layer : {options.normalOutput, options.depthOutput})
+    if (!layer.empty()) requireExtension(layer, {".exr"});
+  const bool allModes = options.mode == "all";
+  if (allModes && options.bench == 0) fail("--mode", "'all' is only for --bench");
+  FrameSettings settings;
+  if (!allModes) settings.mode = parseShadingMode(options.mode);
+  settings.exposure = options.exposure;
+  settings.envRotationDegrees = options.envRotation;
+  settings.drawSky = !options.noSky;
+  settings.sampleShading = options.sampleShading;
+
+  LoadBakeOptions loadOptions;
+  loadOptions.aoRays = options.aoRays;
+  const BakedScene bake = loadBake(options.input, loadOptions);
+  const int width = options.width > 0 ? options.width : bake.scene.width;
+  const int height = options.height > 0 ? options.height : bake.scene.height;
+
+  HeadlessContext context = HeadlessContext::create();
+  enableGlDebugOutput(GlDebugMode::Strict);
+  Renderer renderer(bake);
+  RenderTarget target(width * options.supersample, height * options.supersample, options.samples);
+  const Camera camera = sceneCamera(bake.scene, float(width) / float(height));
+  checkGlErrors("setup");
+
+  if (options.bench > 0) {
+    std::cout << kProgram << ": " << context.description() << ", " << width << "x" << height << ", "
+              << target.samples() << " sample(s), median of " << options.bench << " frames\n";
+    std::vector<ShadingMode> modes(std::begin(kShadingModes), std::end(kShadingModes));
+    if (!allModes) modes = {settings.mode};
+    benchmark(renderer, target, camera, settings, modes, 2);  // warm-up: shader variants, caches
+    const std::vector<FrameTimes> times = benchmark(renderer, target, camera, settings, modes, options.bench);
+    double unlit = 0.0, full = 0.0;
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+      std::cout << std::fixed << std::setprecision(2) << "  " << std::left << std::setw(11)
+                << shadingModeName(modes[m]) << " cpu " << times[m].cpuMs << " ms  gpu " << times[m].gpuMs
+                << " ms\n";
+      if (modes[m] == ShadingMode::Unlit) unlit = times[m].cpuMs;
+      if (modes[m] == ShadingMode::Full) full = times[m].cpuMs;
+    }
+    if (unlit > 0.0 && full > 0.0)
+      std::cout << "  full / unlit = " << std::setprecision(2) << full / unlit << '\n';
+    if (options.output.empty()) return 0;
+  }
+
+  renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
+  const Image image = readFrame(target, options.supersample);
+  checkGlErrors("render");
+  if (!options.normalOutput.empty())
+    writeLayer(renderer, target, camera, settings, FrameLayer::Normal, options.normalOutput, options.supersample);
+  if (!options.depthOutput.empty())
+    writeLayer(renderer, target, camera, settings, FrameLayer::Depth, options.depthOutput, options.supersample);
+  if (lowerExtension(options.output) == ".exr")
+    writeExr(options.output, image, {.pixelType = PixelType::Float, .writeAlpha = true});
+  else
+    writePng(options.output, image, {.exposure = settings.exposure, .curve = settings.curve});
+  return 0;
+}
+
+// --env-dir defaults to assets/hdri, under IBLKIT_ASSETS when that is set.
+fs::path defaultEnvironmentFolder() {
+  const char* assets = std::getenv("IBLKIT_ASSETS");
+  return (assets && *assets ? fs::path(assets) : fs::path("assets")) / "hdri";
+}
+
+int runWindow(const Options& options) {
+  if (!options.output.empty()) throw Error("-o: only with --headless (the window saves screenshots: --screenshot)");
+  if (options.bench > 0) throw Error("--bench: only with --headless (the window prints its frame time with --frames)");
+  if (!options.normalOutput.empty() || !options.depthOutput.empty())
+    throw Error("--normal/--depth: only with --headless");
+  ViewerOptions viewer;
+  viewer.input = options.input;
+  viewer.width = options.width;
+  viewer.height = options.height;
+  viewer.mode = options.mode;
+  viewer.exposure = options.exposure;
+  viewer.envRotation = options.envRotation;
+  viewer.samples = options.samples;
+  viewer.noSky = options.noSky;
+  viewer.aoRays = options.aoRays;
+  viewer.envDir = options.envDir.empty() ? defaultEnvironmentFolder() : options.envDir;
+  viewer.environment = options.environment;
+  viewer.reference = options.reference;
+  viewer.compare = options.compare;
+  viewer.frames = options.frames;
+  viewer.screenshot = options.screenshot;
+  viewer.panel = !options.noPanel;
+  return runViewer(viewer);
+}
+
+void rejectWindowFlagsWhenHeadless(const Options& options) {
+  if (!options.headless) return;
+  if (options.frames > 0 || !options.screenshot.empty() || !options.environment.empty() || !options.reference.empty() || !options.envDir.empty() ||
+      options.noPanel)
+    throw Error("--frames, --screenshot, --env, --env-dir, --reference and --no-panel are for the window, not --headless");
+}
+
+}  // namespace
+}  // namespace iblkit
+
+int main(int argc, char** argv) {
+  iblkit::Options options;
+  CLI::App app{"Renders a baked scene in real time (OpenGL 4.5), in a window or headless."};
+  app.add_option("input", options.input, "iblkit-bake output folder, or a .json/.gltf/.glb scene")
+      ->required();
+  app.add_flag("--headless", options.headless, "render offscreen through EGL and write -o");
+  app.add_option("-o,--output", options.output,
+                 "output image: .exr (linear float RGBA) or .png (tone-mapped)");
+  app.add_option("--width", options.width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
+  app.add_option("--height", options.height, "image height (default: the scene's)")
+      ->check(CLI::Range(1, 16384));
+  app.add_option("--mode", options.mode,
+                 "unlit, mirror, sh, sh-ao, sh-ao-bent, prt or full (all: every mode, --bench)")
+      ->capture_default_str();
+  app.add_option("--exposure", options.exposure, "exposure in stops (PNG and display)")
+      ->capture_default_str();
+  app.add_option("--env-rotation", options.envRotation, "extra environment rotation about +Y, degrees")
+      ->capture_default_str();
+  app.add_flag("--sample-shading", options.sampleShading,
+               "shade every MSAA sample (supersampling: the pixel's shading is averaged, as the reference does)");
+  app.add_option("--supersample", options.supersample,
+                 "render K x K pixels per output pixel and box-filter them down (K = 1, 2 or 4)")
+      ->check(CLI::IsMember({1, 2, 4}));
+  app.add_option("--samples", options.samples, "MSAA samples per pixel")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  app.add_option("--normal", options.normalOutput, "also write the world shading normal layer (.exr)");
+  app.add_option("--depth", options.depthOutput, "also write the camera distance layer (.exr)");
+  app.add_option("--bench", options.bench, "render N frames and print the median frame time")
+      ->check(CLI::Range(1, 100000));
+  app.add_flag("--no-sky", options.noSky, "black background (alpha 0) instead of the environment");
+  app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex when baking a scene in memory")
+      ->check(CLI::Range(1, 1 << 16))
+      ->capture_default_str();
+  app.add_option("--env-dir", options.envDir,
+                 "window: folder of environment maps to switch between (default: assets/hdri)");
+  app.add_option("--env", options.environment,
+                 "window: switch to this environment map at start (prefiltered while the bake's shows)");
+  app.add_option("--reference", options.reference,
+                 "window: path-traced reference (.exr) shown beside the live frame, or as a difference");
+  app.add_option("--compare", options.compare, "window: the reference view to start with: live, split, difference")
+      ->capture_default_str();
+  app.add_option("--frames", options.frames, "window: quit after N frames and print the median frame time")
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--screenshot", options.screenshot,
+                 "window: at exit, write the last frame as FILE.exr (radiance) and FILE.png (the view)");
+  app.add_flag("--no-panel", options.noPanel, "window: start with the panel hidden (Tab shows it)");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    iblkit::rejectWindowFlagsWhenHeadless(options);
+    return options.headless ? iblkit::runHeadless(options) : iblkit::runWindow(options);
+  } catch (const std::exception& e) {
+    std::cerr << iblkit::kProgram << ": " << e.what() << '\n';
+    return 1;
+  }
+}
