@@ -50,8 +50,4 @@ Image computeBrdfLut(int size, std::uint32_t sampleCount) {
   return lut;
 }
 
-void writeBrdfLutExr(const std::filesystem::path& path, const Image& lut) {
-  writeExr(path, lut, {.pixelType = PixelType::Float});
-}
-
 }  // namespace iblkit

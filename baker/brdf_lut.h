@@ -9,7 +9,6 @@
 // perceptual roughness^2). docs/prefilter.md.
 
 #include <cstdint>
-#include <filesystem>
 #include <glm/glm.hpp>
 
 #include "core/image.h"
@@ -30,8 +29,5 @@ glm::vec3 integrateDfg(float NoV, float roughness, std::uint32_t sampleCount);
 //   R = A (scale of f0), G = B (bias), B = A + B = E (for the multi-scattering term), alpha 1.
 // Parallel over rows (TBB). Throws std::invalid_argument unless size >= 1 and sampleCount >= 1.
 Image computeBrdfLut(int size = 128, std::uint32_t sampleCount = 512);
-
-// Writes the table as a 32-bit float RGB OpenEXR (temp name, then rename).
-void writeBrdfLutExr(const std::filesystem::path& path, const Image& lut);
 
 }  // namespace iblkit

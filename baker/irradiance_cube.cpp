@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "baker/environment_sh.h"
+#include "core/environment_sh.h"
 #include "core/image.h"
 #include "core/image_io.h"
 
@@ -39,10 +39,6 @@ IrradianceError shIrradianceError(const CubeMap& irradiance, const SphericalHarm
       }
   error.meanRelative = count ? static_cast<float>(sum / count) : 0.0f;
   return error;
-}
-
-void writeIrradianceCubeExr(const std::filesystem::path& path, const CubeMap& irradiance) {
-  writeExr(path, cubeToExrStrip(irradiance), {.pixelType = PixelType::Float, .envmap = EnvmapLayout::Cube});
 }
 
 }  // namespace iblkit

@@ -3,7 +3,6 @@
 // force (every texel of the map a light, bruteForceIrradianceCube), to compare the SH9 irradiance
 // the engine evaluates against (issue 4: "an irradiance cube map for comparison"). docs/prefilter.md.
 
-#include <filesystem>
 
 #include "core/cube_map.h"
 #include "core/environment_map.h"
@@ -29,9 +28,5 @@ struct IrradianceError {
   float maxRelative = 0.0f;
 };
 IrradianceError shIrradianceError(const CubeMap& irradiance, const SphericalHarmonics9& sh);
-
-// Writes the cube as a single-level OpenEXR cube map (float, W x 6W strip, OpenEXR's envmap
-// attribute). Throws Error naming the file when it cannot be written.
-void writeIrradianceCubeExr(const std::filesystem::path& path, const CubeMap& irradiance);
 
 }  // namespace iblkit

@@ -15,10 +15,10 @@
 // sample stands for, pdf_j = D(h_j) / 4 (N = V), Omega_p = 4 pi / (6 size_0^2) a source texel's.
 
 #include <cstdint>
-#include <filesystem>
 #include <vector>
 
 #include "core/cube_map.h"
+#include "bakefile/specular_exr.h"
 #include "core/environment_map.h"
 
 namespace iblkit {
@@ -31,12 +31,6 @@ struct SpecularPrefilterOptions {
   // GGX samples per texel of the roughest level; smoother levels take fewer
   // (specularSampleCount).
   std::uint32_t sampleCount = 1024;
-};
-
-// The prefiltered chain and the perceptual roughness of each level.
-struct SpecularCube {
-  CubeMapLevels levels;
-  std::vector<float> roughness;
 };
 
 // Samples per texel for a level of perceptual roughness r: round(maxSamples * r), at least
@@ -62,13 +56,5 @@ CubeMap prefilterSpecularLevel(const CubeMapLevels& source, int size, float roug
 // level count outside [2, log2(baseSize) + 1].
 SpecularCube prefilterSpecular(const EnvironmentMap& environment,
                                const SpecularPrefilterOptions& options = {});
-
-// Writes the chain as a tiled, mip-mapped OpenEXR cube environment map (32-bit float RGB, envmap =
-// cube, each level a W x 6W strip, cubeToExrStrip), with the string attribute
-// "iblkit:roughnessPerLevel" ("0 0.142857 ..."). OpenEXR's ROUND_DOWN chain of a W x 6W image goes
-// on below the 1 x 6 strip (1 x 3, then 1 x 1): those two levels, which are no cube, are box
-// downsamples of the last strip (readers use the first log2(W) + 1 levels, as many as the
-// attribute lists). Throws Error unless the chain is complete down to 1 x 1 faces.
-void writeSpecularCubeExr(const std::filesystem::path& path, const SpecularCube& cube);
 
 }  // namespace iblkit

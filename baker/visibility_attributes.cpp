@@ -38,19 +38,4 @@ void attachVisibilityAttributes(std::vector<Mesh>& meshes, const std::vector<Mes
   }
 }
 
-ShBasis9 transferFromAttributes(const Mesh& mesh, std::size_t vertex) {
-  ShBasis9 t{};
-  for (int a = 0; a < 3; ++a) {
-    const auto found = mesh.attributes.find(kTransferAttributes[a]);
-    if (found == mesh.attributes.end())
-      fail(kSubject, std::string("mesh '") + mesh.name + "' has no " + kTransferAttributes[a]);
-    const VertexAttribute& attribute = found->second;
-    if (attribute.componentCount != 3 || attribute.data.size() < 3 * (vertex + 1))
-      fail(kSubject, std::string(kTransferAttributes[a]) + " of mesh '" + mesh.name +
-                         "' is not VEC3 or has no vertex " + std::to_string(vertex));
-    for (int c = 0; c < 3; ++c) t[3 * a + c] = attribute.data[3 * vertex + c];
-  }
-  return t;
-}
-
 }  // namespace iblkit

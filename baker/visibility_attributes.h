@@ -1,36 +1,17 @@
 #pragma once
-// How baked vertex visibility is stored in glTF: custom per-vertex attributes (names starting
-// with '_', glTF 2.0 section 3.7.2.1), float accessors, one value per vertex in the vertex order
-// of the mesh. docs/baker.md documents the same table for the engine that reads them.
-//
-//   _AO          SCALAR  ambient occlusion in [0, 1] (fraction of cosine-weighted rays escaping)
-//   _BENTNORMAL  VEC3    unit bent normal, world space
-//   _BENTLENGTH  SCALAR  length of the mean escaping direction, in [0, 1] (visibility cone)
-//   _SHT0        VEC3    SH transfer t0, t1, t2 (band 0 and the first two of band 1)
-//   _SHT1        VEC3    t3, t4, t5
-//   _SHT2        VEC3    t6, t7, t8
-// with t_k in shBasis9's order (k = l(l+1) + m) and normalisation (vertex_visibility.h).
+// Attaching the baker's per-vertex visibility (vertex_visibility.h) to meshes as the attributes a
+// bake folder stores (bakefile/vertex_attributes.h names and documents them).
 
 #include <vector>
 
 #include "baker/vertex_visibility.h"
+#include "bakefile/vertex_attributes.h"
 #include "core/mesh.h"
 
 namespace iblkit {
 
-inline constexpr const char* kAmbientOcclusionAttribute = "_AO";
-inline constexpr const char* kBentNormalAttribute = "_BENTNORMAL";
-inline constexpr const char* kBentLengthAttribute = "_BENTLENGTH";
-// _SHT0, _SHT1, _SHT2: three VEC3 attributes holding the nine transfer coefficients in order.
-inline constexpr const char* kTransferAttributes[3] = {"_SHT0", "_SHT1", "_SHT2"};
-
 // Stores visibility[i] in meshes[i].attributes under the names above (replacing any present).
 // Throws Error("vertex visibility attributes: ...") when the counts of meshes or vertices differ.
 void attachVisibilityAttributes(std::vector<Mesh>& meshes, const std::vector<MeshVisibility>& visibility);
-
-// The nine transfer coefficients of vertex `vertex`, read back from _SHT0.._SHT2 (the inverse
-// packing). Throws Error("vertex visibility attributes: ...") when an attribute is missing, is not
-// VEC3, or has no such vertex.
-ShBasis9 transferFromAttributes(const Mesh& mesh, std::size_t vertex);
 
 }  // namespace iblkit

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "baker/environment_sh.h"
+#include "core/environment_sh.h"
 #include "baker/specular_prefilter.h"
 #include "core/environment_map_file.h"
 #include "core/latlong.h"

@@ -15,11 +15,9 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <mutex>
@@ -27,17 +25,18 @@
 #include <optional>
 #include <string>
 
-#include "baker/baked_scene_gltf.h"
-#include "baker/brdf_lut.h"
-#include "baker/environment_sh.h"
+#include "baker/environment_stages.h"
 #include "baker/irradiance_cube.h"
-#include "baker/output_directory.h"
-#include "baker/specular_prefilter.h"
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
+#include "bakefile/bake_layout.h"
+#include "bakefile/bake_record.h"
+#include "bakefile/scene_glb.h"
 #include "core/environment_map_file.h"
 #include "core/error.h"
+#include "core/output_directory.h"
 #include "core/scene.h"
+#include "core/stopwatch.h"
 
 namespace iblkit {
 namespace {
@@ -46,7 +45,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr const char* kProgram = "iblkit-bake";
-constexpr const char* kVersion = "iblkit-bake 1";
 
 struct Options {
   fs::path scene, environment, output;
@@ -61,20 +59,6 @@ struct Options {
   std::string shWindow = "auto";  // "auto", "none" or a cutoff in bands
   std::uint32_t specularSamples = 1024;
   int lutSize = 128;
-};
-
-class Stopwatch {
- public:
-  // Seconds since the previous call (or construction).
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return seconds;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
 // A one-line progress bar on stderr, redrawn when the whole percentage changes; only when stderr
@@ -98,12 +82,6 @@ std::function<void(std::size_t, std::size_t)> progressBar(const char* stage) {
   };
 }
 
-void writeJson(const fs::path& file, const json& document) {
-  std::ofstream stream(file);
-  stream << document.dump(2) << '\n';
-  if (!stream.flush()) fail(file, "cannot write file");
-}
-
 // The grey diffuse albedo of a mesh for --bounces: the Rec. 709 luminance of the Lambert lobe's
 // colour, baseColor * (1 - metallic) (material.h), clamped to [0, 1].
 float diffuseAlbedo(const Scene& scene, const Mesh& mesh) {
@@ -113,10 +91,10 @@ float diffuseAlbedo(const Scene& scene, const Mesh& mesh) {
   return std::clamp(glm::dot(diffuse, glm::vec3(0.2126f, 0.7152f, 0.0722f)), 0.0f, 1.0f);
 }
 
-// The sinc^4 window cutoff for SH9: automatic (the largest cutoff keeping irradiance >= 0), none
-// (0), or a number of bands.
-float shWindowCutoff(const std::string& choice, const SphericalHarmonics9& sh) {
-  if (choice == "auto") return automaticShWindowCutoff(sh);
+// The sinc^4 window cutoff for SH9: automatic (unset: the largest cutoff keeping irradiance >= 0),
+// none (0), or a number of bands.
+std::optional<float> shWindowCutoff(const std::string& choice) {
+  if (choice == "auto") return std::nullopt;
   if (choice == "none") return 0.0f;
   try {
     std::size_t used = 0;
@@ -127,52 +105,34 @@ float shWindowCutoff(const std::string& choice, const SphericalHarmonics9& sh) {
   throw Error("--sh-window: expected auto, none or a positive number of bands, got '" + choice + "'");
 }
 
-// Face size of env/irradiance.exr (irradiance is smooth: 16 is plenty, docs/prefilter.md).
-constexpr int kIrradianceCubeSize = 16;
-
-// The environment stages: env/sh9.json (SH9 radiance, windowed), env/irradiance.exr (brute-force
-// irradiance cube, and the SH9 irradiance's error against it in bake.json), env/specular.exr (GGX
-// mip chain as an OpenEXR cube map) and env/brdf_lut.exr (split-sum DFG table), written into
-// `folder`.
-json bakeEnvironment(const EnvironmentMap& environment, const Options& options, const fs::path& folder,
-                     Stopwatch& stopwatch, json& timings) {
-  fs::create_directories(folder / "env");
-  // The environment stages, one step each on the terminal's progress bar (the specular chain is
-  // most of the time).
-  const auto progress = progressBar("environment");
-  auto step = [&](std::size_t done) {
-    if (progress) progress(done, 4);
-  };
-  step(0);
-  const SphericalHarmonics9 sh = projectEnvironmentSh9(environment);
-  const float cutoff = shWindowCutoff(options.shWindow, sh);
-  writeSh9Json(folder / "env" / "sh9.json", sh, cutoff);
-  timings["sh9_s"] = stopwatch.lap();
-  step(1);
-  const CubeMap irradiance = irradianceCube(environment, kIrradianceCubeSize);
-  writeIrradianceCubeExr(folder / "env" / "irradiance.exr", irradiance);
-  const IrradianceError shError = shIrradianceError(irradiance, cutoff > 0.0f ? windowSh9(sh, cutoff) : sh);
-  timings["irradiance_s"] = stopwatch.lap();
-  step(2);
-  SpecularPrefilterOptions specularOptions;
-  specularOptions.sampleCount = options.specularSamples;
-  const SpecularCube specular = prefilterSpecular(environment, specularOptions);
-  writeSpecularCubeExr(folder / "env" / "specular.exr", specular);
-  timings["specular_s"] = stopwatch.lap();
-  step(3);
-  writeBrdfLutExr(folder / "env" / "brdf_lut.exr", computeBrdfLut(options.lutSize));
-  timings["brdf_lut_s"] = stopwatch.lap();
-  step(4);
-  return {{"sh_window_cutoff", cutoff},
-          {"irradiance_cube_size", kIrradianceCubeSize},
+// The environment stages (baker/environment_stages.h), written into `folder`'s env/; returns
+// bake.json's "environment" section.
+json bakeEnvironment(const EnvironmentMap& environment, const Options& options, std::optional<float> windowCutoff,
+                     const fs::path& folder, json& timings) {
+  EnvironmentStageOptions stageOptions;
+  stageOptions.shWindowCutoff = windowCutoff;
+  stageOptions.specularSamples = options.specularSamples;
+  stageOptions.lutSize = options.lutSize;
+  EnvironmentStageTimes times;
+  const EnvironmentStages stages =
+      computeEnvironmentStages(environment, stageOptions, progressBar("environment"), &times);
+  writeEnvironmentStages(folder, stages);
+  timings["sh9_s"] = times.sh9;
+  timings["irradiance_s"] = times.irradiance;
+  timings["specular_s"] = times.specular;
+  timings["brdf_lut_s"] = times.brdfLut;
+  const IrradianceError shError = shIrradianceError(stages.irradiance, stages.sh9);
+  return {{"sh_window_cutoff", stages.shWindowCutoff},
+          {"irradiance_cube_size", stages.irradiance.size},
           {"sh9_irradiance_error",
            {{"mean_relative", shError.meanRelative}, {"max_relative", shError.maxRelative}}},
-          {"specular_face_size", specular.levels.front().size},
-          {"specular_roughness_per_level", specular.roughness},
+          {"specular_face_size", stages.specular.levels.front().size},
+          {"specular_roughness_per_level", stages.specular.roughness},
           {"brdf_lut_size", options.lutSize}};
 }
 
 int bake(const Options& options) {
+  const std::optional<float> windowCutoff = shWindowCutoff(options.shWindow);  // checked before any work
   Stopwatch stopwatch;
   json timings;
   Scene scene = loadScene(options.scene);
@@ -211,49 +171,43 @@ int bake(const Options& options) {
 
   std::size_t triangles = 0;
   for (const Mesh& mesh : scene.meshes) triangles += mesh.triangleCount();
+  const BakeInputs inputs{
+      .scene = fs::absolute(options.scene).lexically_normal(),
+      .environment = environment.empty() ? fs::path() : fs::absolute(environment).lexically_normal(),
+      .environmentFormat = options.envFormat,
+      .environmentRotationDegrees = scene.environment.rotationDegrees,
+      .environmentIntensity = scene.environment.intensity};
   writeDirectoryAtomically(options.output, [&](const fs::path& folder) {
-    writeSceneGlb(scene, folder / "scene.glb");
+    writeSceneGlb(scene, folder / kBakeSceneFile);
     timings["write_scene_s"] = stopwatch.lap();
-    json outputs = {"scene.glb", "bake.json"};
+    json outputs = {kBakeSceneFile, kBakeRecordFile};
     json environmentReport = nullptr;
     if (environmentMap) {
-      environmentReport = bakeEnvironment(*environmentMap, options, folder, stopwatch, timings);
-      for (const char* file : {"env/sh9.json", "env/irradiance.exr", "env/specular.exr", "env/brdf_lut.exr"})
+      environmentReport = bakeEnvironment(*environmentMap, options, windowCutoff, folder, timings);
+      for (const char* file : {kBakeSh9File, kBakeIrradianceFile, kBakeSpecularFile, kBakeBrdfLutFile})
         outputs.push_back(file);
     }
-    const json report = {
-        {"version", kVersion},
-        {"inputs",
-         {{"scene", fs::absolute(options.scene).lexically_normal().string()},
-          // Absolute, so the bake loads from any working directory (the engine draws the sky from it).
-          {"environment",
-           environment.empty() ? json(nullptr) : json(fs::absolute(environment).lexically_normal().string())}}},
-        {"parameters",
-         {{"ao_rays", options.aoRays},
-          {"ao_distance", options.aoDistance},
-          {"ao_falloff", options.aoFalloff},
-          {"ao_area", options.aoArea},
-          {"bounces", options.bounces},
-          {"seed", options.seed},
-          {"env_format", options.envFormat},
-          {"environment_rotation_degrees", scene.environment.rotationDegrees},
-          {"environment_intensity", scene.environment.intensity},
-          {"sh_window", options.shWindow},
-          {"specular_samples", options.specularSamples}}},
-        {"environment", environmentReport},
-        {"outputs", outputs},
-        {"timings", timings},
-        {"counts",
-         {{"meshes", scene.meshes.size()},
-          {"vertices", statistics.vertices},
-          {"triangles", triangles},
-          {"rays", statistics.rays},
-          {"bounce_rays", statistics.bounceRays},
-          {"rejected_directions", statistics.rejected}}},
-        {"rays_per_second", visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0},
-        {"trace_rays_per_second",
-         statistics.raySeconds > 0.0 ? double(statistics.rays) / statistics.raySeconds : 0.0}};
-    writeJson(folder / "bake.json", report);
+    json record = makeBakeRecord(inputs, {{"ao_rays", options.aoRays},
+                                          {"ao_distance", options.aoDistance},
+                                          {"ao_falloff", options.aoFalloff},
+                                          {"ao_area", options.aoArea},
+                                          {"bounces", options.bounces},
+                                          {"seed", options.seed},
+                                          {"sh_window", options.shWindow},
+                                          {"specular_samples", options.specularSamples}});
+    record["environment"] = environmentReport;
+    record["outputs"] = outputs;
+    record["timings"] = timings;
+    record["counts"] = {{"meshes", scene.meshes.size()},
+                        {"vertices", statistics.vertices},
+                        {"triangles", triangles},
+                        {"rays", statistics.rays},
+                        {"bounce_rays", statistics.bounceRays},
+                        {"rejected_directions", statistics.rejected}};
+    record["rays_per_second"] = visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0;
+    record["trace_rays_per_second"] =
+        statistics.raySeconds > 0.0 ? double(statistics.rays) / statistics.raySeconds : 0.0;
+    writeBakeRecord(folder / kBakeRecordFile, record);
   });
   std::cout << kProgram << ": wrote " << options.output.string() << " (" << statistics.vertices
             << " vertices, " << statistics.rays << " rays in " << visibilitySeconds << " s)\n";

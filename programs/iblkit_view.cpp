@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "baker/bake_in_memory.h"
+#include "baker/environment_stages.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "engine/gl/gl_debug.h"
@@ -147,9 +149,7 @@ int runHeadless(const Options& options) {
   settings.drawSky = !options.noSky;
   settings.sampleShading = options.sampleShading;
 
-  LoadBakeOptions loadOptions;
-  loadOptions.aoRays = options.aoRays;
-  const BakedScene bake = loadBake(options.input, loadOptions);
+  const BakedScene bake = loadOrBakeScene(options.input, {.aoRays = options.aoRays});
   const int width = options.width > 0 ? options.width : bake.scene.width;
   const int height = options.height > 0 ? options.height : bake.scene.height;
 
@@ -214,7 +214,12 @@ int runWindow(const Options& options) {
   viewer.envRotation = options.envRotation;
   viewer.samples = options.samples;
   viewer.noSky = options.noSky;
-  viewer.aoRays = options.aoRays;
+  viewer.loadScene = [aoRays = options.aoRays](const fs::path& input) {
+    return loadOrBakeScene(input, {.aoRays = aoRays});
+  };
+  viewer.prepareEnvironment = [](const EnvironmentMap& map) {
+    return computeEnvironmentStages(map, kViewerEnvironmentStages);
+  };
   viewer.envDir = options.envDir.empty() ? defaultEnvironmentFolder() : options.envDir;
   viewer.environment = options.environment;
   viewer.reference = options.reference;

@@ -7,7 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
-#include "baker/environment_sh.h"
+#include "bakefile/bake_layout.h"
+#include "bakefile/sh9_json.h"
 #include "core/environment_map_file.h"
 #include "core/error.h"
 #include "core/image_io.h"
@@ -248,7 +249,7 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
   environment.setRotationDegrees(scene.environment.rotationDegrees);
   environment.setIntensity(scene.environment.intensity);
   const Sh9Truncation truncation =
-      sh9Truncation(environment, readSh9Json(baked.folder / "bake" / "env" / "sh9.json"), normals, mask);
+      sh9Truncation(environment, readSh9Json(baked.folder / "bake" / kBakeSh9File), normals, mask);
   result.sh9Truncation = truncation.meanRelativeError;
   for (std::size_t m = 0; m < result.modes.size(); ++m)
     if (result.modes[m].mode == "sh" && result.modes[m].failure.empty())

@@ -7,7 +7,7 @@
 #include <tuple>
 #include <vector>
 
-#include "baker/environment_sh.h"
+#include "core/environment_sh.h"
 #include "core/error.h"
 #include "core/latlong.h"
 

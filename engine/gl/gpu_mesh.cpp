@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "bakefile/vertex_attributes.h"
 #include "core/error.h"
 
 namespace iblkit {
@@ -31,11 +32,11 @@ GpuMesh::GpuMesh(const Mesh& mesh) : indexCount_(GLsizei(mesh.indices.size())) {
   const std::vector<Stream> streams = {
       {kAttributePosition, 3, {reinterpret_cast<const float*>(mesh.positions.data()), 3 * n}},
       {kAttributeNormal, 3, {reinterpret_cast<const float*>(mesh.normals.data()), 3 * n}},
-      {kAttributeAo, 1, bakedAttribute(mesh, "_AO", 1)},
-      {kAttributeBentNormal, 3, bakedAttribute(mesh, "_BENTNORMAL", 3)},
-      {kAttributeTransfer012, 3, bakedAttribute(mesh, "_SHT0", 3)},
-      {kAttributeTransfer345, 3, bakedAttribute(mesh, "_SHT1", 3)},
-      {kAttributeTransfer678, 3, bakedAttribute(mesh, "_SHT2", 3)},
+      {kAttributeAo, 1, bakedAttribute(mesh, kAmbientOcclusionAttribute, 1)},
+      {kAttributeBentNormal, 3, bakedAttribute(mesh, kBentNormalAttribute, 3)},
+      {kAttributeTransfer012, 3, bakedAttribute(mesh, kTransferAttributes[0], 3)},
+      {kAttributeTransfer345, 3, bakedAttribute(mesh, kTransferAttributes[1], 3)},
+      {kAttributeTransfer678, 3, bakedAttribute(mesh, kTransferAttributes[2], 3)},
   };
   // One buffer: each attribute's array in turn (4-byte aligned), then the indices.
   std::size_t bytes = 0;

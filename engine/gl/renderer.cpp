@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "engine/baked/sh_rotation.h"
+#include "core/sh_rotation.h"
 #include "engine/gl/gpu_mesh.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/shader_program.h"

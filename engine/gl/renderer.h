@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "engine/baked/baked_scene.h"
+#include "bakefile/bake_folder.h"
 #include "core/camera.h"
 #include "core/material.h"
 #include "core/tone_curve.h"

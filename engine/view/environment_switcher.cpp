@@ -23,8 +23,8 @@ bool isEnvironmentFile(const fs::path& file) {
 }  // namespace
 
 EnvironmentSwitcher::EnvironmentSwitcher(const fs::path& folder, float rotationDegrees, float intensity,
-                                         const PrepareEnvironmentOptions& options)
-    : folder_(folder), rotationDegrees_(rotationDegrees), intensity_(intensity), options_(options) {
+                                         EnvironmentPreparer prepare)
+    : folder_(folder), rotationDegrees_(rotationDegrees), intensity_(intensity), prepare_(std::move(prepare)) {
   std::error_code error;
   if (fs::is_directory(folder_, error))
     for (const fs::directory_entry& entry : fs::directory_iterator(folder_, error))
@@ -42,11 +42,11 @@ void EnvironmentSwitcher::start(int index) {
   pending_ = index;
   status_ = "prefiltering " + files_[std::size_t(index)].filename().string() + " ...";
   worker_ = std::async(std::launch::async, [file = files_[std::size_t(index)], rotation = rotationDegrees_,
-                                            intensity = intensity_, options = options_] {
+                                            intensity = intensity_, prepare = prepare_] {
     EnvironmentMap map = loadEnvironmentMap(file);
     map.setRotationDegrees(rotation);
     map.setIntensity(intensity);
-    return prepareEnvironment(map, options);
+    return prepare(map);
   });
 }
 

@@ -1,26 +1,31 @@
 #pragma once
 // Switching the viewer between the environment maps of a folder (--env-dir, default assets/hdri).
-// Prefiltering a map (SH9, the GGX specular chain, the DFG table: prepareEnvironment, the baker
-// library's functions) takes about a second, so it runs on a worker thread while the window keeps
+// Prefiltering a map (SH9, the GGX specular chain, the DFG table: computeEnvironmentStages in the
+// baker library, which the program passes in as an EnvironmentPreparer) takes about a second, so it runs on a worker thread while the window keeps
 // drawing with the current environment; the frame loop polls for the result and uploads it.
 // No OpenGL here.
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "engine/baked/environment_stages.h"
+#include "bakefile/environment_stages.h"
+#include "core/environment_map.h"
 
 namespace iblkit {
+
+// Computes the stages of a map (rotation and intensity applied), on the worker thread.
+using EnvironmentPreparer = std::function<EnvironmentStages(const EnvironmentMap&)>;
 
 class EnvironmentSwitcher {
  public:
   // Lists the .exr and .hdr files of `folder` (case-insensitive, sorted by name); a missing folder
   // gives an empty list and says so in status(). Maps switched to get `rotationDegrees` and
-  // `intensity` (the scene's) before prefiltering.
+  // `intensity` (the scene's) before `prepare` prefilters them.
   EnvironmentSwitcher(const std::filesystem::path& folder, float rotationDegrees, float intensity,
-                      const PrepareEnvironmentOptions& options = {});
+                      EnvironmentPreparer prepare);
   // Waits for a running worker (it cannot be interrupted).
   ~EnvironmentSwitcher();
   EnvironmentSwitcher(const EnvironmentSwitcher&) = delete;
@@ -56,7 +61,7 @@ class EnvironmentSwitcher {
   std::filesystem::path folder_;
   std::vector<std::filesystem::path> files_;
   float rotationDegrees_, intensity_;
-  PrepareEnvironmentOptions options_;
+  EnvironmentPreparer prepare_;
   int current_ = -1, pending_ = -1, queued_ = -1;
   std::future<EnvironmentStages> worker_;
   std::string status_;

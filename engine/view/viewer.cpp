@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/baked/baked_scene.h"
+#include "bakefile/bake_folder.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "engine/gl/gl_debug.h"
@@ -56,7 +56,7 @@ enum class Drag { None, Orbit, Pan, Divider };
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options)
-      : options_(options), bake_(loadBake(options.input, {.aoRays = options.aoRays, .environment = {}})) {
+      : options_(options), bake_(options.loadScene(options.input)) {
     settings_.mode = parseShadingMode(options.mode);
     settings_.exposure = options.exposure;
     settings_.envRotationDegrees = options.envRotation;
@@ -83,7 +83,8 @@ class Viewer {
       comparison_->view = parseComparisonView(options.compare);
     }
     environments_ =
-        std::make_unique<EnvironmentSwitcher>(options.envDir, bake_.env.rotationDegrees, bake_.env.intensity);
+        std::make_unique<EnvironmentSwitcher>(options.envDir, bake_.env.rotationDegrees, bake_.env.intensity,
+                                              options.prepareEnvironment);
     if (!options.environment.empty()) environments_->requestFile(options.environment);
 
     GLFWwindow* window = window_->window();

@@ -3,19 +3,28 @@
 // Renderer in real time, an orbit camera, the control panel, environment switching, screenshots
 // and the comparison with a path-traced reference.
 #include <filesystem>
+#include <functional>
 #include <string>
+
+#include "bakefile/bake_folder.h"
+#include "engine/view/environment_switcher.h"
 
 namespace iblkit {
 
+// Reads a bake folder, or bakes a scene in memory (the program decides how: iblkit-view binds the
+// baker library's loadOrBakeScene; the viewer itself depends on no baker).
+using SceneLoader = std::function<BakedScene(const std::filesystem::path& folderOrScene)>;
+
 struct ViewerOptions {
   std::filesystem::path input;  // bake folder, or a scene baked in memory
+  SceneLoader loadScene;                   // required: reads `input`
+  EnvironmentPreparer prepareEnvironment;  // required: the stages of a map switched to
   int width = 0, height = 0;    // window size; 0: the reference's, else the scene's
   std::string mode = "full";
   float exposure = 0.0f;
   float envRotation = 0.0f;
   int samples = 1;  // MSAA
   bool noSky = false;
-  int aoRays = 64;  // in-memory bakes
   std::filesystem::path envDir = "assets/hdri";
   std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)
   std::filesystem::path reference;    // --reference REF.exr

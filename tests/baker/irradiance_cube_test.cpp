@@ -5,7 +5,7 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include "baker/environment_sh.h"
+#include "core/environment_sh.h"
 #include "core/image_io.h"
 #include "core/latlong.h"
 #include "support/test_paths.h"

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <vector>
 
-#include "baker/environment_sh.h"
+#include "core/environment_sh.h"
 #include "core/environment_map_file.h"
 #include "core/latlong.h"
 #include "support/error_capture.h"

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "baker/baked_scene_gltf.h"
+#include "bakefile/scene_glb.h"
 #include "core/image_io.h"
 #include "support/bake_fixture.h"
 #include "support/test_paths.h"

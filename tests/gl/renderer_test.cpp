@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "engine/baked/sh_rotation.h"
+#include "core/sh_rotation.h"
 #include "core/tone_curve.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/render_target.h"

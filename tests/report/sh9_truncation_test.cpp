@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "baker/environment_sh.h"
+#include "core/environment_sh.h"
 #include "core/error.h"
 #include "core/latlong.h"
 

@@ -1,13 +1,14 @@
 #pragma once
 // Small baked scenes for the engine's tests, made in memory with the baker library (header-only:
-// only test programs that link iblkit_baked include it): a sphere, optionally on a ground plane,
+// only test programs that link iblkit_baker include it): a sphere, optionally on a ground plane,
 // under a smooth analytic environment, with few visibility rays and a small environment chain.
 #include <glm/gtc/constants.hpp>
 #include <string>
 
+#include "baker/environment_stages.h"
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
-#include "engine/baked/baked_scene.h"
+#include "bakefile/bake_folder.h"
 #include "core/latlong.h"
 #include "core/procedural_mesh.h"
 
@@ -56,7 +57,8 @@ inline BakedScene makeTestBake(const TestBakeOptions& options) {
   VisibilitySettings settings;
   settings.rayCount = options.aoRays;
   attachVisibilityAttributes(scene.meshes, bakeVertexVisibility(scene.meshes, settings));
-  bake.env = prepareEnvironment(testSky(), {.specularSamples = 64, .lutSize = 32, .lutSamples = 64});
+  bake.env = computeEnvironmentStages(
+      testSky(), {.specularSamples = 64, .lutSize = 32, .lutSamples = 64, .irradianceCubeSize = 0});
   return bake;
 }
 

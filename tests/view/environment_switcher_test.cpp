@@ -15,7 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const PrepareEnvironmentOptions kSmall{.specularSamples = 16, .lutSize = 8, .lutSamples = 16};
+EnvironmentStages prepareSmall(const EnvironmentMap& map) {
+  return computeEnvironmentStages(map, {.specularSamples = 16, .lutSize = 8, .lutSamples = 16, .irradianceCubeSize = 0});
+}
 
 void writeConstantMap(const fs::path& file, const glm::vec3& radiance) {
   writeExr(file, Image(32, 16, glm::vec4(radiance, 1.0f)), {.pixelType = PixelType::Float});
@@ -33,7 +35,7 @@ fs::path makeFolder() {
 
 TEST(EnvironmentSwitcher, ListsTheMapsOfTheFolderSorted) {
   const fs::path dir = makeFolder();
-  const EnvironmentSwitcher switcher(dir, 0.0f, 1.0f, kSmall);
+  const EnvironmentSwitcher switcher(dir, 0.0f, 1.0f, prepareSmall);
   ASSERT_EQ(switcher.files().size(), 3u);
   EXPECT_EQ(switcher.files()[0].filename(), "a_blue.EXR");
   EXPECT_EQ(switcher.files()[1].filename(), "b_red.exr");
@@ -41,14 +43,14 @@ TEST(EnvironmentSwitcher, ListsTheMapsOfTheFolderSorted) {
   EXPECT_EQ(switcher.current(), -1);
   EXPECT_FALSE(switcher.busy());
 
-  const EnvironmentSwitcher missing(dir / "nowhere", 0.0f, 1.0f, kSmall);
+  const EnvironmentSwitcher missing(dir / "nowhere", 0.0f, 1.0f, prepareSmall);
   EXPECT_TRUE(missing.files().empty());
   EXPECT_NE(missing.status().find("nowhere"), std::string::npos) << missing.status();
 }
 
 TEST(EnvironmentSwitcher, PrefiltersARequestOnTheWorkerWithTheScenesIntensity) {
   const fs::path dir = makeFolder();
-  EnvironmentSwitcher switcher(dir, 30.0f, 2.0f, kSmall);
+  EnvironmentSwitcher switcher(dir, 30.0f, 2.0f, prepareSmall);
   switcher.request(1);  // b_red.exr
   EXPECT_TRUE(switcher.busy());
   EXPECT_EQ(switcher.pending(), 1);
@@ -71,7 +73,7 @@ TEST(EnvironmentSwitcher, PrefiltersARequestOnTheWorkerWithTheScenesIntensity) {
 
 TEST(EnvironmentSwitcher, ABrokenMapKeepsTheCurrentEnvironmentAndSaysWhy) {
   const fs::path dir = makeFolder();
-  EnvironmentSwitcher switcher(dir, 0.0f, 1.0f, kSmall);
+  EnvironmentSwitcher switcher(dir, 0.0f, 1.0f, prepareSmall);
   switcher.request(0);
   ASSERT_TRUE(switcher.waitForResult().has_value());
   switcher.request(2);
@@ -84,7 +86,7 @@ TEST(EnvironmentSwitcher, ABrokenMapKeepsTheCurrentEnvironmentAndSaysWhy) {
 
 TEST(EnvironmentSwitcher, StepsWrapAroundAndTheLatestQueuedRequestWins) {
   const fs::path dir = makeFolder();
-  EnvironmentSwitcher switcher(dir, 0.0f, 1.0f, kSmall);
+  EnvironmentSwitcher switcher(dir, 0.0f, 1.0f, prepareSmall);
   switcher.step(-1);  // from the bake's: the last file (the broken one: nothing changes)
   EXPECT_EQ(switcher.pending(), 2);
   EXPECT_FALSE(switcher.waitForResult().has_value());

@@ -1,4 +1,4 @@
-#include "baker/baked_scene_gltf.h"
+#include "bakefile/scene_glb.h"
 
 #include <gtest/gtest.h>
 

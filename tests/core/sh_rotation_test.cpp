@@ -1,8 +1,8 @@
-#include "engine/baked/sh_rotation.h"
+#include "core/sh_rotation.h"
 
 #include <gtest/gtest.h>
 
-#include "baker/environment_sh.h"
+#include "core/environment_sh.h"
 #include "core/environment_map.h"
 
 namespace iblkit {

@@ -1,9 +1,9 @@
 #pragma once
 // Diffuse lighting of an environment map: its SH9 projection (the irradiance the engine
-// evaluates), the optional ringing window, the env/sh9.json file, and a brute-force irradiance
-// (every texel as a light) to check the SH approximation against. docs/prefilter.md.
+// evaluates), the optional ringing window, and a brute-force irradiance (every texel as a light) to
+// check the SH approximation against. docs/prefilter.md. The env/sh9.json file that stores the
+// projection is bakefile/sh9_json.h.
 
-#include <filesystem>
 #include <glm/glm.hpp>
 #include <span>
 #include <vector>
@@ -35,15 +35,6 @@ std::vector<glm::vec3> fibonacciSphere(int count);
 // minimum rises as the cutoff falls; at cutoff 1 only band 0 is left, so a non-negative
 // environment always has a solution.
 float automaticShWindowCutoff(const SphericalHarmonics9& sh);
-
-// Writes env/sh9.json: the (windowed) coefficients with their basis and normalisation named, the
-// A_l constants of the irradiance formula and the window cutoff (0: none). Temp name, then rename.
-// Throws Error("<path>: cannot open: ...") when the file cannot be written.
-void writeSh9Json(const std::filesystem::path& path, const SphericalHarmonics9& sh, float windowCutoff);
-
-// Reads what writeSh9Json wrote: the coefficients, and the window cutoff into *windowCutoff
-// (optional). Throws Error("<path>: ...") for a missing, unreadable or malformed file.
-SphericalHarmonics9 readSh9Json(const std::filesystem::path& path, float* windowCutoff = nullptr);
 
 // Irradiance E(n) = sum over texels of L * max(0, n.w) * dOmega (every texel of the environment a
 // small light; rotation and intensity applied), at each unit normal. Exact up to the texel

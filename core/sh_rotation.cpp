@@ -1,11 +1,11 @@
-#include "engine/baked/sh_rotation.h"
+#include "core/sh_rotation.h"
 
 #include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
 
-#include "baker/environment_sh.h"
+#include "core/environment_sh.h"
 
 namespace iblkit {
 namespace {

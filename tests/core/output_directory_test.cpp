@@ -1,4 +1,4 @@
-#include "baker/output_directory.h"
+#include "core/output_directory.h"
 
 #include <gtest/gtest.h>
 

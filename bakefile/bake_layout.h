@@ -1,0 +1,28 @@
+#pragma once
+// The bake folder, the file format iblkit-bake writes and the engine, the viewer and the report
+// read (docs/baker.md). Every path below is relative to the folder; this header is the one place
+// that spells them, and the version of the layout they make up.
+//
+//   bake.json           inputs, parameters, timings and counts (bake_record.h)
+//   scene.glb           the flattened scene with the baked vertex attributes (scene_glb.h,
+//                       vertex_attributes.h)
+//   env/sh9.json        SH9 radiance of the environment (sh9_json.h)
+//   env/irradiance.exr  brute-force irradiance cube (irradiance_exr.h)
+//   env/specular.exr    GGX-prefiltered specular cube chain (specular_exr.h)
+//   env/brdf_lut.exr    split-sum DFG table (brdf_lut_exr.h)
+// The env/ files exist only when the bake had an environment map.
+
+namespace iblkit {
+
+// The "version" of bake.json this code writes and reads; a change to the layout or to the meaning
+// of a file bumps it.
+inline constexpr const char* kBakeVersion = "iblkit-bake 1";
+
+inline constexpr const char* kBakeRecordFile = "bake.json";
+inline constexpr const char* kBakeSceneFile = "scene.glb";
+inline constexpr const char* kBakeSh9File = "env/sh9.json";
+inline constexpr const char* kBakeIrradianceFile = "env/irradiance.exr";
+inline constexpr const char* kBakeSpecularFile = "env/specular.exr";
+inline constexpr const char* kBakeBrdfLutFile = "env/brdf_lut.exr";
+
+}  // namespace iblkit

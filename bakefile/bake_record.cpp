@@ -1,0 +1,63 @@
+#include "bakefile/bake_record.h"
+
+#include <fstream>
+
+#include "bakefile/bake_layout.h"
+#include "core/error.h"
+#include "core/file_io.h"
+
+namespace iblkit {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+json makeBakeRecord(const BakeInputs& inputs, json parameters) {
+  parameters["env_format"] = inputs.environmentFormat;
+  parameters["environment_rotation_degrees"] = inputs.environmentRotationDegrees;
+  parameters["environment_intensity"] = inputs.environmentIntensity;
+  return {{"version", kBakeVersion},
+          {"inputs",
+           {{"scene", inputs.scene.string()},
+            {"environment", inputs.environment.empty() ? json(nullptr) : json(inputs.environment.string())}}},
+          {"parameters", std::move(parameters)}};
+}
+
+void writeBakeRecord(const fs::path& file, const json& record) {
+  writeAtomically(file, [&](const fs::path& temporary) {
+    std::ofstream stream(temporary);
+    stream << record.dump(2) << '\n';
+    if (!stream.flush()) fail(file, "cannot write file");
+  });
+}
+
+BakeInputs readBakeRecord(const fs::path& file) {
+  std::ifstream stream(file);
+  if (!stream) fail(file, "missing (incomplete bake folder?)");
+  json record;
+  try {
+    record = json::parse(stream);
+  } catch (const json::exception& e) {
+    fail(file, std::string("not valid JSON: ") + e.what());
+  }
+  const std::string version = record.is_object() ? record.value("version", std::string()) : std::string();
+  if (version != kBakeVersion)
+    fail(file, "version '" + version + "' is not supported (expected '" + kBakeVersion + "')");
+  BakeInputs inputs;
+  try {
+    const json& recorded = record.at("inputs");
+    inputs.scene = recorded.at("scene").get<std::string>();
+    const json& environment = recorded.at("environment");
+    if (environment.is_null()) return inputs;
+    inputs.environment = environment.get<std::string>();
+    if (inputs.environment.is_relative()) inputs.environment = file.parent_path() / inputs.environment;
+    const json& parameters = record.at("parameters");
+    inputs.environmentRotationDegrees = parameters.at("environment_rotation_degrees").get<float>();
+    inputs.environmentIntensity = parameters.at("environment_intensity").get<float>();
+    inputs.environmentFormat = parameters.value("env_format", std::string("latlong"));
+  } catch (const json::exception& e) {
+    fail(file, std::string("missing environment record: ") + e.what());
+  }
+  return inputs;
+}
+
+}  // namespace iblkit

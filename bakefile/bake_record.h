@@ -1,0 +1,35 @@
+#pragma once
+// bake.json of a bake folder (bake_layout.h): what was baked (the scene and the environment map
+// with its layout, rotation and intensity) and how (the baker's parameters, timings and counts).
+// Readers need only the inputs; the rest is for people and the report.
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace iblkit {
+
+// What a bake was made from.
+struct BakeInputs {
+  std::filesystem::path scene;
+  // Empty: the bake has no environment stages. Written absolute, so the bake loads from any
+  // working directory; a relative one (a hand-written bake.json) is relative to the bake folder.
+  std::filesystem::path environment;
+  std::string environmentFormat = "latlong";  // core/environment_map_file.h: parseProbeFormat
+  float environmentRotationDegrees = 0.0f;    // about +Y, core/environment_map.h
+  float environmentIntensity = 1.0f;
+};
+
+// The bake.json document for `inputs`: "version" (kBakeVersion), "inputs" {scene, environment}
+// and "parameters" holding `parameters` plus environment_rotation_degrees, environment_intensity
+// and env_format. The baker adds its own sections ("timings", "counts", ...) before writing it.
+nlohmann::json makeBakeRecord(const BakeInputs& inputs, nlohmann::json parameters);
+
+// Writes `record` to `file` (temporary name, then rename). Throws Error("<file>: ...").
+void writeBakeRecord(const std::filesystem::path& file, const nlohmann::json& record);
+
+// Reads the inputs back from `file` (a bake folder's bake.json). Throws Error("<file>: ...") for a
+// missing or invalid file, a "version" other than kBakeVersion, or missing input records.
+BakeInputs readBakeRecord(const std::filesystem::path& file);
+
+}  // namespace iblkit

@@ -1,0 +1,48 @@
+#include "bakefile/environment_stages.h"
+
+#include "bakefile/bake_layout.h"
+#include "bakefile/brdf_lut_exr.h"
+#include "bakefile/irradiance_exr.h"
+#include "bakefile/sh9_json.h"
+#include "core/environment_map_file.h"
+#include "core/error.h"
+
+namespace iblkit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A bake folder's file, which must exist.
+fs::path requireFile(const fs::path& file) {
+  std::error_code error;
+  if (!fs::is_regular_file(file, error)) fail(file, "missing (incomplete bake folder?)");
+  return file;
+}
+
+}  // namespace
+
+void writeEnvironmentStages(const fs::path& folder, const EnvironmentStages& stages) {
+  fs::create_directories((folder / kBakeSh9File).parent_path());
+  writeSh9Json(folder / kBakeSh9File, stages.sh9Projection, stages.shWindowCutoff);
+  if (stages.irradiance.size > 0) writeIrradianceCubeExr(folder / kBakeIrradianceFile, stages.irradiance);
+  writeSpecularCubeExr(folder / kBakeSpecularFile, stages.specular);
+  writeBrdfLutExr(folder / kBakeBrdfLutFile, stages.brdfLut);
+}
+
+EnvironmentStages readEnvironmentStages(const fs::path& folder, const BakeInputs& inputs) {
+  if (inputs.environment.empty())
+    fail(folder / kBakeRecordFile, "the bake has no environment stages (bake with --env)");
+  EnvironmentStages env;
+  env.rotationDegrees = inputs.environmentRotationDegrees;
+  env.intensity = inputs.environmentIntensity;
+  env.latLong =
+      loadEnvironmentMap(requireFile(inputs.environment), parseProbeFormat(inputs.environmentFormat)).image();
+  env.sh9Projection = readSh9Json(requireFile(folder / kBakeSh9File), &env.shWindowCutoff);
+  env.sh9 = env.sh9Projection;
+  env.specular = readSpecularCubeExr(requireFile(folder / kBakeSpecularFile));
+  env.brdfLut = readBrdfLutExr(requireFile(folder / kBakeBrdfLutFile));
+  return env;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,48 @@
+#pragma once
+// Everything the engine needs from an environment map, in one place: the lat-long radiance (the
+// sky and the `mirror` mode), its SH9 radiance coefficients (diffuse), the GGX-prefiltered
+// specular cube chain and the split-sum DFG table (docs/prefilter.md), and the brute-force
+// irradiance cube the SH9 irradiance is checked against. baker/environment_stages.h computes
+// them; this file writes them into a bake folder's env/ (bake_layout.h) and reads them back.
+#include <filesystem>
+
+#include "bakefile/bake_record.h"
+#include "bakefile/specular_exr.h"
+#include "core/cube_map.h"
+#include "core/image.h"
+#include "core/spherical_harmonics.h"
+
+namespace iblkit {
+
+struct EnvironmentStages {
+  // The lat-long map as stored (rotation and intensity not applied), with the scene's rotation
+  // (degrees about +Y, environment_map.h) and radiance multiplier. The shaders apply both to every
+  // lookup of the map.
+  Image latLong;
+  float rotationDegrees = 0.0f;
+  float intensity = 1.0f;
+  // The SH9 projection of the radiance (spherical_harmonics.h), in world space: rotationDegrees
+  // and intensity are already in it. env/sh9.json stores it unwindowed, with the cutoff.
+  SphericalHarmonics9 sh9Projection;
+  float shWindowCutoff = 0.0f;  // the sinc^4 ringing window's cutoff (0: none)
+  // The coefficients the engine evaluates.
+  SphericalHarmonics9 sh9;
+  // The prefiltered chain (level i has perceptual roughness specular.roughness[i]), world space
+  // like sh9.
+  SpecularCube specular;
+  // The DFG table (brdf_lut.h): R = A, G = B, B = E; NoV along x, roughness along y.
+  Image brdfLut;
+  // Brute-force irradiance per texel (size 0: not computed; the viewer's in-memory stages skip it).
+  CubeMap irradiance;
+};
+
+// Writes env/sh9.json (sh9Projection and shWindowCutoff), env/irradiance.exr (when computed),
+// env/specular.exr and env/brdf_lut.exr into `folder`, creating env/. Throws Error naming the file.
+void writeEnvironmentStages(const std::filesystem::path& folder, const EnvironmentStages& stages);
+
+// Reads them back from `folder`, with the lat-long map, its rotation and intensity from the bake's
+// `inputs`. Throws Error("<file>: ...") naming the file that is missing or invalid, and
+// Error("<folder>/bake.json: the bake has no environment stages ...") when `inputs` has none.
+EnvironmentStages readEnvironmentStages(const std::filesystem::path& folder, const BakeInputs& inputs);
+
+}  // namespace iblkit

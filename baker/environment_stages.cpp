@@ -1,0 +1,46 @@
+#include "baker/environment_stages.h"
+
+#include "baker/brdf_lut.h"
+#include "baker/irradiance_cube.h"
+#include "baker/specular_prefilter.h"
+#include "core/environment_sh.h"
+#include "core/stopwatch.h"
+
+namespace iblkit {
+
+EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, const EnvironmentStageOptions& options,
+                                           const std::function<void(std::size_t, std::size_t)>& progress,
+                                           EnvironmentStageTimes* times) {
+  constexpr std::size_t kStages = 4;
+  auto step = [&](std::size_t done) {
+    if (progress) progress(done, kStages);
+  };
+  EnvironmentStageTimes measured;
+  Stopwatch stopwatch;
+  EnvironmentStages stages;
+  stages.latLong = environment.image();
+  stages.rotationDegrees = environment.rotationDegrees();
+  stages.intensity = environment.intensity();
+  step(0);
+  stages.sh9Projection = projectEnvironmentSh9(environment);
+  stages.shWindowCutoff = options.shWindowCutoff ? *options.shWindowCutoff
+                                                 : automaticShWindowCutoff(stages.sh9Projection);
+  stages.sh9 = windowSh9(stages.sh9Projection, stages.shWindowCutoff);
+  measured.sh9 = stopwatch.lap();
+  step(1);
+  if (options.irradianceCubeSize > 0) stages.irradiance = irradianceCube(environment, options.irradianceCubeSize);
+  measured.irradiance = stopwatch.lap();
+  step(2);
+  SpecularPrefilterOptions specular;
+  specular.sampleCount = options.specularSamples;
+  stages.specular = prefilterSpecular(environment, specular);
+  measured.specular = stopwatch.lap();
+  step(3);
+  stages.brdfLut = computeBrdfLut(options.lutSize, options.lutSamples);
+  measured.brdfLut = stopwatch.lap();
+  step(4);
+  if (times) *times = measured;
+  return stages;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,45 @@
+#pragma once
+// The environment stages of a bake, computed from the map (bakefile/environment_stages.h holds
+// and stores them): SH9 projection and its automatic or chosen ringing window, the brute-force
+// irradiance cube, the GGX-prefiltered specular chain and the DFG table (docs/prefilter.md). One
+// function for iblkit-bake and for the viewer, which switches maps at run time with lighter
+// settings.
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "bakefile/environment_stages.h"
+#include "core/environment_map.h"
+
+namespace iblkit {
+
+struct EnvironmentStageOptions {
+  // The sinc^4 window's cutoff in bands (0: none); unset: automaticShWindowCutoff.
+  std::optional<float> shWindowCutoff;
+  std::uint32_t specularSamples = 1024;  // GGX samples per texel of the roughest level
+  int lutSize = 128;
+  std::uint32_t lutSamples = 512;
+  int irradianceCubeSize = 16;  // face size of the brute-force irradiance cube; 0: not computed
+};
+
+// iblkit-view's stages of a map switched to at run time or baked in memory: about 1 s of CPU for
+// a 512 x 256 map (the specular chain's samples and the table are a quarter of the baker's).
+inline constexpr EnvironmentStageOptions kViewerEnvironmentStages{
+    .specularSamples = 256, .lutSize = 64, .lutSamples = 256, .irradianceCubeSize = 0};
+
+// Seconds each stage took.
+struct EnvironmentStageTimes {
+  double sh9 = 0.0, irradiance = 0.0, specular = 0.0, brdfLut = 0.0;
+};
+
+// Computes the stages of `environment` (its rotation and intensity applied): the SH9 projection,
+// its window (sh9 = the windowed projection), the irradiance cube, the full specular chain with a
+// face size of environment.width() / 4, and the DFG table. Parallel (TBB). `progress` (optional)
+// is called with (stages done, 4) before and after each stage; `times` (optional) receives the
+// seconds of each.
+EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment,
+                                           const EnvironmentStageOptions& options,
+                                           const std::function<void(std::size_t, std::size_t)>& progress = {},
+                                           EnvironmentStageTimes* times = nullptr);
+
+}  // namespace iblkit

@@ -1,0 +1,122 @@
+#include "bakefile/bake_folder.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "bakefile/bake_layout.h"
+#include "bakefile/bake_record.h"
+#include "bakefile/scene_glb.h"
+#include "core/image_io.h"
+#include "support/bake_fixture.h"
+#include "support/error_capture.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A bake folder written through the bakefile writers, as iblkit-bake writes it (docs/baker.md),
+// from the in-memory test bake, with the environment saved as an OpenEXR file that bake.json names.
+fs::path writeBakeFolder(const std::string& name, const BakedScene& bake,
+                         const std::string& version = kBakeVersion) {
+  const fs::path folder = test::scratchDir() / name;
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  writeSceneGlb(bake.scene, folder / kBakeSceneFile);
+  writeEnvironmentStages(folder, bake.env);
+  const fs::path environment = folder / "sky.exr";
+  writeExr(environment, bake.env.latLong, {.pixelType = PixelType::Float});
+  nlohmann::json record = makeBakeRecord(
+      {.scene = "test", .environment = environment, .environmentRotationDegrees = 30.0f, .environmentIntensity = 2.0f},
+      nlohmann::json::object());
+  record["version"] = version;
+  writeBakeRecord(folder / kBakeRecordFile, record);
+  return folder;
+}
+
+TEST(BakedScene, ReadsBackWhatTheBakerWrote) {
+  const BakedScene original = test::makeTestBake({.ground = true, .rings = 8, .segments = 16});
+  const BakedScene bake = readBakeFolder(writeBakeFolder("bake_ok", original));
+  EXPECT_FALSE(bake.bakedInMemory);
+  ASSERT_EQ(bake.scene.meshes.size(), 2u);
+  EXPECT_FALSE(bake.scene.meshes[0].isGround);
+  EXPECT_TRUE(bake.scene.meshes[1].isGround);
+  EXPECT_EQ(bake.scene.meshes[0].attributes.at("_AO").data,
+            original.scene.meshes[0].attributes.at("_AO").data);
+  EXPECT_EQ(bake.scene.meshes[1].attributes.at("_SHT2").data,
+            original.scene.meshes[1].attributes.at("_SHT2").data);
+  for (int k = 0; k < kShCoefficients; ++k)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(bake.env.sh9Projection.coefficients[std::size_t(k)][c],
+                  original.env.sh9Projection.coefficients[std::size_t(k)][c], 1e-6f);
+  EXPECT_EQ(bake.env.shWindowCutoff, original.env.shWindowCutoff);
+  ASSERT_EQ(bake.env.specular.levels.size(), original.env.specular.levels.size());
+  EXPECT_EQ(bake.env.specular.roughness.size(), original.env.specular.roughness.size());
+  EXPECT_EQ(bake.env.specular.levels[2].faces[3].at(1, 2), original.env.specular.levels[2].faces[3].at(1, 2));
+  EXPECT_EQ(bake.env.brdfLut.width(), original.env.brdfLut.width());
+  EXPECT_EQ(bake.env.latLong.at(5, 7), original.env.latLong.at(5, 7));
+  EXPECT_EQ(bake.env.rotationDegrees, 30.0f);
+  EXPECT_EQ(bake.env.intensity, 2.0f);
+}
+
+TEST(BakedScene, MissingOrIncompleteOrWrongVersionIsAnErrorNamingTheFile) {
+  const BakedScene original = test::makeTestBake({.rings = 4, .segments = 8});
+  const fs::path missing = test::scratchDir() / "no_such_bake";
+  EXPECT_EQ(test::errorMessage([&] { readBakeFolder(missing); }), missing.string() + ": no such bake folder");
+
+  const fs::path incomplete = writeBakeFolder("bake_incomplete", original);
+  fs::remove(incomplete / "env" / "specular.exr");
+  EXPECT_EQ(test::errorMessage([&] { readBakeFolder(incomplete); }),
+            (incomplete / "env" / "specular.exr").string() + ": missing (incomplete bake folder?)");
+
+  const fs::path old = writeBakeFolder("bake_old", original, "iblkit-bake 0");
+  EXPECT_EQ(
+      test::errorMessage([&] { readBakeFolder(old); }),
+      (old / "bake.json").string() + ": version 'iblkit-bake 0' is not supported (expected 'iblkit-bake 1')");
+}
+
+TEST(BakedScene, IsBakeFolderOnlyForThisLayoutsVersion) {
+  const BakedScene original = test::makeTestBake({.rings = 4, .segments = 8});
+  EXPECT_TRUE(isBakeFolder(writeBakeFolder("bake_is", original)));
+  EXPECT_FALSE(isBakeFolder(writeBakeFolder("bake_is_old", original, "iblkit-bake 0")));
+  const fs::path plain = test::scratchDir() / "not_a_bake";
+  fs::create_directories(plain);
+  std::ofstream(plain / kBakeRecordFile) << "not json";
+  EXPECT_FALSE(isBakeFolder(plain));
+  EXPECT_FALSE(isBakeFolder(test::scratchDir() / "no_such_folder"));
+}
+
+TEST(BakeRecord, WritesTheInputsItReadsBack) {
+  const fs::path file = test::scratchDir() / "bake_record.json";
+  writeBakeRecord(file, makeBakeRecord({.scene = "/a/scene.json",
+                                        .environment = "/b/map.exr",
+                                        .environmentFormat = "mirrorball",
+                                        .environmentRotationDegrees = -45.0f,
+                                        .environmentIntensity = 0.5f},
+                                       {{"ao_rays", 7}}));
+  const BakeInputs inputs = readBakeRecord(file);
+  EXPECT_EQ(inputs.scene, fs::path("/a/scene.json"));
+  EXPECT_EQ(inputs.environment, fs::path("/b/map.exr"));
+  EXPECT_EQ(inputs.environmentFormat, "mirrorball");
+  EXPECT_EQ(inputs.environmentRotationDegrees, -45.0f);
+  EXPECT_EQ(inputs.environmentIntensity, 0.5f);
+  std::ifstream stream(file);
+  EXPECT_EQ(nlohmann::json::parse(stream).at("parameters").at("ao_rays"), 7);
+}
+
+TEST(BakeRecord, ARelativeEnvironmentIsRelativeToTheBakeAndNoneMeansNoStages) {
+  const fs::path folder = test::scratchDir() / "bake_relative";
+  fs::create_directories(folder);
+  writeBakeRecord(folder / kBakeRecordFile, makeBakeRecord({.scene = "s", .environment = "map.exr"}, {}));
+  EXPECT_EQ(readBakeRecord(folder / kBakeRecordFile).environment, folder / "map.exr");
+  writeBakeRecord(folder / kBakeRecordFile, makeBakeRecord({.scene = "s"}, {}));
+  EXPECT_TRUE(readBakeRecord(folder / kBakeRecordFile).environment.empty());
+  EXPECT_EQ(test::errorMessage([&] { readEnvironmentStages(folder, readBakeRecord(folder / kBakeRecordFile)); }),
+            (folder / kBakeRecordFile).string() + ": the bake has no environment stages (bake with --env)");
+}
+
+}  // namespace
+}  // namespace iblkit
