@@ -230,7 +230,7 @@ class Loader {
   }
 
   // The baker marks the ground of a .json scene with node extras {"isGround": true}
-  // (baked_scene_gltf.h), so a baked scene is framed without it, as the original scene was.
+  // (bakefile/scene_glb.h), so a baked scene is framed without it, as the original scene was.
   static bool isGroundNode(const tinygltf::Node& node) {
     const tinygltf::Value& flag = node.extras.Get("isGround");
     return flag.IsBool() && flag.Get<bool>();

@@ -16,7 +16,7 @@
 //   KHR_materials_emissive_strength), KHR_materials_specular's specularFactor and
 //   specularColorFactor. Textures are ignored (one warning per file). Primitives without a
 //   material use a default glTF material appended after the file's materials.
-// - Ground: a node with extras {"isGround": true} (written by the baker, baked_scene_gltf.h) gives
+// - Ground: a node with extras {"isGround": true} (written by the baker, bakefile/scene_glb.h) gives
 //   meshes with Mesh::isGround set, so objectBounds leaves them out as for a .json scene's ground.
 // - Camera: the first perspective camera met in depth-first scene-graph order, placed by its
 //   node's world transform (looking down its local -Z, +Y up). Its aspectRatio is ignored (the

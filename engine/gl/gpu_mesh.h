@@ -20,7 +20,7 @@ enum GpuMeshAttribute : GLuint {
 
 class GpuMesh {
  public:
-  // Uploads `mesh`; every baked attribute must be present (loadBake checks), else
+  // Uploads `mesh`; every baked attribute must be present (readBakeFolder checks), else
   // Error("<mesh name>: missing baked attribute <name>").
   explicit GpuMesh(const Mesh& mesh);
   GpuMesh(GpuMesh&& other) noexcept;

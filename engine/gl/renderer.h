@@ -46,7 +46,7 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Replaces the environment (sky, SH9, specular chain, DFG table); e.g. from prepareEnvironment.
+  // Replaces the environment (sky, SH9, specular chain, DFG table); e.g. from computeEnvironmentStages.
   // PRT keeps working: the transfer vectors do not depend on the lighting.
   void setEnvironment(const EnvironmentStages& env);
   // Overrides material `materialIndex` (an index into materials()). Throws std::out_of_range.

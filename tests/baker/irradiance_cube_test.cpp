@@ -1,6 +1,8 @@
 // env/irradiance.exr: the brute-force irradiance cube and the SH9 irradiance's error against it.
 #include "baker/irradiance_cube.h"
 
+#include "bakefile/irradiance_exr.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/constants.hpp>

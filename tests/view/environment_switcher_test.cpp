@@ -7,6 +7,7 @@
 
 #include <fstream>
 
+#include "baker/environment_stages.h"
 #include "core/image_io.h"
 #include "support/test_paths.h"
 
@@ -16,7 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 EnvironmentStages prepareSmall(const EnvironmentMap& map) {
-  return computeEnvironmentStages(map, {.specularSamples = 16, .lutSize = 8, .lutSamples = 16, .irradianceCubeSize = 0});
+  return computeEnvironmentStages(map,
+                                  {.specularSamples = 16, .lutSize = 8, .lutSamples = 16, .irradianceCubeSize = 0});
 }
 
 void writeConstantMap(const fs::path& file, const glm::vec3& radiance) {

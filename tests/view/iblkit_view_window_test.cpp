@@ -211,7 +211,7 @@ TEST_F(IblkitViewWindow, NoDisplayIsOneLineAndExitStatus1) {
 }
 
 TEST_F(IblkitViewWindow, BadInputFailsBeforeAWindowOpens) {
-  // A missing bake: loadBake's error, as --headless prints it.
+  // A missing bake: readBakeFolder's error, as --headless prints it.
   const fs::path missing = dir_ / "missing";
   const ProgramRun window = run(program("iblkit-view") + " " + shellQuoted(missing));
   const ProgramRun headless = run(program("iblkit-view") + " " + shellQuoted(missing) + " --headless -o " +
