@@ -32,7 +32,7 @@ const int mode = SHADING_MODE;
 const int layer = FRAME_LAYER;
 uniform vec3 cameraPosition;
 uniform bool isGround;
-// Material (core/material.h), clamped to the glTF ranges on the CPU.
+// Material (core/material.h), clamped to the glTF ranges on the CPU (clampedToGltfRanges).
 uniform vec3 baseColor;
 uniform float metallic;
 uniform float roughness;
