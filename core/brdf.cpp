@@ -29,17 +29,17 @@ using Lobes = BrdfLobes;
 }  // namespace
 
 BrdfLobes brdfLobes(const Material& material) {
+  const Material m = clampedToGltfRanges(material);
   BrdfLobes l;
-  l.baseColor = glm::clamp(material.baseColor, 0.0f, 1.0f);
-  l.metallic = std::clamp(material.metallic, 0.0f, 1.0f);
-  l.specular = std::clamp(material.specular, 0.0f, 1.0f);
-  const float roughness = std::clamp(material.roughness, 0.0f, 1.0f);
+  l.baseColor = m.baseColor;
+  l.metallic = m.metallic;
+  l.specular = m.specular;
   // KHR_materials_specular, "Implementation": the product of specular color and the f0 of
   // ior 1.5 is clamped to 1 before the specular factor scales it.
-  l.dielectricF0 = glm::min(0.04f * glm::max(material.specularColor, 0.0f), glm::vec3(1.0f));
+  l.dielectricF0 = glm::min(0.04f * m.specularColor, glm::vec3(1.0f));
   l.f0 = glm::mix(l.specular * l.dielectricF0, l.baseColor, l.metallic);
   l.f90 = glm::vec3(glm::mix(l.specular, 1.0f, l.metallic));
-  l.alpha = roughness * roughness;
+  l.alpha = m.roughness * m.roughness;
   l.delta = l.alpha < kDeltaAlpha;
   // The diffuse weight (1 - specular max(Fd)) vanishes everywhere only when specular = 1 and
   // max(dielectricF0) = 1, because max(Fd) ranges over [max(dielectricF0), 1].
@@ -49,17 +49,16 @@ BrdfLobes brdfLobes(const Material& material) {
   return l;
 }
 
-namespace {
+glm::vec3 specularFresnel(const BrdfLobes& l, float cosThetaD) {
+  return schlickFresnel(l.f0, l.f90, cosThetaD);
+}
 
-// The Fresnel-weighted specular layer's tint, F(v.h).
-glm::vec3 specularFresnel(const Lobes& l, float cosThetaD) { return schlickFresnel(l.f0, l.f90, cosThetaD); }
-
-// The diffuse base's weight, (1 - metallic)(1 - specular max_rgb(Fd(v.h))) (KHR_materials_specular
-// fresnel_mix, then glTF's mix(dielectric, metal, metallic)).
-float diffuseWeight(const Lobes& l, float cosThetaD) {
+float diffuseWeight(const BrdfLobes& l, float cosThetaD) {
   const float fresnelMax = maxComponent(schlickFresnel(l.dielectricF0, glm::vec3(1.0f), cosThetaD));
   return (1.0f - l.metallic) * (1.0f - l.specular * fresnelMax);
 }
+
+namespace {
 
 float specularProbability(const Lobes& l, float cosThetaO) {
   if (!l.hasSpecular) return 0.0f;

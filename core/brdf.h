@@ -69,8 +69,14 @@ struct BrdfLobes {
   bool hasDiffuse = false;   // the diffuse term is non-zero somewhere
   bool hasSpecular = false;  // the specular term is non-zero somewhere
 };
-// The lobes of `material` (its factors clamped to their ranges).
+// The lobes of `material` (its factors clamped by clampedToGltfRanges).
 BrdfLobes brdfLobes(const Material& material);
+// The specular layer's Fresnel tint F(v.h) = Schlick(f0, f90) at cosThetaD = v.h.
+glm::vec3 specularFresnel(const BrdfLobes& lobes, float cosThetaD);
+// The diffuse base's weight, (1 - metallic)(1 - specular max_rgb(Fd(v.h))) with
+// Fd = Schlick(dielectricF0, 1) (KHR_materials_specular fresnel_mix, then glTF's
+// mix(dielectric, metal, metallic)).
+float diffuseWeight(const BrdfLobes& lobes, float cosThetaD);
 
 // The BRDF of one material at one shading point seen from one direction wo, with what the three
 // functions above would each derive again (the lobes, the shading frame, wo in it, the lobe

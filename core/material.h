@@ -19,4 +19,10 @@ struct Material {
   glm::vec3 emissive{0.0f};       // glTF emissiveFactor (linear)
 };
 
+// `material` with its factors clamped to their glTF ranges (docs/material-model.md, "Parameters"):
+// baseColor, metallic, roughness and specular to [0, 1], specularColor to >= 0 (glTF 2.0 and
+// KHR_materials_specular allow it above 1); name and emissive unchanged. The one clamp that the
+// CPU BRDF (brdfLobes) and the engine's material uniforms both apply.
+Material clampedToGltfRanges(const Material& material);
+
 }  // namespace iblkit

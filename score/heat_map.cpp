@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "core/color_map.h"
 #include "core/error.h"
 #include "core/image_io.h"
-#include "score/color_map.h"
 
 namespace iblkit {
 

@@ -8,19 +8,15 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/relative_squared_error.h"
 
 namespace iblkit {
 
 // Mean over scored pixels and RGB channels of (test - reference)^2, on linear values.
 double meanSquaredError(const Image& reference, const Image& test, std::span<const std::uint8_t> mask = {});
 
-// Relative MSE: mean over scored pixels and RGB channels of (test - ref)^2 / (ref^2 + epsilon).
-// epsilon = 0.01 keeps near-black reference pixels from dominating (as in the denoising
-// literature, e.g. Rousselle et al. 2011); it is documented in docs/scoring.md.
-inline constexpr double kRelMseEpsilon = 0.01;
-inline double relativeSquaredError(double reference, double test) {
-  return (test - reference) * (test - reference) / (reference * reference + kRelMseEpsilon);
-}
+// Relative MSE: mean over scored pixels and RGB channels of relativeSquaredError
+// (core/relative_squared_error.h), (test - ref)^2 / (ref^2 + epsilon).
 double relativeMeanSquaredError(const Image& reference, const Image& test,
                                 std::span<const std::uint8_t> mask = {});
 // Per pixel, the mean over RGB of relativeSquaredError (for heat maps).

@@ -1,10 +1,44 @@
 // The image-based-lighting terms of the material model (docs/material-model.md, glTF 2.0
 // Appendix B with KHR_materials_specular, as core/brdf.cpp).
 
+float maxComponent(vec3 v) { return max(v.r, max(v.g, v.b)); }
+
+// BrdfLobes of core/brdf.h: the material's lobes in the form the formulas use, its factors already
+// clamped to their glTF ranges (clampedToGltfRanges, on the CPU).
+struct BrdfLobes {
+  vec3 baseColor;
+  float metallic;
+  float specular;
+  vec3 dielectricF0;  // min(0.04 specularColor, 1), before the specular factor
+  vec3 f0, f90;       // the specular layer's Fresnel endpoints, metal and dielectric mixed
+  float alpha;
+};
+
+// brdfLobes of core/brdf.cpp (glTF 2.0 Appendix B with KHR_materials_specular, "Implementation").
+BrdfLobes brdfLobes(vec3 baseColor, float metallic, float roughness, float specular, vec3 specularColor) {
+  BrdfLobes l;
+  l.baseColor = baseColor;
+  l.metallic = metallic;
+  l.specular = specular;
+  l.dielectricF0 = min(0.04 * specularColor, vec3(1.0));
+  l.f0 = mix(specular * l.dielectricF0, baseColor, metallic);
+  l.f90 = vec3(mix(specular, 1.0, metallic));
+  l.alpha = roughness * roughness;
+  return l;
+}
+
 // Split-sum specular (Karis 2013, "Real Shading in Unreal Engine 4", "Image Based Lighting"):
 // the directional albedo of the lobe with Schlick's Fresnel F0 + (F90 - F0)(1 - v.h)^5 is
 // F0 A + F90 B, with (A, B) read from the DFG table at (NoV, roughness) (baker/brdf_lut.h).
 vec3 splitSumKaris(vec3 f0, vec3 f90, vec2 dfg) { return f0 * dfg.x + f90 * dfg.y; }
+
+// diffuseWeight of core/brdf.cpp, (1 - metallic)(1 - specular max_rgb(Fd)) with the dielectric
+// Fresnel Fd = Schlick(dielectricF0, 1) in split-sum form (splitSumKaris): `fresnel` = (A, B)
+// weights Fd = dielectricF0 A + B. The DFG table's (A, B) give Fd's directional average, as
+// fullMaterialModel uses it; (1 - (1 - cos)^5, (1 - cos)^5) give Schlick's Fd at cos, the C++ term.
+float diffuseWeight(BrdfLobes l, vec2 fresnel) {
+  return (1.0 - l.metallic) * (1.0 - l.specular * maxComponent(splitSumKaris(l.dielectricF0, vec3(1.0), fresnel)));
+}
 
 // Multiple-scattering energy compensation (Fdez-Aguera 2019, JCGT 8(1); Filament section 4.7.2):
 // the single-scattering lobe of albedo E (f0 = 1) is scaled by 1 + f0 (1 / E - 1).
@@ -45,5 +79,3 @@ vec3 multiBounceAoJimenez(float ao, vec3 albedo) {
   vec3 c = 2.7552 * albedo + 0.6903;
   return max(vec3(ao), ((ao * a + b) * ao + c) * ao);
 }
-
-float maxComponent(vec3 v) { return max(v.r, max(v.g, v.b)); }

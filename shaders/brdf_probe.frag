@@ -1,5 +1,5 @@
 #version 450 core
-// Evaluates functions of brdf.glsl over a table, for tests (tests/gl/renderer_test.cpp): texel x
+// Evaluates functions of brdf.glsl over a table, for tests (tests/gl/specular_occlusion_test.cpp): texel x
 // of `inputA` holds (bent normal, ao), of `inputB` (reflection direction, alpha); the output's
 // red channel is specularOcclusionCone of them.
 

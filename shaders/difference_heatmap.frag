@@ -1,30 +1,39 @@
 #version 450 core
-// The viewer's difference view (engine/view/reference_comparison.h): per pixel, the relative
-// difference of the live frame from the path-traced reference, |live - ref| / (ref + 0.01) averaged
-// over R, G and B (the relMSE's per-pixel term, unsquared), shown on a black-blue-green-yellow-red
-// ramp where `scale` is red.
+// The viewer's difference view (engine/view/difference_heat_map.h): per pixel, the scorer's relMSE
+// term of the live frame against the path-traced reference, the mean over R, G and B of
+// relativeSquaredError (relativeSquaredErrorMap, score/image_metrics.h), through the scorer's magma
+// colour map from 0 to `maxValue` (heatMapImage, score/heat_map.h); display-referred sRGB written.
+
+#include "shared_constants.glsl"
+#include "tone_curve.glsl"
 
 in vec2 ndc;
 
-uniform sampler2D liveTexture;
-uniform sampler2D referenceTexture;
-uniform float scale;
+layout(binding = kTextureUnitLive) uniform sampler2D liveTexture;
+layout(binding = kTextureUnitReference) uniform sampler2D referenceTexture;
+// magma (core/color_map.h) in linear RGB, n x 1: texel i holds magma(i / (n - 1)).
+layout(binding = kTextureUnitColorMap) uniform sampler2D colorMap;
+uniform float maxValue;
 
 layout(location = 0) out vec4 fragColor;
 
-vec3 heatRamp(float t) {
-  const vec3 stops[5] = vec3[5](vec3(0.0), vec3(0.0, 0.1, 0.9), vec3(0.0, 0.8, 0.2), vec3(1.0, 0.9, 0.0),
-                                vec3(1.0, 0.0, 0.0));
-  float x = clamp(t, 0.0, 1.0) * 4.0;
-  int i = min(int(x), 3);
-  return mix(stops[i], stops[i + 1], x - float(i));
+// relativeSquaredError of core/relative_squared_error.h, with its epsilon.
+float relativeSquaredError(float reference, float test) {
+  return (test - reference) * (test - reference) / (reference * reference + kRelMseEpsilon);
+}
+
+// magma(t) from the table: the texel centres are t = i / (n - 1), bilinear between them.
+vec3 magma(float t) {
+  float n = float(textureSize(colorMap, 0).x);
+  return textureLod(colorMap, vec2((clamp(t, 0.0, 1.0) * (n - 1.0) + 0.5) / n, 0.5), 0.0).rgb;
 }
 
 void main() {
   vec2 uv = ndc * 0.5 + 0.5;
   vec3 live = texture(liveTexture, uv).rgb;
   vec3 reference = texture(referenceTexture, uv).rgb;
-  vec3 relative = abs(live - reference) / (abs(reference) + 0.01);
-  float difference = (relative.r + relative.g + relative.b) / 3.0;
-  fragColor = vec4(heatRamp(difference / max(scale, 1e-6)), 1.0);
+  float error = (relativeSquaredError(reference.r, live.r) + relativeSquaredError(reference.g, live.g) +
+                 relativeSquaredError(reference.b, live.b)) / 3.0;
+  vec3 color = magma(error / maxValue);
+  fragColor = vec4(srgbEncode(color.r), srgbEncode(color.g), srgbEncode(color.b), 1.0);
 }

@@ -16,10 +16,8 @@ vec2 latLongUv(vec3 d) {
   return vec2(0.5 - lon / (2.0 * kPi), 0.5 - lat / kPi);
 }
 
-// sampleLatLongBilinear of the core: bilinear between texel centres, u wrapping across the seam,
-// v clamped to the centres of the first and last rows. The texture is uploaded with image row 0
-// first (v = 0 at t = 0), GL_REPEAT in s, GL_CLAMP_TO_EDGE in t, GL_LINEAR without mip-maps,
+// sampleLatLongBilinear of core/latlong.h: bilinear between texel centres, u wrapping across the
+// seam, v clamped to the centres of the first and last rows. The texture is uploaded with image
+// row 0 first (v = 0 at t = 0), GL_REPEAT in s, GL_CLAMP_TO_EDGE in t, GL_LINEAR without mip-maps,
 // which is exactly that filter. Explicit lod 0: the seam's jump in u must not pick a mip level.
-vec3 sampleLatLong(sampler2D latLong, vec3 direction) {
-  return textureLod(latLong, latLongUv(direction), 0.0).rgb;
-}
+vec3 sampleLatLongBilinear(sampler2D latLong, vec2 uv) { return textureLod(latLong, uv, 0.0).rgb; }

@@ -2,6 +2,7 @@
 // Shading of the meshes in every mode (engine/gl/shading_mode.h, docs/engine.md). Output: linear
 // radiance (or the normal / depth layer); alpha 1 on objects, 0 on the ground.
 
+#include "shared_constants.glsl"
 #include "environment.glsl"
 #include "sh9.glsl"
 #include "brdf.glsl"
@@ -17,25 +18,21 @@ in VertexData {
 }
 vertexIn;
 
-// Modes, as iblkit::ShadingMode.
-const int kUnlit = 0, kMirror = 1, kSh = 2, kShAo = 3, kShAoBent = 4, kPrt = 5, kFull = 6;
-// Layers, as iblkit::FrameLayer.
-const int kRadiance = 0, kNormal = 1, kDepth = 2;
-
-// The mode and the layer are compile-time constants, one program per combination (renderer.cpp
-// defines them): a software rasteriser like llvmpipe runs every side of a branch on a uniform, so
-// a single program would cost the sum of all modes. The defaults serve glslangValidator.
+// The mode (iblkit::ShadingMode) and the layer (iblkit::FrameLayer) are compile-time constants,
+// one program per combination (renderer.cpp defines them): a software rasteriser like llvmpipe
+// runs every side of a branch on a uniform, so a single program would cost the sum of all modes.
+// The defaults serve glslangValidator.
 #ifndef SHADING_MODE
-#define SHADING_MODE 6
+#define SHADING_MODE kShadingModeFull
 #endif
 #ifndef FRAME_LAYER
-#define FRAME_LAYER 0
+#define FRAME_LAYER kFrameLayerRadiance
 #endif
 const int mode = SHADING_MODE;
 const int layer = FRAME_LAYER;
 uniform vec3 cameraPosition;
 uniform bool isGround;
-// Material (core/material.h), clamped to the glTF ranges on the CPU.
+// Material (core/material.h), clamped to the glTF ranges on the CPU (clampedToGltfRanges).
 uniform vec3 baseColor;
 uniform float metallic;
 uniform float roughness;
@@ -45,13 +42,13 @@ uniform vec3 emissive;
 // Environment: SH9 radiance (rotated on the CPU), the lat-long map with its total rotation and
 // intensity, the specular chain with the extra rotation only (the scene's is baked into it).
 uniform vec3 shRadiance[9];
-uniform sampler2D latLongMap;
+layout(binding = kTextureUnitLatLong) uniform sampler2D latLongMap;
 uniform vec2 latLongRotation;  // cos, sin of -(scene + extra rotation)
 uniform float latLongIntensity;
-uniform samplerCube specularCube;
+layout(binding = kTextureUnitSpecular) uniform samplerCube specularCube;
 uniform vec2 specularRotation;  // cos, sin of -(extra rotation)
 uniform float specularLevels;   // number of levels n; level i has roughness i / (n - 1)
-uniform sampler2D brdfLut;
+layout(binding = kTextureUnitBrdfLut) uniform sampler2D brdfLut;
 
 layout(location = 0) out vec4 fragColor;
 
@@ -69,23 +66,19 @@ vec3 shadingNormal(vec3 v) {
 vec3 fullMaterialModel(vec3 n, vec3 v, vec3 albedo, float ao, vec3 bent, vec3 irradiance) {
   float NoV = clamp(dot(n, v), 1e-4, 1.0);
   vec3 r = reflect(-v, n);
-  float alpha = roughness * roughness;
-  vec3 dielectricF0 = min(0.04 * specularColor, vec3(1.0));
-  vec3 f0 = mix(specularWeight * dielectricF0, baseColor, metallic);
-  vec3 f90 = vec3(mix(specularWeight, 1.0, metallic));
+  BrdfLobes lobes = brdfLobes(baseColor, metallic, roughness, specularWeight, specularColor);
   vec3 dfg = texture(brdfLut, vec2(NoV, roughness)).rgb;
-  vec3 specularAlbedo = splitSumKaris(f0, f90, dfg.xy) * energyCompensationFdezAguera(f0, dfg.z);
+  vec3 specularAlbedo = splitSumKaris(lobes.f0, lobes.f90, dfg.xy) * energyCompensationFdezAguera(lobes.f0, dfg.z);
   float lod = roughness * (specularLevels - 1.0);
   vec3 prefiltered = textureLod(specularCube, rotateAboutY(r, specularRotation), lod).rgb;
-  float specularOcclusion = specularOcclusionCone(bent, ao, r, alpha);
-  vec3 specular = prefiltered * specularAlbedo * multiBounceAoJimenez(specularOcclusion, f0);
-  // The diffuse base is weighted by what the dielectric layer leaves: 1 - specular max(Fd), with
-  // Fd's directional average dielectricF0 A + B in place of the per-direction Schlick term.
-  float diffuseWeight = (1.0 - metallic) * (1.0 - specularWeight * maxComponent(splitSumKaris(dielectricF0, vec3(1.0), dfg.xy)));
+  float specularOcclusion = specularOcclusionCone(bent, ao, r, lobes.alpha);
+  vec3 specular = prefiltered * specularAlbedo * multiBounceAoJimenez(specularOcclusion, lobes.f0);
   // The baked transfer already holds the visibility (one bounce of shadowing); the multi-bounce
   // fit adds the light interreflected inside the occluded region, as a ratio to plain AO.
   vec3 bounce = multiBounceAoJimenez(ao, albedo) / max(ao, 1e-3);
-  vec3 diffuse = diffuseWeight * albedo / kPi * irradiance * bounce;
+  // The diffuse base is weighted by what the dielectric layer leaves, with Fd's directional
+  // average dielectricF0 A + B in place of the per-direction Schlick term (brdf.glsl).
+  vec3 diffuse = diffuseWeight(lobes, dfg.xy) * albedo / kPi * irradiance * bounce;
   return diffuse + specular;
 }
 
@@ -103,32 +96,32 @@ void main() {
   vec3 v = normalize(cameraPosition - vertexIn.position);
   vec3 n = shadingNormal(v);
   float coverage = isGround ? 0.0 : 1.0;
-  if (layer == kNormal) {
+  if (layer == kFrameLayerNormal) {
     fragColor = vec4(n, coverage);
     return;
   }
-  if (layer == kDepth) {
+  if (layer == kFrameLayerDepth) {
     fragColor = vec4(vec3(distance(cameraPosition, vertexIn.position)), coverage);
     return;
   }
   vec3 albedo = baseColor;
   float ao = clamp(vertexIn.ao, 0.0, 1.0);
   vec3 radiance;
-  if (mode == kUnlit) {
+  if (mode == kShadingModeUnlit) {
     radiance = baseColor;
-  } else if (mode == kMirror) {
-    radiance = latLongIntensity * sampleLatLong(latLongMap, rotateAboutY(reflect(-v, n), latLongRotation));
-  } else if (mode == kSh) {
-    radiance = albedo / kPi * irradianceSh9RamamoorthiHanrahan(n, shRadiance);
-  } else if (mode == kShAo) {
-    radiance = albedo / kPi * irradianceSh9RamamoorthiHanrahan(n, shRadiance) * ao;
-  } else if (mode == kShAoBent) {
+  } else if (mode == kShadingModeMirror) {
+    radiance = latLongIntensity * sampleLatLongBilinear(latLongMap, latLongUv(rotateAboutY(reflect(-v, n), latLongRotation)));
+  } else if (mode == kShadingModeSh) {
+    radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, n);
+  } else if (mode == kShadingModeShAo) {
+    radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, n) * ao;
+  } else if (mode == kShadingModeShAoBent) {
     vec3 bent = normalize(vertexIn.bentNormal);
-    radiance = albedo / kPi * irradianceSh9RamamoorthiHanrahan(bent, shRadiance) * ao;
+    radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, bent) * ao;
   } else {
     vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, shRadiance);
-    radiance = mode == kPrt ? albedo / kPi * irradiance : fullMaterialModel(n, v, albedo, ao, visibilityConeAxis(n, ao), irradiance);
+    radiance = mode == kShadingModePrt ? albedo / kPi * irradiance : fullMaterialModel(n, v, albedo, ao, visibilityConeAxis(n, ao), irradiance);
   }
-  if (mode != kUnlit) radiance += emissive;
+  if (mode != kShadingModeUnlit) radiance += emissive;
   fragColor = vec4(radiance, coverage);
 }

@@ -1,13 +1,16 @@
 #version 450 core
-// World-space meshes with their baked per-vertex visibility (docs/baker.md).
+// World-space meshes with their baked per-vertex visibility (docs/baker.md). The locations are
+// GpuMesh's (engine/gl/gpu_mesh_attribute.h, through the generated shared_constants.glsl).
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in float inAo;
-layout(location = 3) in vec3 inBentNormal;
-layout(location = 4) in vec3 inTransfer012;
-layout(location = 5) in vec3 inTransfer345;
-layout(location = 6) in vec3 inTransfer678;
+#include "shared_constants.glsl"
+
+layout(location = kAttributePosition) in vec3 inPosition;
+layout(location = kAttributeNormal) in vec3 inNormal;
+layout(location = kAttributeAo) in float inAo;
+layout(location = kAttributeBentNormal) in vec3 inBentNormal;
+layout(location = kAttributeTransfer012) in vec3 inTransfer012;
+layout(location = kAttributeTransfer345) in vec3 inTransfer345;
+layout(location = kAttributeTransfer678) in vec3 inTransfer678;
 
 uniform mat4 viewProjection;
 

@@ -2,13 +2,14 @@
 // A linear float texture shown tone-mapped (the core curve, tone_curve.glsl): display-referred
 // sRGB values are written (no GL_FRAMEBUFFER_SRGB).
 
+#include "shared_constants.glsl"
 #include "tone_curve.glsl"
 
 in vec2 ndc;
 
-uniform sampler2D radianceTexture;
+layout(binding = kTextureUnitPresent) uniform sampler2D radianceTexture;
 uniform float exposure;
-uniform int curve;
+uniform int curve;  // iblkit::ToneCurve
 
 layout(location = 0) out vec4 fragColor;
 

@@ -1,7 +1,8 @@
 // Order-3 real spherical harmonics (core/spherical_harmonics.h: Sloan 2008, "Stupid
 // Spherical Harmonics (SH) Tricks", Appendix A1; k = l(l+1) + m, orthonormal).
 
-void shBasis9Sloan(vec3 d, out float y[9]) {
+// shBasis9 of core/spherical_harmonics.h (Sloan 2008, Appendix A1).
+void shBasis9(vec3 d, out float y[9]) {
   y[0] = 0.282094792;
   y[1] = 0.488602512 * d.y;
   y[2] = 0.488602512 * d.z;
@@ -13,12 +14,13 @@ void shBasis9Sloan(vec3 d, out float y[9]) {
   y[8] = 0.546274215 * (d.x * d.x - d.y * d.y);
 }
 
-// Irradiance E(n) = sum_k A_l L_k Y_k(n) with A_0 = pi, A_1 = 2pi/3, A_2 = pi/4 (Ramamoorthi and
-// Hanrahan 2001, "An Efficient Representation for Irradiance Environment Maps", eq. 8), from the
-// radiance coefficients L_k. Clamped at 0 (windowing keeps it >= 0 for baked environments).
-vec3 irradianceSh9RamamoorthiHanrahan(vec3 n, vec3 L[9]) {
+// SphericalHarmonics9::irradiance of core/spherical_harmonics.h, the radiance coefficients L_k
+// standing for the object: E(n) = sum_k A_l L_k Y_k(n) with A_0 = pi, A_1 = 2pi/3, A_2 = pi/4
+// (Ramamoorthi and Hanrahan 2001, "An Efficient Representation for Irradiance Environment Maps",
+// eq. 8). Clamped at 0 (windowing keeps it >= 0 for baked environments).
+vec3 sphericalHarmonics9Irradiance(vec3 L[9], vec3 n) {
   float y[9];
-  shBasis9Sloan(n, y);
+  shBasis9(n, y);
   const float A[9] = float[9](kPi, 2.0 * kPi / 3.0, 2.0 * kPi / 3.0, 2.0 * kPi / 3.0, kPi / 4.0, kPi / 4.0,
                               kPi / 4.0, kPi / 4.0, kPi / 4.0);
   vec3 e = vec3(0.0);

@@ -2,12 +2,13 @@
 // The environment seen directly behind the objects: the camera ray of each pixel looked up in the
 // lat-long map, with the same filter and rotation as every other lookup. Alpha 0 (no object).
 
+#include "shared_constants.glsl"
 #include "environment.glsl"
 
 in vec2 ndc;
 
 uniform mat4 inverseViewProjection;
-uniform sampler2D latLongMap;
+layout(binding = kTextureUnitLatLong) uniform sampler2D latLongMap;
 uniform vec2 latLongRotation;
 uniform float latLongIntensity;
 
@@ -18,5 +19,5 @@ void main() {
   vec4 nearPoint = inverseViewProjection * vec4(ndc, -1.0, 1.0);
   vec4 farPoint = inverseViewProjection * vec4(ndc, 1.0, 1.0);
   vec3 direction = farPoint.xyz / farPoint.w - nearPoint.xyz / nearPoint.w;
-  fragColor = vec4(latLongIntensity * sampleLatLong(latLongMap, rotateAboutY(direction, latLongRotation)), 0.0);
+  fragColor = vec4(latLongIntensity * sampleLatLongBilinear(latLongMap, latLongUv(rotateAboutY(direction, latLongRotation))), 0.0);
 }

@@ -1,9 +1,12 @@
-// GLSL twin of core/tone_curve.cpp (tested against it through a render):
+// GLSL twin of core/tone_curve.cpp, each function named as its C++ twin (tested against it
+// through a render):
 //   display = sRGB_OETF( curve( radiance * 2^exposure ) )
-// Curve ids follow iblkit::ToneCurve: 0 Clamp, 1 AcesFitted, 2 Reinhard.
+// Curve ids are iblkit::ToneCurve's (kToneCurve..., the generated shared_constants.glsl).
+
+#include "shared_constants.glsl"
 
 // Narkowicz 2015, "ACES Filmic Tone Mapping Curve" (the common ALU fit).
-float toneCurveAcesNarkowicz(float x) {
+float acesFitted(float x) {
   return min((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 1.0);
 }
 
@@ -11,8 +14,8 @@ float toneCurveAcesNarkowicz(float x) {
 float applyToneCurve(float x, int curve) {
   if (!(x > 0.0)) return 0.0;
   if (isinf(x)) return 1.0;
-  if (curve == 1) return toneCurveAcesNarkowicz(x);
-  if (curve == 2) return x / (1.0 + x);  // Reinhard et al. 2002, eq. 3
+  if (curve == kToneCurveAcesFitted) return acesFitted(x);
+  if (curve == kToneCurveReinhard) return x / (1.0 + x);  // Reinhard et al. 2002, eq. 3
   return min(x, 1.0);
 }
 

@@ -4,19 +4,9 @@
 #include <epoxy/gl.h>
 
 #include "core/mesh.h"
+#include "engine/gl/gpu_mesh_attribute.h"
 
 namespace iblkit {
-
-// Attribute locations of shaders/mesh.vert.
-enum GpuMeshAttribute : GLuint {
-  kAttributePosition = 0,
-  kAttributeNormal = 1,
-  kAttributeAo = 2,
-  kAttributeBentNormal = 3,
-  kAttributeTransfer012 = 4,
-  kAttributeTransfer345 = 5,
-  kAttributeTransfer678 = 6,
-};
 
 class GpuMesh {
  public:

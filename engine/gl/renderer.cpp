@@ -1,6 +1,5 @@
 #include "engine/gl/renderer.h"
 
-#include <algorithm>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <map>
@@ -12,29 +11,16 @@
 #include "engine/gl/gpu_mesh.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/shader_program.h"
+#include "engine/gl/texture_unit.h"
 
 namespace iblkit {
 namespace {
-
-// Texture units the shaders' samplers read.
-enum TextureUnit : GLuint { kUnitLatLong = 0, kUnitSpecular = 1, kUnitBrdfLut = 2, kUnitPresent = 3 };
 
 // (cos, sin) of the rotation by -degrees: lookups read the map at R_y(-rotation) d
 // (environment_map.h).
 glm::vec2 inverseRotation(float degrees) {
   const float radians = -glm::radians(degrees);
   return {std::cos(radians), std::sin(radians)};
-}
-
-// Material parameters clamped to their glTF ranges (docs/material-model.md, "Parameters").
-Material clampedMaterial(const Material& m) {
-  Material c = m;
-  c.baseColor = glm::clamp(m.baseColor, 0.0f, 1.0f);
-  c.metallic = std::clamp(m.metallic, 0.0f, 1.0f);
-  c.roughness = std::clamp(m.roughness, 0.0f, 1.0f);
-  c.specular = std::clamp(m.specular, 0.0f, 1.0f);
-  c.specularColor = glm::max(m.specularColor, 0.0f);
-  return c;
 }
 
 }  // namespace
@@ -114,14 +100,14 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   const glm::mat4 viewProjection =
       camera.projectionMatrix(float(width) / float(height)) * camera.viewMatrix();
   const glm::vec2 latLongRotation = inverseRotation(r.rotationDegrees + settings.envRotationDegrees);
-  glBindTextureUnit(kUnitLatLong, r.latLong.id());
-  glBindTextureUnit(kUnitSpecular, r.specular.id());
-  glBindTextureUnit(kUnitBrdfLut, r.brdfLut.id());
+  // The samplers are declared with these units (layout(binding), texture_unit.h).
+  glBindTextureUnit(kTextureUnitLatLong, r.latLong.id());
+  glBindTextureUnit(kTextureUnitSpecular, r.specular.id());
+  glBindTextureUnit(kTextureUnitBrdfLut, r.brdfLut.id());
 
   if (settings.drawSky && settings.layer == FrameLayer::Radiance) {
     const ShaderProgram& sky = r.skyProgram;
     sky.set("inverseViewProjection", glm::inverse(viewProjection));
-    sky.set("latLongMap", int(kUnitLatLong));
     sky.set("latLongRotation", latLongRotation);
     sky.set("latLongIntensity", r.intensity);
     sky.use();
@@ -136,19 +122,16 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   program.set("viewProjection", viewProjection);
   program.set("cameraPosition", camera.position);
   program.setArray("shRadiance", sh.coefficients.data(), kShCoefficients);
-  program.set("latLongMap", int(kUnitLatLong));
   program.set("latLongRotation", latLongRotation);
   program.set("latLongIntensity", r.intensity);
-  program.set("specularCube", int(kUnitSpecular));
   program.set("specularRotation", inverseRotation(settings.envRotationDegrees));
   program.set("specularLevels", float(r.specularLevels));
-  program.set("brdfLut", int(kUnitBrdfLut));
   program.use();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   for (std::size_t i = 0; i < r.meshes.size(); ++i) {
     const Mesh& mesh = r.scene.meshes[i];
-    const Material m = clampedMaterial(r.scene.materials.at(std::size_t(mesh.material)));
+    const Material m = clampedToGltfRanges(r.scene.materials.at(std::size_t(mesh.material)));
     program.set("isGround", int(mesh.isGround));
     program.set("baseColor", m.baseColor);
     program.set("metallic", m.metallic);
@@ -166,8 +149,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
 void Renderer::presentToneMapped(GLuint texture, const FrameSettings& settings, int x, int y, int w, int h) {
   Impl& r = *impl_;
   glViewport(x, y, w, h);
-  glBindTextureUnit(kUnitPresent, texture);
-  r.presentProgram.set("radianceTexture", int(kUnitPresent));
+  glBindTextureUnit(kTextureUnitPresent, texture);
   r.presentProgram.set("exposure", settings.exposure);
   r.presentProgram.set("curve", int(settings.curve));
   r.presentProgram.use();

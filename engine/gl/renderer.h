@@ -11,16 +11,10 @@
 #include "core/camera.h"
 #include "core/material.h"
 #include "core/tone_curve.h"
+#include "engine/gl/frame_layer.h"
 #include "engine/gl/shading_mode.h"
 
 namespace iblkit {
-
-// What a frame writes into the colour target.
-enum class FrameLayer {
-  Radiance,  // linear radiance; alpha = 1 on non-ground objects, 0 on the ground and the sky
-  Normal,    // world shading normal turned towards the viewer (iblkit-trace --normal); 0 on the sky
-  Depth,     // distance from the camera position along the ray (iblkit-trace --depth); 0 on the sky
-};
 
 struct FrameSettings {
   ShadingMode mode = ShadingMode::Full;

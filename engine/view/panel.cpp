@@ -101,8 +101,8 @@ void comparisonSection(ReferenceComparison& comparison, bool cameraMoved) {
   if (comparison.view == ComparisonView::Split)
     ImGui::SliderFloat("divider", &comparison.divider, 0.0f, 1.0f);
   if (comparison.view == ComparisonView::Difference) {
-    ImGui::SliderFloat("red at", &comparison.heatmapScale, 0.01f, 2.0f, "%.2f relative");
-    ImGui::TextUnformatted("|live - ref| / (ref + 0.01): black 0, blue, green, yellow, red");
+    ImGui::SliderFloat("max", &comparison.heatMapMax, 0.01f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    ImGui::TextUnformatted("relMSE per pixel (docs/scoring.md), magma from 0 to max");
   }
   if (cameraMoved) ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "camera moved: R to compare again");
 }

@@ -44,10 +44,7 @@ ReferenceComparison::ReferenceComparison(const std::filesystem::path& file) : fi
   width_ = reference.width();
   height_ = reference.height();
   texture_ = uploadTable(bottomRowFirst(reference));
-  glCreateVertexArrays(1, &emptyVertexArray_);
 }
-
-ReferenceComparison::~ReferenceComparison() { glDeleteVertexArrays(1, &emptyVertexArray_); }
 
 void ReferenceComparison::cycleView() {
   view = view == ComparisonView::Live    ? ComparisonView::Split
@@ -66,17 +63,7 @@ void ReferenceComparison::present(Renderer& renderer, GLuint liveTexture, const 
     return;
   }
   if (view == ComparisonView::Difference) {
-    glViewport(0, 0, width, height);
-    glBindTextureUnit(0, liveTexture);
-    glBindTextureUnit(1, texture_.id());
-    heatmapProgram_.set("liveTexture", 0);
-    heatmapProgram_.set("referenceTexture", 1);
-    heatmapProgram_.set("scale", heatmapScale);
-    heatmapProgram_.use();
-    glBindVertexArray(emptyVertexArray_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glUseProgram(0);
+    heatMap_.draw(liveTexture, texture_.id(), heatMapMax, width, height);
     return;
   }
   // Split: the live frame left of the divider, the reference right of it, a 2-pixel white line.

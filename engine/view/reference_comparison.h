@@ -1,7 +1,7 @@
 #pragma once
 // The path-traced reference beside the live frame (iblkit-view --reference REF.exr): a split view
 // (live left of a draggable divider, reference right of it, both the whole frame at the same
-// camera) or the relative difference as a heat map (shaders/difference_heatmap.frag). The
+// camera) or the scorer's relMSE heat map of the difference (difference_heat_map.h). The
 // reference is only comparable while the camera is the scene's: the panel says when it is not.
 #include <epoxy/gl.h>
 
@@ -11,7 +11,7 @@
 #include "core/image.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/renderer.h"
-#include "engine/gl/shader_program.h"
+#include "engine/view/difference_heat_map.h"
 
 namespace iblkit {
 
@@ -25,7 +25,6 @@ class ReferenceComparison {
   // Reads the reference (OpenEXR, linear radiance, e.g. iblkit-trace's output) and uploads it;
   // starts in the split view. Needs a current OpenGL context. Throws Error("<file>: <problem>").
   explicit ReferenceComparison(const std::filesystem::path& file);
-  ~ReferenceComparison();
   ReferenceComparison(const ReferenceComparison&) = delete;
   ReferenceComparison& operator=(const ReferenceComparison&) = delete;
 
@@ -34,9 +33,9 @@ class ReferenceComparison {
   const std::filesystem::path& file() const { return file_; }
 
   ComparisonView view = ComparisonView::Split;
-  float divider = 0.5f;       // split view: the divider's position, a fraction of the width
-  float heatmapScale = 0.5f;  // difference view: the relative difference shown as red
-  void cycleView();           // Live -> Split -> Difference -> Live
+  float divider = 0.5f;     // split view: the divider's position, a fraction of the width
+  float heatMapMax = 1.0f;  // difference view: the relMSE term at the top of the colour map
+  void cycleView();         // Live -> Split -> Difference -> Live
   // Whether window x coordinate `x` (pixels from the left) is close enough to grab the divider.
   bool nearDivider(double x, int width) const;
 
@@ -49,8 +48,7 @@ class ReferenceComparison {
   std::filesystem::path file_;
   int width_ = 0, height_ = 0;
   GlTexture texture_;
-  ShaderProgram heatmapProgram_{"fullscreen.vert", "difference_heatmap.frag"};
-  GLuint emptyVertexArray_ = 0;
+  DifferenceHeatMap heatMap_;
 };
 
 }  // namespace iblkit

@@ -6,11 +6,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "engine/gl/gl_debug.h"
-#include "engine/gl/gpu_textures.h"
-#include "engine/gl/render_target.h"
-#include "engine/gl/shader_program.h"
-#include "gl/test_context.h"
+#include "gl/fragment_probe.h"
 
 namespace iblkit {
 namespace {
@@ -23,34 +19,15 @@ struct Input {
 };
 
 std::vector<float> specularOcclusion(const std::vector<Input>& inputs) {
-  test::glContext();
   const int n = int(inputs.size());
   Image a(n, 1), b(n, 1);
   for (int i = 0; i < n; ++i) {
     a.at(i, 0) = glm::vec4(inputs[i].bent, inputs[i].ao);
     b.at(i, 0) = glm::vec4(inputs[i].reflection, inputs[i].alpha);
   }
-  const GlTexture textureA = uploadTable(a), textureB = uploadTable(b);
-  const ShaderProgram probe("fullscreen.vert", "brdf_probe.frag");
-  RenderTarget target(n, 1, 1);
-  GLuint vertexArray = 0;
-  glCreateVertexArrays(1, &vertexArray);
-  glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
-  glViewport(0, 0, n, 1);
-  glDisable(GL_DEPTH_TEST);
-  glBindTextureUnit(0, textureA.id());
-  glBindTextureUnit(1, textureB.id());
-  probe.set("inputA", 0);
-  probe.set("inputB", 1);
-  probe.use();
-  glBindVertexArray(vertexArray);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  glDeleteVertexArrays(1, &vertexArray);
-  const Image out = target.readColor();
-  checkGlErrors("brdf probe");
   std::vector<float> values;
-  for (int i = 0; i < n; ++i) values.push_back(out.at(i, 0).r);
+  for (const glm::vec4& out : test::runFragmentProbe("brdf_probe.frag", {{"inputA", &a}, {"inputB", &b}}))
+    values.push_back(out.r);
   return values;
 }
 

@@ -1,4 +1,4 @@
-#include "score/color_map.h"
+#include "core/color_map.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,19 @@
+#pragma once
+// The vertex attribute locations of a GpuMesh. shaders/mesh.vert declares its inputs with
+// layout(location = kAttribute...) from the generated shared_constants.glsl
+// (embed_shaders_tool.cpp), so these values are the one source of both sides. No GL header here:
+// the build-time tool includes it.
+
+namespace iblkit {
+
+enum GpuMeshAttribute : unsigned {
+  kAttributePosition = 0,
+  kAttributeNormal = 1,
+  kAttributeAo = 2,
+  kAttributeBentNormal = 3,
+  kAttributeTransfer012 = 4,
+  kAttributeTransfer345 = 5,
+  kAttributeTransfer678 = 6,
+};
+
+}  // namespace iblkit

@@ -1,0 +1,20 @@
+#pragma once
+// The texture units the embedded shaders' samplers are bound to. The shaders declare each sampler
+// with layout(binding = kTextureUnit...) from the generated shared_constants.glsl
+// (embed_shaders_tool.cpp), so C++ binds textures to the units the samplers read without setting
+// sampler uniforms, and these values are the one source of both sides. No GL header here: the
+// build-time tool includes it.
+
+namespace iblkit {
+
+enum TextureUnit : unsigned {
+  kTextureUnitLatLong = 0,    // mesh.frag, sky.frag: the lat-long environment
+  kTextureUnitSpecular = 1,   // mesh.frag: the prefiltered specular cube
+  kTextureUnitBrdfLut = 2,    // mesh.frag: the DFG table
+  kTextureUnitPresent = 3,    // present.frag: the linear frame to tone-map
+  kTextureUnitLive = 4,       // difference_heatmap.frag: the live frame
+  kTextureUnitReference = 5,  // difference_heatmap.frag: the path-traced reference
+  kTextureUnitColorMap = 6,   // difference_heatmap.frag: the heat map's colour map (core/color_map.h)
+};
+
+}  // namespace iblkit

@@ -1,0 +1,20 @@
+#version 450 core
+// Writes the generated shared_constants.glsl's values, one per texel, for tests
+// (tests/gl/shared_constants_test.cpp compares them with the C++ constants they come from).
+
+#include "shared_constants.glsl"
+
+layout(location = 0) out vec4 fragColor;
+
+const float kValues[] = float[](
+    kShadingModeUnlit, kShadingModeMirror, kShadingModeSh, kShadingModeShAo, kShadingModeShAoBent, kShadingModePrt,
+    kShadingModeFull, kFrameLayerRadiance, kFrameLayerNormal, kFrameLayerDepth, kToneCurveClamp,
+    kToneCurveAcesFitted, kToneCurveReinhard, kAttributePosition, kAttributeNormal, kAttributeAo,
+    kAttributeBentNormal, kAttributeTransfer012, kAttributeTransfer345, kAttributeTransfer678,
+    kTextureUnitLatLong, kTextureUnitSpecular, kTextureUnitBrdfLut, kTextureUnitPresent, kTextureUnitLive,
+    kTextureUnitReference, kTextureUnitColorMap, kRelMseEpsilon);
+
+void main() {
+  int i = int(gl_FragCoord.x);
+  fragColor = vec4(i < kValues.length() ? kValues[i] : -1.0, 0.0, 0.0, 1.0);
+}
