@@ -1,7 +1,6 @@
 // iblkit-score: compares a test image with a reference (MSE, relMSE, PSNR, SSIM, FLIP), prints one
 // line for people or JSON for scripts, and optionally writes an error heat map (docs/scoring.md).
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -14,6 +13,7 @@
 #include "score/flip.h"
 #include "score/heat_map.h"
 #include "score/image_metrics.h"
+#include "score/score_images.h"
 #include "score/score_inputs.h"
 
 namespace {
@@ -56,61 +56,58 @@ int main(int argc, char** argv) {
     const std::set<std::string> metrics =
         metricList.empty() ? all : std::set<std::string>(metricList.begin(), metricList.end());
     const ScoreInputs inputs = loadScoreInputs(referenceFile, testFile, maskFile);
-    const bool wantFlip = metrics.count("flip") || (!heatMapFile.empty() && heatMapMetric == "flip");
+    ScoreOptions options;
+    options.mse = metrics.count("mse") || metrics.count("psnr");
+    options.relMse = metrics.count("relmse");
+    options.ssim = metrics.count("ssim");
+    options.flip = metrics.count("flip") || (!heatMapFile.empty() && heatMapMetric == "flip");
+    options.meanRelativeError = false;
+    options.highDynamicRange = inputs.highDynamicRange;
+    options.pixelsPerDegree = pixelsPerDegree;
+    if (options.flip && inputs.highDynamicRange && !exposureRange.empty()) {
+      if (exposureRange[1] < exposureRange[0])
+        throw Error("--exposure-range: the stop exposure is below the start");
+      options.exposures = exposureBracket(exposureRange[0], exposureRange[1]);
+    }
+    FlipErrorMap flipMap;
+    const ImageScores scores = scoreImages(inputs.reference, inputs.test, inputs.mask, options, &flipMap);
 
     nlohmann::json result = {{"reference", referenceFile}, {"test", testFile}};
     std::string line;
     const auto append = [&line](const std::string& text) { line += (line.empty() ? "" : "  ") + text; };
-    result["scored_pixels"] =
-        inputs.mask.empty() ? inputs.reference.pixelCount()
-                            : static_cast<std::size_t>(std::count(inputs.mask.begin(), inputs.mask.end(), 1));
+    result["scored_pixels"] = scores.scoredPixels;
     if (metrics.count("relmse")) {
-      const double relMse = relativeMeanSquaredError(inputs.reference, inputs.test, inputs.mask);
-      result["relmse"] = relMse;
-      append("relMSE " + formatted("%.4g", relMse));
+      result["relmse"] = scores.relMse;
+      append("relMSE " + formatted("%.4g", scores.relMse));
     }
-    if (metrics.count("mse") || metrics.count("psnr")) {
-      const double mse = meanSquaredError(inputs.reference, inputs.test, inputs.mask);
-      if (metrics.count("mse")) {
-        result["mse"] = mse;
-        append("MSE " + formatted("%.4g", mse));
-      }
-      if (metrics.count("psnr")) {
-        const double psnr = peakSignalToNoiseRatio(mse);
-        // JSON has no infinity: identical images give null.
-        result["psnr"] = std::isinf(psnr) ? nlohmann::json() : nlohmann::json(psnr);
-        append("PSNR " + (std::isinf(psnr) ? std::string("inf") : formatted("%.1f", psnr)) + " dB");
-      }
+    if (metrics.count("mse")) {
+      result["mse"] = scores.mse;
+      append("MSE " + formatted("%.4g", scores.mse));
+    }
+    if (metrics.count("psnr")) {
+      // JSON has no infinity: identical images give null.
+      result["psnr"] = std::isinf(scores.psnr) ? nlohmann::json() : nlohmann::json(scores.psnr);
+      append("PSNR " + (std::isinf(scores.psnr) ? std::string("inf") : formatted("%.1f", scores.psnr)) +
+             " dB");
     }
     if (metrics.count("ssim")) {
-      const double ssim = structuralSimilarity(inputs.reference, inputs.test, inputs.mask);
-      result["ssim"] = ssim;
-      append("SSIM " + formatted("%.4f", ssim));
+      result["ssim"] = scores.ssim;
+      append("SSIM " + formatted("%.4f", scores.ssim));
     }
-    FlipErrorMap flipMap;
-    if (wantFlip) {
-      if (inputs.highDynamicRange) {
-        if (!exposureRange.empty() && exposureRange[1] < exposureRange[0])
-          throw Error("--exposure-range: the stop exposure is below the start");
-        const ExposureRange exposures = exposureRange.empty()
-                                            ? automaticExposureRange(inputs.reference)
-                                            : exposureBracket(exposureRange[0], exposureRange[1]);
-        flipMap = hdrFlip(inputs.reference, inputs.test, exposures, pixelsPerDegree);
-        result["flip_exposures"] = {
-            {"start", exposures.start}, {"stop", exposures.stop}, {"count", exposures.count}};
-        if (metrics.count("flip"))
-          append("FLIP " + formatted("%.4f", maskedMean(flipMap.error, inputs.mask)) + " (HDR, exposures " +
-                 formatted("%.1f", exposures.start) + ".." + formatted("%.1f", exposures.stop) + ", " +
-                 std::to_string(exposures.count) + ")");
-      } else {
-        flipMap = ldrFlip(inputs.reference, inputs.test, pixelsPerDegree);
-        if (metrics.count("flip"))
-          append("FLIP " + formatted("%.4f", maskedMean(flipMap.error, inputs.mask)) + " (LDR)");
-      }
-      if (metrics.count("flip")) {
-        result["flip"] = maskedMean(flipMap.error, inputs.mask);
-        result["flip_kind"] = inputs.highDynamicRange ? "HDR" : "LDR";
-      }
+    if (options.flip && inputs.highDynamicRange) {
+      const ExposureRange& exposures = scores.flipExposures;
+      result["flip_exposures"] = {
+          {"start", exposures.start}, {"stop", exposures.stop}, {"count", exposures.count}};
+    }
+    if (metrics.count("flip")) {
+      const std::string kind = inputs.highDynamicRange
+                                   ? " (HDR, exposures " + formatted("%.1f", scores.flipExposures.start) +
+                                         ".." + formatted("%.1f", scores.flipExposures.stop) + ", " +
+                                         std::to_string(scores.flipExposures.count) + ")"
+                                   : std::string(" (LDR)");
+      append("FLIP " + formatted("%.4f", scores.meanFlip) + kind);
+      result["flip"] = scores.meanFlip;
+      result["flip_kind"] = inputs.highDynamicRange ? "HDR" : "LDR";
     }
     if (!heatMapFile.empty()) {
       std::vector<float> values =

@@ -1,36 +1,16 @@
 #include "report/frame_scores.h"
 
-#include <cmath>
-
 #include "core/error.h"
-#include "core/image_io.h"
 #include "score/image_metrics.h"
 
 namespace iblkit {
 
 FrameScores scoreFrame(const Image& reference, const Image& test, std::span<const std::uint8_t> mask,
                        const ExposureRange& exposures, FlipErrorMap* flip) {
-  if (reference.width() != test.width() || reference.height() != test.height())
-    fail("scoreFrame", "the test image's size differs from the reference's");
-  FrameScores scores;
-  const PixelRepairCounts invalid = countInvalidPixels(test);
-  scores.invalidPixels = invalid.nan + invalid.inf;
-  if (scores.invalidPixels > 0) return scores;
-
-  FlipErrorMap flipMap = hdrFlip(reference, test, exposures);
-  scores.meanFlip = maskedMean(flipMap.error, mask);
-  scores.relMse = relativeMeanSquaredError(reference, test, mask);
-  scores.ssim = structuralSimilarity(reference, test, mask);
-  double difference = 0.0, total = 0.0;
-  for (std::size_t i = 0; i < reference.pixelCount(); ++i) {
-    if (!mask.empty() && mask[i] == 0) continue;
-    const double referenceLuminance = luminance(glm::vec3(reference.pixels()[i]));
-    difference += std::abs(double(luminance(glm::vec3(test.pixels()[i]))) - referenceLuminance);
-    total += referenceLuminance;
-  }
-  scores.meanRelativeError = total > 0.0 ? difference / total : 0.0;
-  if (flip) *flip = std::move(flipMap);
-  return scores;
+  ScoreOptions options;
+  options.mse = false;
+  options.exposures = exposures;
+  return scoreImages(reference, test, mask, options, flip);
 }
 
 double halvesRelMseEstimate(const Image& a, const Image& b, std::span<const std::uint8_t> mask) {

@@ -10,21 +10,17 @@
 
 #include "core/image.h"
 #include "score/flip.h"
+#include "score/score_images.h"
 
 namespace iblkit {
 
-struct FrameScores {
-  double meanFlip = 0.0;           // HDR-FLIP (score/flip.h), mean over scored pixels
-  double relMse = 0.0;             // relative MSE over scored pixels (score/image_metrics.h)
-  double meanRelativeError = 0.0;  // sum |L_test - L_ref| / sum L_ref over scored pixels (luminance)
-  double ssim = 0.0;               // SSIM of the tone-mapped luminance over scored pixels
-  std::size_t invalidPixels = 0;   // NaN or infinite values in the test image; such a frame fails
-};
+// A frame's scores: every metric of scoreImages but MSE and PSNR, which mean little on HDR values.
+using FrameScores = ImageScores;
 
 // Scores `test` against `reference` (same size) over `mask` with HDR-FLIP at the given exposure
-// bracket, which the caller fixes per reference so that every mode is scored the same way.
-// When the test image has NaN or infinite values, only invalidPixels is set: those pixels are a
-// failure to report, not a number to average. `flip` (optional) receives the FLIP error map.
+// bracket, which the caller fixes per reference so that every mode is scored the same way
+// (scoreImages; a frame with NaN or infinite values has only invalidPixels set, and fails).
+// `flip` (optional) receives the FLIP error map.
 FrameScores scoreFrame(const Image& reference, const Image& test, std::span<const std::uint8_t> mask,
                        const ExposureRange& exposures, FlipErrorMap* flip = nullptr);
 

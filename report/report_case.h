@@ -2,7 +2,9 @@
 // One case of the demo report: a scene under one environment map. Bakes it (iblkit-bake), renders
 // every engine mode headless (iblkit-view), path-traces the reference (iblkit-trace) in passes
 // until its own error is negligible next to the modes' errors, and scores each mode against it.
-// Every stage is cached by the hash of its inputs (stage_cache.h); docs/report.md.
+// Every stage is cached under a key hashed from its command (stage_command.h); docs/report.md.
+// The stages are functions of their own: stage_commands.h, engine_frames.h, reference_passes.h,
+// mode_scores.h, case_pictures.h and sh9_truncation.h.
 
 #include <filesystem>
 #include <limits>
@@ -10,35 +12,10 @@
 #include <vector>
 
 #include "report/frame_scores.h"
+#include "report/report_settings.h"
 #include "report/stage_cache.h"
 
 namespace iblkit {
-
-struct ReportSettings {
-  std::filesystem::path binDir;  // where iblkit-bake, iblkit-trace and iblkit-view are
-  std::filesystem::path outDir;  // report.html, report.json and images/
-  int width = 320, height = 180;
-  std::vector<std::string> modes;  // engine modes to score (iblkit-view --mode)
-  int passSpp = 16;                // samples per pixel of one reference pass
-  int minPasses = 4, maxPasses = 64;  // reference passes; even, doubled until negligible
-  // The reference is converged when its estimated relMSE is at most this fraction of the best
-  // mode's relMSE, so its noise adds at most that fraction to every mode's measured error.
-  double negligibleRatio = 0.1;
-  // ...or at most this relMSE (1% RMS relative noise), whichever is larger: where a mode is
-  // nearly exact (the mirror sphere's `mirror`), 10% of its error would ask for thousands of
-  // samples to resolve differences no score can see.
-  double negligibleRelMse = 1e-4;
-  int benchFrames = 5;  // iblkit-view --bench frames for the frame time; 0: not measured
-  // Engine frames shade this many samples per pixel (iblkit-view --samples N --sample-shading), so
-  // their pixels average the shading over the pixel as the reference's pixel filter does; 1: one.
-  int engineSamples = 4;
-  // ...and render K x K pixels per output pixel (iblkit-view --supersample K): 4 x 2 x 2 = 16
-  // shaded samples by default, since 4 still alias the mirror sphere's minified reflection.
-  int engineSupersample = 2;
-  // iblkit-trace --integrator of the reference: path (full global illumination) or direct (one
-  // bounce: what the engine's modes model without interreflection), for experiments.
-  std::string referenceIntegrator = "path";
-};
 
 struct ModeResult {
   std::string mode;

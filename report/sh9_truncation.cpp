@@ -7,9 +7,13 @@
 #include <tuple>
 #include <vector>
 
+#include "bakefile/bake_layout.h"
+#include "bakefile/sh9_json.h"
+#include "core/environment_map_file.h"
 #include "core/environment_sh.h"
 #include "core/error.h"
 #include "core/latlong.h"
+#include "core/scene.h"
 
 namespace iblkit {
 
@@ -97,6 +101,17 @@ double errorBeyondSh9(const Image& reference, const Image& frame, const Sh9Trunc
       blocks += std::abs(sum);
     }
   return total > 0.0 ? blocks / total : 0.0;
+}
+
+Sh9Truncation caseSh9Truncation(const std::filesystem::path& sceneFile,
+                                const std::filesystem::path& environmentFile,
+                                const std::filesystem::path& bake, const Image& normals,
+                                std::span<const std::uint8_t> mask) {
+  const Scene scene = loadScene(sceneFile);
+  EnvironmentMap environment = loadEnvironmentMap(environmentFile);
+  environment.setRotationDegrees(scene.environment.rotationDegrees);
+  environment.setIntensity(scene.environment.intensity);
+  return sh9Truncation(environment, readSh9Json(bake / kBakeSh9File), normals, mask);
 }
 
 }  // namespace iblkit

@@ -7,6 +7,7 @@
 // engine's own doing (errorBeyondSh9).
 
 #include <cstdint>
+#include <filesystem>
 #include <span>
 #include <vector>
 
@@ -39,6 +40,14 @@ Sh9Truncation sh9Truncation(const EnvironmentMap& environment, const SphericalHa
 // sum over blocks |sum d| / sum lum(reference), over the scored pixels.
 double errorBeyondSh9(const Image& reference, const Image& frame, const Sh9Truncation& truncation,
                       std::span<const std::uint8_t> mask, int block = 16);
+
+// SH9's own error on a report case: the scene's environment map as the scene lights it (its
+// rotation and intensity) against the SH9 the bake wrote (BAKE/env/sh9.json), on `normals` over
+// `mask` (the reference's pass 0 layer and scored pixels).
+Sh9Truncation caseSh9Truncation(const std::filesystem::path& sceneFile,
+                                const std::filesystem::path& environmentFile,
+                                const std::filesystem::path& bake, const Image& normals,
+                                std::span<const std::uint8_t> mask);
 
 // A lat-long map averaged down by a power-of-two factor per axis so it is at most maxWidth wide;
 // each output texel is the solid-angle-weighted mean of its block, so every block's power is kept.

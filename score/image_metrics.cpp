@@ -121,6 +121,25 @@ double structuralSimilarity(const Image& reference, const Image& test, std::span
   return maskedMean(map, mask);
 }
 
+double meanRelativeLuminanceError(const Image& reference, const Image& test,
+                                  std::span<const std::uint8_t> mask) {
+  checkSizes(reference, test, mask);
+  double difference = 0.0, total = 0.0;
+  for (std::size_t i = 0; i < reference.pixelCount(); ++i) {
+    if (!scored(mask, i)) continue;
+    const double referenceLuminance = luminance(glm::vec3(reference.pixels()[i]));
+    difference += std::abs(double(luminance(glm::vec3(test.pixels()[i]))) - referenceLuminance);
+    total += referenceLuminance;
+  }
+  return total > 0.0 ? difference / total : 0.0;
+}
+
+std::size_t scoredPixelCount(std::span<const std::uint8_t> mask, std::size_t pixelCount) {
+  return mask.empty()
+             ? pixelCount
+             : std::size_t(std::count_if(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; }));
+}
+
 double maskedMean(std::span<const float> values, std::span<const std::uint8_t> mask) {
   if (!mask.empty() && mask.size() != values.size())
     throw Error("image metrics: mask and values differ in size");

@@ -34,6 +34,15 @@ double peakSignalToNoiseRatio(double meanSquaredError);
 double structuralSimilarity(const Image& reference, const Image& test,
                             std::span<const std::uint8_t> mask = {});
 
+// The luminance-weighted mean relative error over scored pixels: sum |L_test - L_ref| / sum L_ref
+// (Rec.709 luminance of the linear values); 0 when the scored reference is black. Unlike relMSE it
+// weighs each pixel by its brightness, so it reads as "the image is x% off".
+double meanRelativeLuminanceError(const Image& reference, const Image& test,
+                                  std::span<const std::uint8_t> mask = {});
+
+// The number of pixels `mask` scores in an image of `pixelCount` pixels (all of them when empty).
+std::size_t scoredPixelCount(std::span<const std::uint8_t> mask, std::size_t pixelCount);
+
 // The mean of per-pixel values over scored pixels (used for FLIP maps). Throws Error when the
 // mask scores no pixel.
 double maskedMean(std::span<const float> values, std::span<const std::uint8_t> mask = {});

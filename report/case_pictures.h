@@ -1,0 +1,27 @@
+#pragma once
+// The report's pictures of a case: the reference and each frame as PNG at one exposure, and each
+// mode's FLIP heat map (docs/report.md, "Pictures").
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "report/reference_passes.h"
+#include "report/report_case.h"
+#include "score/flip.h"
+
+namespace iblkit {
+
+// Exposure (stops) that brings the median luminance of the scored reference pixels to 0.18.
+float thumbnailExposure(const Image& reference, std::span<const std::uint8_t> mask);
+
+// Writes OUT/images/CASE-reference.png and, for each mode not failed, CASE-MODE.png and
+// CASE-MODE-flip.png (from flipMaps, in mode order); sets result's exposure and picture paths.
+void writeCasePictures(const std::filesystem::path& outDir, const std::string& caseName,
+                       const Reference& reference, const std::vector<Image>& frames,
+                       const std::vector<FlipErrorMap>& flipMaps, CaseResult& result);
+
+}  // namespace iblkit

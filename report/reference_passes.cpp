@@ -1,0 +1,90 @@
+#include "report/reference_passes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "core/image_io.h"
+#include "report/frame_scores.h"
+#include "report/stage_run.h"
+#include "score/flip.h"
+#include "score/image_metrics.h"
+
+namespace iblkit {
+
+namespace {
+
+Image meanOf(const std::vector<Image>& images) {
+  Image mean(images.front().width(), images.front().height());
+  for (const Image& image : images)
+    for (std::size_t i = 0; i < mean.pixelCount(); ++i) mean.pixels()[i] += image.pixels()[i];
+  for (glm::vec4& pixel : mean.pixels()) pixel /= float(images.size());
+  return mean;
+}
+
+// Traces the pass with `seed` and appends its beauty image to `passes`; pass 0 also gives the
+// mask and the normals.
+void tracePass(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
+               const CaseInputs& inputs, int seed, std::vector<Image>& passes, Reference& reference,
+               CaseResult& result) {
+  const StageRun pass =
+      runStage(cache, "trace-" + caseName + "-" + std::to_string(seed), traceCommand(settings, inputs, seed));
+  if (seed == 0) {
+    result.commands.push_back(pass.command + "   (one pass of " + std::to_string(settings.maxPasses) +
+                              " at most)");
+    const Image depth = readExr(pass.folder / "depth.exr");
+    reference.mask = erodeMask(geometryMask(depth), depth.width(), depth.height());
+    reference.normals = readExr(pass.folder / "normal.exr", nullptr, 0, PixelRepair::Keep);  // signed
+  }
+  result.traceSeconds += pass.seconds;
+  passes.push_back(readExr(pass.folder / "beauty.exr", nullptr, 0, PixelRepair::Keep));
+}
+
+// The smallest relMSE of the frames against the reference; marks a frame of the wrong size as a
+// failed mode. Only relMSE decides convergence: the full scores (FLIP is the costly one) come once.
+double bestModeRelMse(const Reference& reference, const std::vector<Image>& frames, CaseResult& result) {
+  const Image& image = reference.image;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t m = 0; m < result.modes.size(); ++m) {
+    ModeResult& modeResult = result.modes[m];
+    if (!modeResult.failure.empty() && frames[m].empty()) continue;
+    if (frames[m].width() != image.width() || frames[m].height() != image.height()) {
+      modeResult.failure = "frame is " + std::to_string(frames[m].width()) + "x" +
+                           std::to_string(frames[m].height()) + ", reference is " +
+                           std::to_string(image.width()) + "x" + std::to_string(image.height());
+      continue;
+    }
+    const double relMse = relativeMeanSquaredError(image, frames[m], reference.mask);
+    if (std::isfinite(relMse)) best = std::min(best, relMse);
+  }
+  return best;
+}
+
+}  // namespace
+
+Reference traceReference(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
+                         const CaseInputs& inputs, const std::vector<Image>& frames, CaseResult& result) {
+  Reference reference;
+  std::vector<Image> passes;
+  for (int count = settings.minPasses;; count = std::min(2 * count, settings.maxPasses)) {
+    while (int(passes.size()) < count)
+      tracePass(settings, cache, caseName, inputs, int(passes.size()), passes, reference, result);
+    std::vector<Image> halfA, halfB;
+    for (std::size_t i = 0; i < passes.size(); ++i) (i % 2 == 0 ? halfA : halfB).push_back(passes[i]);
+    const Image a = meanOf(halfA), b = meanOf(halfB);
+    reference.image = averageImages(a, b);
+    result.referenceSpp = count * settings.passSpp;
+    result.scoredPixels = scoredPixelCount(reference.mask, reference.image.pixelCount());
+    if (result.scoredPixels == 0) fail(inputs.sceneFile, "no pixel of the reference sees geometry");
+    result.referenceRelMse = halvesRelMseEstimate(a, b, reference.mask);
+    result.flipExposures = automaticExposureRange(reference.image);
+    const double best = bestModeRelMse(reference, frames, result);
+    result.referenceConverged =
+        result.referenceRelMse <= std::max(settings.negligibleRatio * best, settings.negligibleRelMse);
+    if (result.referenceConverged || count >= settings.maxPasses) break;
+  }
+  return reference;
+}
+
+}  // namespace iblkit

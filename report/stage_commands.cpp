@@ -1,0 +1,68 @@
+#include "report/stage_commands.h"
+
+#include "core/scene.h"
+
+namespace iblkit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string stageFile(const std::string& name) { return std::string(kStageFolder) + "/" + name; }
+
+void appendSize(const ReportSettings& settings, std::vector<std::string>& arguments) {
+  arguments.insert(arguments.end(),
+                   {"--width", std::to_string(settings.width), "--height", std::to_string(settings.height)});
+}
+
+}  // namespace
+
+CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile) {
+  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}};
+  // A missing model file is left to the program that reads it, which fails naming it.
+  for (const fs::path& model : loadScene(sceneFile).modelFiles) {
+    std::error_code error;
+    if (fs::is_regular_file(model, error)) inputs.files.push_back(model);
+  }
+  inputs.files.push_back(environmentFile);
+  return inputs;
+}
+
+StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs) {
+  return {settings.binDir / "iblkit-bake",
+          {inputs.sceneFile.string(), "--env", inputs.environmentFile.string(), "-o", stageFile("bake")},
+          inputs.files};
+}
+
+StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, const std::string& mode) {
+  StageCommand command{settings.binDir / "iblkit-view",
+                       {std::string(kCacheFolder) + "/" + bake.filename().string() + "/bake", "--headless",
+                        "-o", stageFile("frame.exr"), "--mode", mode},
+                       {}};
+  std::vector<std::string>& arguments = command.arguments;
+  appendSize(settings, arguments);
+  if (settings.engineSamples > 1)
+    arguments.insert(arguments.end(),
+                     {"--samples", std::to_string(settings.engineSamples), "--sample-shading"});
+  if (settings.engineSupersample > 1)
+    arguments.insert(arguments.end(), {"--supersample", std::to_string(settings.engineSupersample)});
+  if (settings.benchFrames > 0)
+    arguments.insert(arguments.end(), {"--bench", std::to_string(settings.benchFrames)});
+  return command;
+}
+
+StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inputs, int seed) {
+  StageCommand command{settings.binDir / "iblkit-trace",
+                       {inputs.sceneFile.string(), "--env", inputs.environmentFile.string(), "-o",
+                        stageFile("beauty.exr"), "--depth", stageFile("depth.exr"), "--spp",
+                        std::to_string(settings.passSpp), "--seed", std::to_string(seed)},
+                       inputs.files};
+  std::vector<std::string>& arguments = command.arguments;
+  if (seed == 0) arguments.insert(arguments.end(), {"--normal", stageFile("normal.exr")});
+  if (settings.referenceIntegrator != "path")
+    arguments.insert(arguments.end(), {"--integrator", settings.referenceIntegrator});
+  appendSize(settings, arguments);
+  return command;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,35 @@
+#pragma once
+// The commands of the report's stages, as a user would type them (docs/report.md): the bake, one
+// engine frame per mode and one reference pass per seed. Each names its outputs under
+// kStageFolder, so its cache key (stageKey) is hashed from exactly what runs.
+
+#include <filesystem>
+#include <string>
+
+#include "report/report_settings.h"
+#include "report/stage_command.h"
+
+namespace iblkit {
+
+// What a scene's images depend on besides the arguments: the scene file, every model file it
+// names and the environment map, whose bytes go into the key of each stage that reads them.
+struct CaseInputs {
+  std::filesystem::path sceneFile, environmentFile;
+  std::vector<std::filesystem::path> files;  // the scene, its model files, the environment map
+};
+CaseInputs caseInputs(const std::filesystem::path& sceneFile, const std::filesystem::path& environmentFile);
+
+// iblkit-bake SCENE --env ENV -o {stage}/bake: per-vertex visibility and the prefiltered map.
+StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs);
+
+// iblkit-view BAKE --headless -o {stage}/frame.exr --mode MODE at the report's size, samples,
+// supersampling and bench frames. `bake` is the bake stage's folder in the cache, named by its key:
+// the command names it under kCacheFolder.
+StageCommand viewCommand(const ReportSettings& settings, const std::filesystem::path& bake,
+                         const std::string& mode);
+
+// iblkit-trace SCENE --env ENV: the reference pass with `seed` ({stage}/beauty.exr and depth.exr;
+// pass 0 also writes {stage}/normal.exr, for the mask's normals).
+StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inputs, int seed);
+
+}  // namespace iblkit

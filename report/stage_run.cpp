@@ -1,0 +1,34 @@
+#include "report/stage_run.h"
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "report/program_runner.h"
+
+namespace iblkit {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+StageRun runStage(const StageCache& cache, const std::string& name, const StageCommand& command) {
+  StageRun run;
+  run.folder = cache.stage(name, stageKey(command), [&](const fs::path& folder) {
+    const std::vector<std::string> argv = stageArgv(command, cache.root(), folder);
+    const auto start = std::chrono::steady_clock::now();
+    runProgram(argv, folder / "log.txt");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::ofstream(folder / "stage.json")
+        << json{{"seconds", seconds}, {"command", commandLine(argv)}}.dump(2);
+  });
+  std::ifstream stream(run.folder / "stage.json");
+  const json record = json::parse(stream, nullptr, false);
+  if (record.is_discarded() || !record.contains("seconds"))
+    fail(run.folder / "stage.json", "unreadable stage record");
+  run.seconds = record["seconds"].get<double>();
+  run.command = record["command"].get<std::string>();
+  return run;
+}
+
+}  // namespace iblkit

@@ -1,0 +1,95 @@
+#include "report/stage_commands.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <functional>
+
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Stand-ins for the programs and a scene under a map: the commands are built, not run.
+struct Fixture {
+  ReportSettings settings;
+  CaseInputs inputs;
+  Fixture() {
+    const fs::path dir = test::scratchDir();
+    settings.binDir = dir / "bin";
+    fs::create_directories(settings.binDir);
+    for (const char* program : {"iblkit-bake", "iblkit-view", "iblkit-trace"})
+      std::ofstream(settings.binDir / program) << program;
+    std::ofstream(dir / "map.exr") << "pixels";
+    std::ofstream(dir / "scene.json")
+        << R"({"models": [{"shape": "sphere"}], "environment": {"file": "map.exr"}})";
+    inputs = caseInputs(dir / "scene.json", dir / "map.exr");
+  }
+};
+
+TEST(StageCommands, OutputsAreUnderThePlaceholder) {
+  Fixture fixture;
+  const StageCommand bake = bakeCommand(fixture.settings, fixture.inputs);
+  EXPECT_EQ(stageArgv(bake, "/c", "/c/b").back(), "/c/b/bake");
+  const StageCommand trace = traceCommand(fixture.settings, fixture.inputs, 0);
+  const std::vector<std::string> argv = stageArgv(trace, "/c", "/c/t");
+  for (const char* file : {"/c/t/beauty.exr", "/c/t/depth.exr", "/c/t/normal.exr"})
+    EXPECT_NE(std::find(argv.begin(), argv.end(), file), argv.end()) << file;
+  EXPECT_EQ(fixture.inputs.files.size(), 2u);  // the scene and the map: a shape names no file
+}
+
+TEST(StageCommands, EachSettingChangesItsStagesKey) {
+  Fixture fixture;
+  const fs::path bake = "/cache/bake-0123";
+  const auto viewKey = [&](const ReportSettings& settings) {
+    return stageKey(viewCommand(settings, bake, "sh"));
+  };
+  const auto traceKey = [&](const ReportSettings& settings) {
+    return stageKey(traceCommand(settings, fixture.inputs, 3));
+  };
+  const std::vector<std::function<void(ReportSettings&)>> viewChanges = {
+      [](ReportSettings& s) { s.width = 64; }, [](ReportSettings& s) { s.height = 36; },
+      [](ReportSettings& s) { s.engineSamples = 1; }, [](ReportSettings& s) { s.engineSupersample = 4; },
+      [](ReportSettings& s) { s.benchFrames = 0; }};
+  for (std::size_t i = 0; i < viewChanges.size(); ++i) {
+    ReportSettings changed = fixture.settings;
+    viewChanges[i](changed);
+    EXPECT_NE(viewKey(changed), viewKey(fixture.settings)) << "view change " << i;
+  }
+  EXPECT_NE(stageKey(viewCommand(fixture.settings, bake, "prt")), viewKey(fixture.settings));
+  EXPECT_NE(stageKey(viewCommand(fixture.settings, "/cache/bake-4567", "sh")), viewKey(fixture.settings));
+  // The same bake in a cache elsewhere (--cache, another output folder) keeps the frame's key.
+  EXPECT_EQ(stageKey(viewCommand(fixture.settings, "/elsewhere/bake-0123", "sh")), viewKey(fixture.settings));
+  EXPECT_EQ(stageArgv(viewCommand(fixture.settings, bake, "sh"), "/cache", "/cache/view")[1],
+            "/cache/bake-0123/bake");
+  const std::vector<std::function<void(ReportSettings&)>> traceChanges = {
+      [](ReportSettings& s) { s.width = 64; }, [](ReportSettings& s) { s.passSpp = 32; },
+      [](ReportSettings& s) { s.referenceIntegrator = "direct"; }};
+  for (std::size_t i = 0; i < traceChanges.size(); ++i) {
+    ReportSettings changed = fixture.settings;
+    traceChanges[i](changed);
+    EXPECT_NE(traceKey(changed), traceKey(fixture.settings)) << "trace change " << i;
+  }
+  EXPECT_NE(stageKey(traceCommand(fixture.settings, fixture.inputs, 4)), traceKey(fixture.settings));
+  // What iblkit-view alone reads does not touch the reference's key, nor the bake's.
+  ReportSettings engineOnly = fixture.settings;
+  engineOnly.engineSamples = 8;
+  EXPECT_EQ(traceKey(engineOnly), traceKey(fixture.settings));
+  EXPECT_EQ(stageKey(bakeCommand(engineOnly, fixture.inputs)),
+            stageKey(bakeCommand(fixture.settings, fixture.inputs)));
+}
+
+TEST(StageCommands, TheScenesBytesAreInTheBakeAndTraceKeys) {
+  Fixture fixture;
+  const std::string bake = stageKey(bakeCommand(fixture.settings, fixture.inputs)),
+                    trace = stageKey(traceCommand(fixture.settings, fixture.inputs, 0));
+  std::ofstream(fixture.inputs.environmentFile) << "other pixels";
+  EXPECT_NE(stageKey(bakeCommand(fixture.settings, fixture.inputs)), bake);
+  EXPECT_NE(stageKey(traceCommand(fixture.settings, fixture.inputs, 0)), trace);
+}
+
+}  // namespace
+}  // namespace iblkit
