@@ -11,8 +11,14 @@
 namespace iblkit {
 
 SphericalHarmonics9 projectEnvironmentSh9(const EnvironmentMap& environment) {
-  return tbb::parallel_reduce(
-      tbb::blocked_range<int>(0, environment.height()), SphericalHarmonics9{},
+  // Floating-point sums depend on their order. parallel_deterministic_reduce splits the rows into
+  // the same tasks and joins them in the same order on every run and any number of threads (a
+  // fixed grain of 4 rows), so the coefficients, the window cutoff found from them and every
+  // bake stage after them are reproducible to the last bit; parallel_reduce's split follows the
+  // scheduling and changed the sixth digit from run to run.
+  constexpr int kRowsPerTask = 4;
+  return tbb::parallel_deterministic_reduce(
+      tbb::blocked_range<int>(0, environment.height(), kRowsPerTask), SphericalHarmonics9{},
       [&](const tbb::blocked_range<int>& rows, SphericalHarmonics9 sum) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
           const float solidAngle = environment.texelSolidAngle(y);

@@ -17,7 +17,8 @@ namespace iblkit {
 // L_k = integral L(w) Y_k(w) dw of the environment's world radiance (rotation and intensity
 // applied), as the texel-by-texel sum of texelRadiance * Y_k(texelDirection) * texelSolidAngle
 // (the midpoint rule with the exact solid angle of each texel). Basis and normalisation are those
-// of spherical_harmonics.h (Sloan 2008, Appendix A1). Parallel over rows (TBB).
+// of spherical_harmonics.h (Sloan 2008, Appendix A1). Parallel over rows (TBB), with the same
+// result to the last bit on every run and any number of threads.
 SphericalHarmonics9 projectEnvironmentSh9(const EnvironmentMap& environment);
 
 // The smallest RGB component of sh.irradiance(n) over `directions`.
