@@ -9,10 +9,10 @@
 
 #include "bakefile/bake_layout.h"
 #include "bakefile/sh9_json.h"
-#include "core/environment_map_file.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/scene.h"
+#include "core/scene_environment.h"
 #include "report/content_hash.h"
 #include "report/program_runner.h"
 #include "report/sh9_truncation.h"
@@ -245,9 +245,7 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
 
   // SH9's own error on these normals, with the SH9 the bake wrote and the scene's map as lit.
   const Scene scene = loadScene(sceneFile);
-  EnvironmentMap environment = loadEnvironmentMap(environmentFile);
-  environment.setRotationDegrees(scene.environment.rotationDegrees);
-  environment.setIntensity(scene.environment.intensity);
+  EnvironmentMap environment = loadSceneEnvironment(scene, environmentFile);
   const Sh9Truncation truncation =
       sh9Truncation(environment, readSh9Json(baked.folder / "bake" / kBakeSh9File), normals, mask);
   result.sh9Truncation = truncation.meanRelativeError;
