@@ -39,6 +39,10 @@ Material clampedMaterial(const Material& m) {
 
 }  // namespace
 
+float envRotationFromBake(const EnvironmentStages& env, std::optional<float> degrees) {
+  return degrees ? *degrees - env.rotationDegrees : 0.0f;
+}
+
 struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;
