@@ -4,6 +4,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "baker/brdf_lut.h"
+#include "bakefile/brdf_lut_exr.h"
 #include "core/image_io.h"
 #include "core/microfacet.h"
 #include "support/test_paths.h"

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <vector>
 
+#include "bakefile/sh9_json.h"
 #include "core/environment_sh.h"
 #include "core/environment_map_file.h"
 #include "core/latlong.h"

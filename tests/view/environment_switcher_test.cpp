@@ -7,6 +7,7 @@
 
 #include <fstream>
 
+#include "baker/environment_stages.h"
 #include "core/image_io.h"
 #include "support/test_paths.h"
 
