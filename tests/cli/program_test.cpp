@@ -59,7 +59,7 @@ TEST(Program, HelpPrintsTheHelpAndTheExitStatusesAndExitsZero) {
 TEST(Program, AParseErrorIsOneLineWithTheProgramNameAndStatusTwo) {
   const std::pair<std::vector<std::string>, std::string> cases[] = {
       {{"--frobnicate"}, "test-program: The following argument was not expected: --frobnicate\n"},
-      {{"--count", "x"}, "test-program: Could not convert: --count = x\n"},
+      {{"--count", "x"}, "test-program: --count: Value x not in range 1 to 9\n"},
       {{"--count", "10"}, "test-program: --count: Value 10 not in range 1 to 9\n"},
       {{"--kind", "medium"}, "test-program: --kind: unknown kind 'medium' (expected one of small, large)\n"},
   };
