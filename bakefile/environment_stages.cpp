@@ -37,7 +37,9 @@ EnvironmentStages readEnvironmentStages(const fs::path& folder, const BakeInputs
   env.rotationDegrees = inputs.environmentRotationDegrees;
   env.intensity = inputs.environmentIntensity;
   env.latLong =
-      loadEnvironmentMap(requireFile(inputs.environment), parseProbeFormat(inputs.environmentFormat)).image();
+      loadEnvironmentMap(requireFile(inputs.environment),
+                         parseProbeFormat(inputs.environmentFormat, (folder / kBakeRecordFile).string()))
+          .image();
   env.sh9Projection = readSh9Json(requireFile(folder / kBakeSh9File), &env.shWindowCutoff);
   env.sh9 = env.sh9Projection;
   env.specular = readSpecularCubeExr(requireFile(folder / kBakeSpecularFile));

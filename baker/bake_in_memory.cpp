@@ -4,8 +4,7 @@
 
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
-#include "core/environment_map_file.h"
-#include "core/error.h"
+#include "core/scene_environment.h"
 
 namespace iblkit {
 
@@ -15,15 +14,7 @@ BakedScene bakeInMemory(const fs::path& sceneFile, const InMemoryBakeOptions& op
   BakedScene bake;
   bake.scene = loadScene(sceneFile);
   bake.bakedInMemory = true;
-  const fs::path environmentFile =
-      options.environment.empty() ? bake.scene.environment.file : options.environment;
-  if (environmentFile.empty())
-    fail(sceneFile, "names no environment map (give one, or bake it with iblkit-bake --env)");
-  std::error_code error;
-  if (!fs::is_regular_file(environmentFile, error)) fail(environmentFile, "missing (incomplete bake folder?)");
-  EnvironmentMap environment = loadEnvironmentMap(environmentFile);
-  environment.setRotationDegrees(bake.scene.environment.rotationDegrees);
-  environment.setIntensity(bake.scene.environment.intensity);
+  const EnvironmentMap environment = loadSceneEnvironment(bake.scene, options.environment);
   std::cerr << sceneFile.string() << ": a scene, not a bake folder: baking it in memory (" << options.aoRays
             << " visibility rays per vertex)\n";
   VisibilitySettings settings;

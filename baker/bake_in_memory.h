@@ -5,22 +5,24 @@
 // BakedScene (bakefile/bake_folder.h).
 #include <filesystem>
 
-#include "baker/environment_stages.h"
 #include "bakefile/bake_folder.h"
+#include "baker/environment_stages.h"
+#include "core/scene_environment.h"
 
 namespace iblkit {
 
 struct InMemoryBakeOptions {
   // Visibility rays per vertex (few: this runs at start-up).
   int aoRays = 64;
-  // The environment map; empty = the scene's environment.file.
-  std::filesystem::path environment;
+  // The environment map, its rotation and intensity; unset: the scene's.
+  EnvironmentOverride environment;
   EnvironmentStageOptions stages = kViewerEnvironmentStages;
 };
 
 // Loads `sceneFile` (.json, .gltf or .glb), bakes its vertex visibility and its environment's
-// stages (the scene's rotation and intensity applied), and says so on stderr. Throws
-// Error("<file>: ...") for a scene that names no environment map or a map that is missing.
+// stages (loadSceneEnvironment: the scene's rotation and intensity unless overridden), and says so
+// on stderr. Throws Error("<file>: ...") for a scene that names no environment map or a map that
+// is missing.
 BakedScene bakeInMemory(const std::filesystem::path& sceneFile, const InMemoryBakeOptions& options = {});
 
 // A bake folder read with readBakeFolder, or a scene file baked with bakeInMemory.

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/usage_error.h"
 #include "reference/environment_sampler.h"
 #include "reference/render_scene.h"
 #include "reference/renderer.h"
@@ -76,9 +77,9 @@ void validateSamplingStudySettings(const SamplingStudySettings& settings) {
   requireInRange("--height", settings.height, 1, kMaxImageSide);
   requireInRange("--max-spp", settings.maxSpp, 1, kMaxSamplesPerPixel);
   requireInRange("--reference-spp", settings.referenceSpp, 1, kMaxSamplesPerPixel);
-  if (settings.threads < 0) fail("--threads", "must be >= 0, not " + std::to_string(settings.threads));
+  if (settings.threads < 0) failUsage("--threads", "must be >= 0, not " + std::to_string(settings.threads));
   if (settings.phong && !(std::isfinite(*settings.phong) && *settings.phong >= 0.0f))
-    fail("--phong", "exponent must be finite and >= 0");
+    failUsage("--phong", "exponent must be finite and >= 0");
 }
 
 std::vector<int> studySppLevels(int maxSpp) {
@@ -106,14 +107,12 @@ double relMseRatio(const MapStudy& study, EnvSampling numerator, EnvSampling den
 }
 
 MapStudy studyEnvironmentMap(const SamplingStudySettings& settings, const Scene& scene,
-                             EnvironmentMap environment, const std::string& name, const std::string& label,
-                             const StudyLog& log) {
+                             const EnvironmentMap& environment, const std::string& name,
+                             const std::string& label, const StudyLog& log) {
   validateSamplingStudySettings(settings);
   MapStudy out;
   out.name = name;
   out.label = label;
-  environment.setRotationDegrees(scene.environment.rotationDegrees);
-  environment.setIntensity(scene.environment.intensity);
   const EnvironmentSampler sampler(environment);
   const Camera camera = sceneCamera(scene, static_cast<float>(settings.width) / settings.height);
   const RenderScene renderScene(scene);

@@ -83,12 +83,13 @@ double relMseRatio(const MapStudy& study, EnvSampling numerator, EnvSampling den
 // Progress lines ("sky: rendering the reference, 4096 spp mis"), without a newline.
 using StudyLog = std::function<void(const std::string& line)>;
 
-// Runs the study of `scene` lit by `environment` (the scene's own map is ignored; its rotation
-// and intensity are applied to `environment`). The reference is read from settings.cache when a
-// file of the same key is there, else rendered and written there. Throws Error for a cached
-// reference of the wrong size and for settings that validateSamplingStudySettings refuses.
+// Runs the study of `scene` lit by `environment` as it is given (the scene's own map is ignored:
+// loadSceneEnvironment with a file override gives a map with the scene's rotation and intensity). The
+// reference is read from settings.cache when a file of the same key is there, else rendered and written
+// there. Throws Error for a cached reference of the wrong size and for settings that
+// validateSamplingStudySettings refuses.
 MapStudy studyEnvironmentMap(const SamplingStudySettings& settings, const Scene& scene,
-                             EnvironmentMap environment, const std::string& name, const std::string& label,
-                             const StudyLog& log = {});
+                             const EnvironmentMap& environment, const std::string& name,
+                             const std::string& label, const StudyLog& log = {});
 
 }  // namespace iblkit

@@ -13,24 +13,26 @@
 // scene's glTF materials.
 //
 // Bad input (settings out of range, a map that does not load, a missing --out-dir, an --update
-// file without the section) fails with one line on stderr before anything is rendered or written.
+// file without the section) fails with one line on stderr before anything is rendered or written,
+// with the exit status of cli/program.h (2 for the command line, 1 for the files).
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <string>
 #include <vector>
 
 #include "bench/env_sampling_study.h"
 #include "bench/marked_section.h"
 #include "bench/sampling_study_report.h"
-#include "core/environment_map_file.h"
+#include "cli/program.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/scene.h"
+#include "core/scene_environment.h"
+#include "core/usage_error.h"
 
 namespace iblkit {
 namespace {
@@ -62,17 +64,17 @@ void writeText(const fs::path& file, const std::string& text) {
   });
 }
 
-// Each "NAME[:LABEL]" of --maps with ASSETS/hdri/NAME.exr loaded.
-std::vector<StudyMap> loadStudyMaps(const Options& options) {
-  if (options.maps.empty()) fail("--maps", "no map given");
+// Each "NAME[:LABEL]" of --maps with ASSETS/hdri/NAME.exr loaded in place of the scene's map.
+std::vector<StudyMap> loadStudyMaps(const Options& options, const Scene& scene) {
+  if (options.maps.empty()) failUsage("--maps", "no map given");
   std::vector<StudyMap> maps;
   for (const std::string& entry : options.maps) {
     const std::size_t colon = entry.find(':');
     const std::string name = entry.substr(0, colon);
     if (name.empty() || name.find('/') != std::string::npos)
-      fail("--maps", "'" + entry + "' is not NAME[:LABEL] with NAME a map in ASSETS/hdri");
+      failUsage("--maps", "'" + entry + "' is not NAME[:LABEL] with NAME a map in ASSETS/hdri");
     maps.push_back({name, colon == std::string::npos ? name : entry.substr(colon + 1),
-                    loadEnvironmentMap(options.assets / "hdri" / (name + ".exr"))});
+                    loadSceneEnvironment(scene, options.assets / "hdri" / (name + ".exr"))});
   }
   return maps;
 }
@@ -81,22 +83,21 @@ int run(const Options& options) {
   // Everything that can be refused is checked before the first render.
   validateSamplingStudySettings(options.study);
   if (options.name.empty() || options.name.find('/') != std::string::npos)
-    fail("--name", "'" + options.name + "' is not a file name");
+    failUsage("--name", "'" + options.name + "' is not a file name");
   if (!fs::is_directory(options.outDir)) fail(options.outDir, "folder does not exist");
   if (!options.update.empty())
     replaceMarkedSection(readText(options.update), options.name, "", options.update);
   const fs::path sceneFile = options.scene.empty() ? options.assets / "scenes" / "bunny.json" : options.scene;
   const Scene scene = loadScene(sceneFile);
-  std::vector<StudyMap> maps = loadStudyMaps(options);
+  const std::vector<StudyMap> maps = loadStudyMaps(options, scene);
 
   const StudyLog log = [](const std::string& line) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   };
   std::vector<MapStudy> results;
-  for (StudyMap& map : maps) {
-    results.push_back(
-        studyEnvironmentMap(options.study, scene, std::move(map.environment), map.name, map.label, log));
+  for (const StudyMap& map : maps) {
+    results.push_back(studyEnvironmentMap(options.study, scene, map.environment, map.name, map.label, log));
     std::printf("%s: reference %s (%.1f s), floor %s\n", map.name.c_str(),
                 results.back().referenceCached ? "cached" : "rendered", results.back().referenceSeconds,
                 formatStudyNumber(results.back().referenceFloor).c_str());
@@ -120,8 +121,8 @@ int main(int argc, char** argv) {
   Options options;
   const char* assets = std::getenv("IBLKIT_ASSETS");
   options.assets = assets && *assets ? assets : "assets";
-  CLI::App app{
-      "sampling_study: relMSE of each environment-sampling strategy against spp (docs/benchmarks.md)"};
+  CLI::App app{"relMSE of each environment-sampling strategy against spp (docs/benchmarks.md)",
+               "sampling_study"};
   app.add_option("--assets", options.assets, "assets folder (default $IBLKIT_ASSETS or ./assets)");
   app.add_option("--scene", options.scene, "scene (default ASSETS/scenes/bunny.json)");
   app.add_option("--maps", options.maps, "maps in ASSETS/hdri as NAME[:LABEL]")->delimiter(',');
@@ -137,18 +138,5 @@ int main(int argc, char** argv) {
   app.add_option("--phong", options.study.phong,
                  "every surface uses the modified Phong lobe of this exponent");
   app.add_option("--update", options.update, "markdown file whose sampling-study section gets the table");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "sampling_study: " << e.what() << "\n";
-    return 1;
-  }
-  try {
-    return run(options);
-  } catch (const std::exception& e) {
-    std::cerr << "sampling_study: " << e.what() << "\n";
-    return 1;
-  }
+  return runProgram(app, argc, argv, [&] { return run(options); });
 }

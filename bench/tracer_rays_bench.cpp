@@ -30,9 +30,9 @@
 #include <memory>
 #include <vector>
 
-#include "core/environment_map_file.h"
 #include "core/procedural_mesh.h"
 #include "core/scene.h"
+#include "core/scene_environment.h"
 #include "reference/environment_sampler.h"
 #include "reference/integrator.h"
 #include "reference/ray_recorder.h"
@@ -102,9 +102,7 @@ const Tracer& tracer(SceneVariant variant) {
   Tracer& t = *slot;
   {
     Scene scene = benchScene(variant);
-    t.environment = std::make_unique<EnvironmentMap>(loadEnvironmentMap(scene.environment.file));
-    t.environment->setRotationDegrees(scene.environment.rotationDegrees);
-    t.environment->setIntensity(scene.environment.intensity);
+    t.environment = std::make_unique<EnvironmentMap>(loadSceneEnvironment(scene));
     t.sampler = std::make_unique<EnvironmentSampler>(*t.environment);
     t.camera = sceneCamera(scene, static_cast<float>(kWidth) / kHeight);
     t.scene = std::make_unique<RenderScene>(std::move(scene));

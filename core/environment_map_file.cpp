@@ -19,11 +19,8 @@ bool hasExrExtension(const std::filesystem::path& file) {
 }
 }  // namespace
 
-ProbeFormat parseProbeFormat(const std::string& name) {
-  if (name == "latlong") return ProbeFormat::LatLong;
-  if (name == "mirrorball") return ProbeFormat::MirrorBall;
-  if (name == "angular") return ProbeFormat::Angular;
-  throw Error("unknown environment format '" + name + "' (expected latlong, mirrorball or angular)");
+ProbeFormat parseProbeFormat(const std::string& name, const std::string& what) {
+  return parseEnumName(kProbeFormatNames, name, what, "environment format");
 }
 
 EnvironmentMap loadEnvironmentMap(const std::filesystem::path& file, ProbeFormat format, int latLongWidth) {

@@ -7,14 +7,20 @@
 #include <filesystem>
 #include <string>
 
+#include "core/enum_names.h"
 #include "core/environment_map.h"
 
 namespace iblkit {
 
 enum class ProbeFormat { LatLong, MirrorBall, Angular };
 
-// Parses "latlong", "mirrorball" or "angular"; throws Error naming the bad value otherwise.
-ProbeFormat parseProbeFormat(const std::string& name);
+inline constexpr EnumName<ProbeFormat> kProbeFormatNames[] = {{ProbeFormat::LatLong, "latlong"},
+                                                              {ProbeFormat::MirrorBall, "mirrorball"},
+                                                              {ProbeFormat::Angular, "angular"}};
+
+// A name of the table above; otherwise throws Error("<what>: unknown environment format 'x'
+// (expected one of latlong, mirrorball, angular)"), `what` being the option or file that gave it.
+ProbeFormat parseProbeFormat(const std::string& name, const std::string& what = "--env-format");
 
 // Reads `file` as a lat-long map (an OpenEXR file whose envmap attribute says cube is converted
 // from its cube faces), or converts a square mirror-ball / angular-map probe. Converted maps are

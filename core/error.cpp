@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/usage_error.h"
+
 namespace iblkit {
 
 namespace {
@@ -15,9 +17,14 @@ void fail(const std::filesystem::path& file, const std::string& problem) {
   throw Error(file.string() + ": " + problem);
 }
 
+void failUsage(const std::string& option, const std::string& problem) {
+  throw UsageError(option + ": " + problem);
+}
+
 void requireInRange(const std::filesystem::path& what, long long value, long long lo, long long hi) {
   if (value < lo || value > hi)
-    fail(what, "must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ", not " + std::to_string(value));
+    failUsage(what.string(), "must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ", not " +
+                                 std::to_string(value));
 }
 
 void setWarningSink(WarningSink sink) { gSink.store(sink ? sink : printWarning); }

@@ -17,8 +17,8 @@ public:
 // Throws Error("<file>: <problem>").
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& problem);
 
-// Throws Error("<what>: must be in lo..hi, not value") unless lo <= value <= hi. For programs
-// that check an option's range before reading anything (what: the option, "--width").
+// Throws UsageError("<what>: must be in lo..hi, not value") unless lo <= value <= hi (see
+// usage_error.h). For programs checking an option before reading anything (what: "--width").
 void requireInRange(const std::filesystem::path& what, long long value, long long lo, long long hi);
 
 // Non-fatal repairs (NaN pixels set to 0, normals generated) are reported through this hook, one

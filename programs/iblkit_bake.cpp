@@ -1,6 +1,7 @@
 // iblkit-bake: precomputes what the real-time engine needs for a scene (docs/baker.md).
 //
-//   iblkit-bake SCENE [--env ENV] [--env-format latlong|mirrorball|angular] -o OUTDIR [--ao-rays N]
+//   iblkit-bake SCENE [--env ENV] [--env-format latlong|mirrorball|angular] [--env-rotation D]
+//               [--env-intensity I] -o OUTDIR [--ao-rays N]
 //               [--ao-distance D] [--ao-falloff P] [--ao-area] [--bounces N] [--seed S] [--threads T]
 //               [--sh-window auto|none|BANDS] [--specular-samples N] [--lut-size N]
 //
@@ -25,18 +26,21 @@
 #include <optional>
 #include <string>
 
+#include "bakefile/bake_layout.h"
+#include "bakefile/bake_record.h"
+#include "bakefile/scene_glb.h"
 #include "baker/environment_stages.h"
 #include "baker/irradiance_cube.h"
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
-#include "bakefile/bake_layout.h"
-#include "bakefile/bake_record.h"
-#include "bakefile/scene_glb.h"
+#include "cli/program.h"
 #include "core/environment_map_file.h"
 #include "core/error.h"
 #include "core/output_directory.h"
 #include "core/scene.h"
+#include "core/scene_environment.h"
 #include "core/stopwatch.h"
+#include "core/usage_error.h"
 
 namespace iblkit {
 namespace {
@@ -47,7 +51,8 @@ using nlohmann::json;
 constexpr const char* kProgram = "iblkit-bake";
 
 struct Options {
-  fs::path scene, environment, output;
+  fs::path scene, output;
+  EnvironmentOverride environment;  // its format is parsed from envFormat
   int aoRays = 256;
   float aoDistance = 0.0f;
   float aoFalloff = 0.0f;
@@ -102,7 +107,7 @@ std::optional<float> shWindowCutoff(const std::string& choice) {
     if (used == choice.size() && cutoff > 0.0f) return cutoff;
   } catch (const std::exception&) {
   }
-  throw Error("--sh-window: expected auto, none or a positive number of bands, got '" + choice + "'");
+  failUsage("--sh-window", "expected auto, none or a positive number of bands, got '" + choice + "'");
 }
 
 // The environment stages (baker/environment_stages.h), written into `folder`'s env/; returns
@@ -132,21 +137,22 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
 }
 
 int bake(const Options& options) {
-  const std::optional<float> windowCutoff = shWindowCutoff(options.shWindow);  // checked before any work
+  // Checked before any work.
+  const std::optional<float> windowCutoff = shWindowCutoff(options.shWindow);
+  checkEnvironmentOverride(options.environment);
   Stopwatch stopwatch;
   json timings;
   Scene scene = loadScene(options.scene);
   timings["load_s"] = stopwatch.lap();
 
-  const fs::path environment = options.environment.empty() ? scene.environment.file : options.environment;
+  const EnvironmentSettings environment = overriddenEnvironment(scene.environment, options.environment);
   std::error_code error;
-  if (!environment.empty() && !fs::is_regular_file(environment, error)) fail(environment, "does not exist");
+  if (!environment.file.empty() && !fs::is_regular_file(environment.file, error))
+    fail(environment.file, "does not exist");
   // Loaded before the long visibility stage, so a bad map fails fast.
   std::optional<EnvironmentMap> environmentMap;
-  if (!environment.empty()) {
-    environmentMap = loadEnvironmentMap(environment, parseProbeFormat(options.envFormat));
-    environmentMap->setRotationDegrees(scene.environment.rotationDegrees);
-    environmentMap->setIntensity(scene.environment.intensity);
+  if (!environment.file.empty()) {
+    environmentMap = loadEnvironment(environment, parseProbeFormat(options.envFormat));
     timings["load_environment_s"] = stopwatch.lap();
   }
 
@@ -171,12 +177,13 @@ int bake(const Options& options) {
 
   std::size_t triangles = 0;
   for (const Mesh& mesh : scene.meshes) triangles += mesh.triangleCount();
-  const BakeInputs inputs{
-      .scene = fs::absolute(options.scene).lexically_normal(),
-      .environment = environment.empty() ? fs::path() : fs::absolute(environment).lexically_normal(),
-      .environmentFormat = options.envFormat,
-      .environmentRotationDegrees = scene.environment.rotationDegrees,
-      .environmentIntensity = scene.environment.intensity};
+  const BakeInputs inputs{.scene = fs::absolute(options.scene).lexically_normal(),
+                          .environment = environment.file.empty()
+                                             ? fs::path()
+                                             : fs::absolute(environment.file).lexically_normal(),
+                          .environmentFormat = options.envFormat,
+                          .environmentRotationDegrees = environment.rotationDegrees,
+                          .environmentIntensity = environment.intensity};
   writeDirectoryAtomically(options.output, [&](const fs::path& folder) {
     writeSceneGlb(scene, folder / kBakeSceneFile);
     timings["write_scene_s"] = stopwatch.lap();
@@ -219,9 +226,10 @@ int bake(const Options& options) {
 
 int main(int argc, char** argv) {
   iblkit::Options options;
-  CLI::App app{"Bakes per-vertex ambient occlusion, bent normals and SH transfer for a scene."};
+  CLI::App app{"Bakes per-vertex ambient occlusion, bent normals and SH transfer for a scene.",
+               iblkit::kProgram};
   app.add_option("scene", options.scene, "scene: .json description, .gltf or .glb")->required();
-  app.add_option("--env", options.environment, "environment map (default: the scene's)");
+  iblkit::addEnvironmentOptions(app, options.environment);
   app.add_option("-o,--output", options.output, "output folder, replaced only after success")->required();
   app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex")
       ->check(CLI::Range(1, 1 << 24))
@@ -241,8 +249,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 16))
       ->capture_default_str();
   app.add_option("--seed", options.seed, "sample scrambling seed")->capture_default_str();
-  app.add_option("--env-format", options.envFormat, "environment layout: latlong, mirrorball or angular")
-      ->check(CLI::IsMember({"latlong", "mirrorball", "angular"}))
+  app.add_option("--env-format", options.envFormat, "environment layout")
+      ->check(iblkit::nameChoice(iblkit::kProbeFormatNames, "environment format"))
       ->capture_default_str();
   app.add_option("--sh-window", options.shWindow, "SH9 ringing window: auto, none or a cutoff in bands")
       ->capture_default_str();
@@ -256,16 +264,11 @@ int main(int argc, char** argv) {
   app.add_option("--threads", options.threads, "worker threads; 0 = every core")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
-
-  std::unique_ptr<tbb::global_control> threads;
-  if (options.threads > 0)
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                    std::size_t(options.threads));
-  try {
+  return iblkit::runProgram(app, argc, argv, [&] {
+    std::unique_ptr<tbb::global_control> threads;
+    if (options.threads > 0)
+      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      std::size_t(options.threads));
     return iblkit::bake(options);
-  } catch (const std::exception& e) {
-    std::cerr << iblkit::kProgram << ": " << e.what() << '\n';
-    return 1;
-  }
+  });
 }

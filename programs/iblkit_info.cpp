@@ -1,7 +1,8 @@
 // iblkit-info FILE...: what iblkit reads from images, environment maps, glTF models and scene
 // files: size, layout and pixel statistics, or meshes, triangles, materials, bounds, camera and
 // environment. `--json` prints one JSON object per file; `--png OUT` writes a tone-mapped preview
-// of one image. A file that cannot be read gets one line on stderr and a non-zero exit status.
+// of one image. A file that cannot be read gets one line on stderr, the other files are still
+// described, and the exit status is 1 (cli/program.h).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -9,11 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "cli/program.h"
 #include "core/cube_map.h"
 #include "core/environment_map.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/scene.h"
+#include "core/usage_error.h"
 
 namespace {
 
@@ -132,39 +135,46 @@ void printText(const json& d) {
   if (!d["customAttributes"].empty()) std::printf("  attributes %s\n", d["customAttributes"].dump().c_str());
 }
 
-}  // namespace
+constexpr const char* kProgram = "iblkit-info";
 
-int main(int argc, char** argv) {
-  CLI::App app{"iblkit-info: what iblkit reads from images, environment maps, glTF models and scenes"};
+struct Options {
   std::vector<std::string> files;
   bool asJson = false;
   std::string png;
   iblkit::ToneMapping toneMapping;
-  app.add_option("files", files, "images (.exr .hdr .png), models (.glb .gltf) or scenes (.json)")
-      ->required();
-  app.add_flag("--json", asJson, "one JSON object per file");
-  app.add_option("--png", png, "write a tone-mapped PNG preview of the (single) image");
-  app.add_option("--exposure", toneMapping.exposure, "preview exposure in stops");
-  CLI11_PARSE(app, argc, argv);
-  if (!png.empty() && (files.size() != 1 || !isImage(files.front()))) {
-    std::fprintf(stderr, "iblkit-info: --png needs exactly one image file\n");
-    return 2;
-  }
+};
 
-  int status = 0;
-  for (const std::string& name : files) {
+// Describes every file, each failure on its own line without stopping the others.
+int describeFiles(const Options& options) {
+  if (!options.png.empty() && (options.files.size() != 1 || !isImage(options.files.front())))
+    iblkit::failUsage("--png", "needs exactly one image file");
+  int status = iblkit::kExitSuccess;
+  for (const std::string& name : options.files) {
     try {
       Image pixels;
       const json d = isImage(name) ? describeImage(name, &pixels) : describeScene(name);
-      if (!png.empty()) iblkit::writePng(png, pixels, toneMapping);
-      if (asJson)
+      if (!options.png.empty()) iblkit::writePng(options.png, pixels, options.toneMapping);
+      if (options.asJson)
         std::printf("%s\n", d.dump().c_str());
       else
         printText(d);
-    } catch (const iblkit::Error& e) {
-      std::fprintf(stderr, "iblkit-info: %s\n", e.what());
-      status = 1;
+    } catch (const std::exception& e) {
+      iblkit::printError(kProgram, e.what());
+      status = iblkit::kExitFailure;
     }
   }
   return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"What iblkit reads from images, environment maps, glTF models and scenes", kProgram};
+  app.add_option("files", options.files, "images (.exr .hdr .png), models (.glb .gltf) or scenes (.json)")
+      ->required();
+  app.add_flag("--json", options.asJson, "one JSON object per file");
+  app.add_option("--png", options.png, "write a tone-mapped PNG preview of the (single) image");
+  app.add_option("--exposure", options.toneMapping.exposure, "preview exposure in stops");
+  return iblkit::runProgram(app, argc, argv, [&] { return describeFiles(options); });
 }

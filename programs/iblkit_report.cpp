@@ -8,15 +8,28 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli/program.h"
 #include "core/error.h"
+#include "core/usage_error.h"
 #include "report/report_case.h"
 #include "report/report_claims.h"
 #include "report/report_writer.h"
 
-namespace fs = std::filesystem;
-using namespace iblkit;
-
+namespace iblkit {
 namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kProgram = "iblkit-report";
+
+struct Options {
+  std::vector<std::string> scenes = {"assets/scenes/mirror_sphere.json", "assets/scenes/diffuse_sphere.json",
+                                     "assets/scenes/bunny.json", "assets/scenes/suzi.json"};
+  std::vector<std::string> environments = {"sky", "esplanade", "studio", "city", "forest", "sunset"};
+  std::string environmentFolder = "assets/hdri", output = "out/demo", cacheFolder, binFolder;
+  ReportSettings settings;
+  bool strict = false;
+};
 
 fs::path programFolder() {
   std::error_code error;
@@ -24,23 +37,74 @@ fs::path programFolder() {
   return error ? fs::path("build/bin") : self.parent_path();
 }
 
+// Runs every case, writes the report and prints the claims.
+int report(Options& options) {
+  ReportSettings& settings = options.settings;
+  if (settings.minPasses % 2 != 0 || settings.maxPasses % 2 != 0 || settings.maxPasses < settings.minPasses)
+    throw UsageError("--min-passes and --max-passes must be even, min <= max");
+  const auto start = std::chrono::steady_clock::now();
+  settings.outDir = options.output;
+  settings.binDir = options.binFolder.empty() ? programFolder() : fs::path(options.binFolder);
+  fs::create_directories(settings.outDir);
+  const StageCache cache(options.cacheFolder.empty() ? settings.outDir / "cache"
+                                                     : fs::path(options.cacheFolder));
+
+  ReportSummary summary;
+  summary.modes = settings.modes;
+  for (const std::string& scene : options.scenes) {
+    if (!fs::is_regular_file(scene)) fail(scene, "scene file does not exist");
+    for (const std::string& name : options.environments) {
+      const fs::path environment = name.find('/') != std::string::npos || fs::path(name).has_extension()
+                                       ? fs::path(name)
+                                       : fs::path(options.environmentFolder) / (name + ".exr");
+      if (!fs::is_regular_file(environment)) fail(environment, "environment map does not exist");
+      const int before = cache.misses();
+      CaseResult result = runCase(settings, cache, scene, environment);
+      std::fprintf(stderr, "iblkit-report: %s under %s: reference %d spp (relMSE %.2g, %s)%s\n",
+                   result.scene.c_str(), result.environment.c_str(), result.referenceSpp,
+                   result.referenceRelMse, result.referenceConverged ? "converged" : "not converged",
+                   cache.misses() == before ? ", cached" : "");
+      summary.cases.push_back(std::move(result));
+    }
+  }
+  summary.claims = evaluateClaims(summary.cases);
+  summary.settings = settings;
+  summary.cachedStages = cache.hits();
+  summary.runStages = cache.misses();
+  summary.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeReportJson(settings.outDir / "report.json", summary);
+  writeReportHtml(settings.outDir / "report.html", summary);
+
+  int holding = 0;
+  for (const Claim& claim : summary.claims) {
+    holding += claim.holds ? 1 : 0;
+    std::printf("%s %s: measured %.4g, bound %.4g (%s)\n",
+                claim.holds ? "holds:" : "FAILS:", claim.statement.c_str(), claim.measured, claim.bound,
+                claim.detail.c_str());
+  }
+  std::printf("iblkit-report: wrote %s (%zu cases, %d of %zu claims hold, %.1f s)\n",
+              (settings.outDir / "report.html").c_str(), summary.cases.size(), holding, summary.claims.size(),
+              summary.totalSeconds);
+  return options.strict && holding < int(summary.claims.size()) ? kExitClaimFails : kExitSuccess;
+}
+
 }  // namespace
+}  // namespace iblkit
 
 int main(int argc, char** argv) {
-  CLI::App app{"iblkit-report: scores every real-time mode against the path-traced reference"};
-  std::vector<std::string> scenes = {"assets/scenes/mirror_sphere.json", "assets/scenes/diffuse_sphere.json",
-                                     "assets/scenes/bunny.json", "assets/scenes/suzi.json"};
-  std::vector<std::string> environments = {"sky", "esplanade", "studio", "city", "forest", "sunset"};
-  std::string environmentFolder = "assets/hdri", output = "out/demo", cacheFolder, binFolder;
-  ReportSettings settings;
+  using namespace iblkit;
+  Options options;
+  ReportSettings& settings = options.settings;
   settings.modes = {"mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full"};
-  bool strict = false;
-  app.add_option("scenes", scenes, "scene files (.json, .gltf, .glb)");
-  app.add_option("--envs", environments, "environment map names (files ENV-DIR/NAME.exr) or paths")->delimiter(',');
-  app.add_option("--env-dir", environmentFolder, "folder of the environment maps");
-  app.add_option("-o,--output", output, "report folder (report.html, report.json, images/)");
-  app.add_option("--cache", cacheFolder, "stage cache folder (default: OUTPUT/cache)");
-  app.add_option("--bin", binFolder, "folder of iblkit-bake, iblkit-trace, iblkit-view (default: this program's)");
+  CLI::App app{"Scores every real-time mode against the path-traced reference", kProgram};
+  app.add_option("scenes", options.scenes, "scene files (.json, .gltf, .glb)");
+  app.add_option("--envs", options.environments, "environment map names (files ENV-DIR/NAME.exr) or paths")
+      ->delimiter(',');
+  app.add_option("--env-dir", options.environmentFolder, "folder of the environment maps");
+  app.add_option("-o,--output", options.output, "report folder (report.html, report.json, images/)");
+  app.add_option("--cache", options.cacheFolder, "stage cache folder (default: OUTPUT/cache)");
+  app.add_option("--bin", options.binFolder,
+                 "folder of iblkit-bake, iblkit-trace, iblkit-view (default: this program's)");
   app.add_option("--width", settings.width, "image width")->check(CLI::Range(8, 4096));
   app.add_option("--height", settings.height, "image height")->check(CLI::Range(8, 4096));
   app.add_option("--modes", settings.modes, "engine modes to score, in ladder order")->delimiter(',');
@@ -64,57 +128,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({1, 2, 4}));
   app.add_option("--integrator", settings.referenceIntegrator,
                  "the reference's iblkit-trace integrator: path (default) or direct (no interreflection)")
-      ->check(CLI::IsMember({"path", "direct"}));
-  app.add_flag("--strict", strict, "exit with status 2 when a claim does not hold");
-  CLI11_PARSE(app, argc, argv);
-
-  try {
-    if (settings.minPasses % 2 != 0 || settings.maxPasses % 2 != 0 || settings.maxPasses < settings.minPasses)
-      fail("iblkit-report", "--min-passes and --max-passes must be even, min <= max");
-    const auto start = std::chrono::steady_clock::now();
-    settings.outDir = output;
-    settings.binDir = binFolder.empty() ? programFolder() : fs::path(binFolder);
-    fs::create_directories(settings.outDir);
-    const StageCache cache(cacheFolder.empty() ? settings.outDir / "cache" : fs::path(cacheFolder));
-
-    ReportSummary summary;
-    summary.modes = settings.modes;
-    for (const std::string& scene : scenes) {
-      if (!fs::is_regular_file(scene)) fail(scene, "scene file does not exist");
-      for (const std::string& name : environments) {
-        const fs::path environment = name.find('/') != std::string::npos || fs::path(name).has_extension()
-                                         ? fs::path(name)
-                                         : fs::path(environmentFolder) / (name + ".exr");
-        if (!fs::is_regular_file(environment)) fail(environment, "environment map does not exist");
-        const int before = cache.misses();
-        CaseResult result = runCase(settings, cache, scene, environment);
-        std::fprintf(stderr, "iblkit-report: %s under %s: reference %d spp (relMSE %.2g, %s)%s\n",
-                     result.scene.c_str(), result.environment.c_str(), result.referenceSpp, result.referenceRelMse,
-                     result.referenceConverged ? "converged" : "not converged",
-                     cache.misses() == before ? ", cached" : "");
-        summary.cases.push_back(std::move(result));
-      }
-    }
-    summary.claims = evaluateClaims(summary.cases);
-    summary.settings = settings;
-    summary.cachedStages = cache.hits();
-    summary.runStages = cache.misses();
-    summary.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    writeReportJson(settings.outDir / "report.json", summary);
-    writeReportHtml(settings.outDir / "report.html", summary);
-
-    int holding = 0;
-    for (const Claim& claim : summary.claims) {
-      holding += claim.holds ? 1 : 0;
-      std::printf("%s %s: measured %.4g, bound %.4g (%s)\n", claim.holds ? "holds:" : "FAILS:", claim.statement.c_str(),
-                  claim.measured, claim.bound, claim.detail.c_str());
-    }
-    std::printf("iblkit-report: wrote %s (%zu cases, %d of %zu claims hold, %.1f s)\n",
-                (settings.outDir / "report.html").c_str(), summary.cases.size(), holding, summary.claims.size(),
-                summary.totalSeconds);
-    return strict && holding < int(summary.claims.size()) ? 2 : 0;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "iblkit-report: %s\n", e.what());
-    return 1;
-  }
+      ->check(nameChoice(std::vector<std::string>{"path", "direct"}, "integrator"));
+  app.add_flag("--strict", options.strict, "exit with status 3 when a claim does not hold");
+  return runProgram(app, argc, argv, [&] { return report(options); });
 }

@@ -8,14 +8,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 #include <optional>
 #include <string>
 
-#include "core/environment_map_file.h"
+#include "cli/program.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/scene.h"
+#include "core/scene_environment.h"
+#include "core/usage_error.h"
 #include "reference/environment_sampler.h"
 #include "reference/integrator.h"
 #include "reference/render_scene.h"
@@ -27,8 +28,7 @@ namespace {
 struct Options {
   std::filesystem::path scene, output, png;
   std::filesystem::path albedo, normal, depth, variance, mask, bentNormal;
-  std::filesystem::path environment;
-  float environmentRotation = 0.0f, environmentIntensity = 1.0f;
+  EnvironmentOverride environment;
   bool misCompensation = false;
   std::string integrator = "path", envSampling = "mis", filter = "box";
   int maxDepth = 16;
@@ -69,15 +69,13 @@ int run(const Options& options, const CLI::App& app) {
   requireInRange("--spp", options.samplesPerPixel, 1, kMaxSamplesPerPixel);
   if (app.count("--width")) requireInRange("--width", options.width, 1, kMaxImageSide);
   if (app.count("--height")) requireInRange("--height", options.height, 1, kMaxImageSide);
-  if (options.threads < 0) fail("--threads", "must be >= 0 (0: all cores)");
+  if (options.threads < 0) failUsage("--threads", "must be >= 0 (0: all cores)");
   if (options.maxDepth < 1)
-    fail("--max-depth", "must be at least 1, got " + std::to_string(options.maxDepth));
-  if (!(options.aoDistance > 0.0f)) fail("--ao-distance", "must be positive");
+    failUsage("--max-depth", "must be at least 1, got " + std::to_string(options.maxDepth));
+  if (!(options.aoDistance > 0.0f)) failUsage("--ao-distance", "must be positive");
   if (!(options.timeSeconds >= 0.0) || !std::isfinite(options.timeSeconds))
-    fail("--time", "must be a finite number of seconds >= 0");
-  if (!std::isfinite(options.environmentIntensity) || options.environmentIntensity < 0.0f)
-    fail("--env-intensity", "must be finite and >= 0");
-  if (!std::isfinite(options.environmentRotation)) fail("--env-rotation", "must be finite");
+    failUsage("--time", "must be a finite number of seconds >= 0");
+  checkEnvironmentOverride(options.environment);
   IntegratorSettings integratorSettings;
   integratorSettings.kind = parseIntegratorKind(options.integrator);
   integratorSettings.envSampling = parseEnvSampling(options.envSampling);
@@ -86,11 +84,11 @@ int run(const Options& options, const CLI::App& app) {
   const PixelFilterKind filter = parsePixelFilter(options.filter);
   if (options.phongExponent) {
     if (!std::isfinite(*options.phongExponent) || *options.phongExponent < 0.0f)
-      fail("--phong", "exponent must be finite and >= 0");
+      failUsage("--phong", "exponent must be finite and >= 0");
     integratorSettings.phong = PhongLobe{*options.phongExponent};
   }
   if (!options.bentNormal.empty() && integratorSettings.kind != IntegratorKind::AmbientOcclusion)
-    fail("--bent-normal", "needs --integrator ao");
+    failUsage("--bent-normal", "needs --integrator ao");
   for (const auto* file : {&options.output, &options.png, &options.albedo, &options.normal, &options.depth,
                            &options.variance, &options.mask, &options.bentNormal})
     checkOutputFolder(*file);
@@ -105,17 +103,11 @@ int run(const Options& options, const CLI::App& app) {
   settings.threads = options.threads;
   settings.filter = filter;
 
-  const std::filesystem::path environmentFile =
-      options.environment.empty() ? scene.environment.file : options.environment;
-  if (environmentFile.empty()) fail(options.scene, "the scene names no environment map (give --env FILE)");
-  EnvironmentMap environment = loadEnvironmentMap(environmentFile);
-  environment.setRotationDegrees(app.count("--env-rotation") ? options.environmentRotation
-                                                             : scene.environment.rotationDegrees);
-  environment.setIntensity(app.count("--env-intensity") ? options.environmentIntensity
-                                                        : scene.environment.intensity);
+  const EnvironmentMap environment = loadSceneEnvironment(scene, options.environment);
   const EnvironmentSampler environmentSampler(environment, options.misCompensation);
   if (environmentSampler.isBlack())
-    warn(environmentFile, "environment is black everywhere: only emission will show");
+    warn(overriddenEnvironment(scene.environment, options.environment).file,
+         "environment is black everywhere: only emission will show");
 
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
   const Camera camera = sceneCamera(scene, aspect);
@@ -150,7 +142,7 @@ int run(const Options& options, const CLI::App& app) {
 int main(int argc, char** argv) {
   using namespace iblkit;
   Options options;
-  CLI::App app{"iblkit-trace: reference path tracer (Embree), renders a scene under its environment map"};
+  CLI::App app{"Reference path tracer (Embree): renders a scene under its environment map", "iblkit-trace"};
   app.add_option("scene", options.scene, "scene (.json, .gltf or .glb)")->required();
   app.add_option("-o,--output", options.output, "beauty image, OpenEXR float RGB")->required();
   app.add_option("--png", options.png, "PNG preview (tone-mapped, sRGB)");
@@ -161,13 +153,7 @@ int main(int argc, char** argv) {
   app.add_option("--variance", options.variance, "variance of each beauty pixel's mean, OpenEXR");
   app.add_option("--mask", options.mask, "coverage of non-ground objects, OpenEXR");
   app.add_option("--bent-normal", options.bentNormal, "ao only: mean unoccluded direction, OpenEXR");
-  app.add_option("--env", options.environment, "environment map (overrides the scene's)");
-  app.add_option("--env-rotation", options.environmentRotation, "degrees about +Y (overrides the scene's)");
-  app.add_option("--env-intensity", options.environmentIntensity,
-                 "radiance multiplier (overrides the scene's)");
   app.add_flag("--mis-compensation", options.misCompensation, "MIS compensation in the environment sampler");
-  app.add_option("--integrator", options.integrator, "path, direct or ao");
-  app.add_option("--env-sampling", options.envSampling, "uniform, cosine, brdf, env or mis");
   app.add_option("--phong", options.phongExponent,
                  "every surface uses the modified Phong lobe of this exponent (sampling study)");
   app.add_option("--max-depth", options.maxDepth, "most scattering events of a path");
@@ -176,21 +162,12 @@ int main(int argc, char** argv) {
   app.add_option("--time", options.timeSeconds, "render passes of --spp until this many seconds have passed");
   app.add_option("--width", options.width, "image width (default: the scene's)");
   app.add_option("--height", options.height, "image height (default: the scene's)");
-  app.add_option("--filter", options.filter, "pixel filter: box or gaussian (sigma 0.5 px, radius 1.5 px)");
   app.add_option("--seed", options.seed, "random seed");
   app.add_option("--threads", options.threads, "worker threads (0: all)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "iblkit-trace: " << e.what() << "\n";
-    return 1;
-  }
-  try {
-    return run(options, app);
-  } catch (const std::exception& e) {
-    std::cerr << "iblkit-trace: " << e.what() << "\n";
-    return 1;
-  }
+  addEnvironmentOptions(app, options.environment);
+  addNameOption(app, "--integrator", options.integrator, kIntegratorNames, "integrator");
+  addNameOption(app, "--env-sampling", options.envSampling, kEnvSamplingNames, "strategy");
+  // gaussian: sigma 0.5 px, radius 1.5 px (reference/pixel_filter.h).
+  addNameOption(app, "--filter", options.filter, kPixelFilterNames, "filter");
+  return runProgram(app, argc, argv, [&] { return run(options, app); });
 }

@@ -18,17 +18,22 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "baker/bake_in_memory.h"
 #include "baker/environment_stages.h"
+#include "cli/program.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/scene_environment.h"
+#include "core/usage_error.h"
 #include "engine/gl/gl_debug.h"
 #include "engine/gl/headless_context.h"
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
+#include "engine/view/reference_comparison.h"
 #include "engine/view/viewer.h"
 
 namespace iblkit {
@@ -44,7 +49,7 @@ struct Options {
   int width = 0, height = 0;  // 0: the scene's size
   std::string mode = "full";  // or "all" with --bench
   float exposure = 0.0f;
-  float envRotation = 0.0f;
+  std::optional<float> envRotation;  // absolute; unset: the bake's
   int samples = 1;
   bool sampleShading = false;
   int supersample = 1;
@@ -136,20 +141,20 @@ void writeLayer(Renderer& renderer, RenderTarget& target, const Camera& camera, 
 
 int runHeadless(const Options& options) {
   if (options.output.empty() && options.bench == 0)
-    throw Error("-o: an output image is required with --headless");
+    failUsage("-o", "an output image is required with --headless");
   if (!options.output.empty()) requireExtension(options.output, {".exr", ".png"});
   for (const fs::path& layer : {options.normalOutput, options.depthOutput})
     if (!layer.empty()) requireExtension(layer, {".exr"});
   const bool allModes = options.mode == "all";
-  if (allModes && options.bench == 0) fail("--mode", "'all' is only for --bench");
+  if (allModes && options.bench == 0) failUsage("--mode", "'all' is only for --bench");
   FrameSettings settings;
   if (!allModes) settings.mode = parseShadingMode(options.mode);
   settings.exposure = options.exposure;
-  settings.envRotationDegrees = options.envRotation;
   settings.drawSky = !options.noSky;
   settings.sampleShading = options.sampleShading;
 
   const BakedScene bake = loadOrBakeScene(options.input, {.aoRays = options.aoRays});
+  settings.envRotationDegrees = envRotationFromBake(bake.env, options.envRotation);
   const int width = options.width > 0 ? options.width : bake.scene.width;
   const int height = options.height > 0 ? options.height : bake.scene.height;
 
@@ -201,10 +206,12 @@ fs::path defaultEnvironmentFolder() {
 }
 
 int runWindow(const Options& options) {
-  if (!options.output.empty()) throw Error("-o: only with --headless (the window saves screenshots: --screenshot)");
-  if (options.bench > 0) throw Error("--bench: only with --headless (the window prints its frame time with --frames)");
+  if (!options.output.empty())
+    failUsage("-o", "only with --headless (the window saves screenshots: --screenshot)");
+  if (options.bench > 0)
+    failUsage("--bench", "only with --headless (the window prints its frame time with --frames)");
   if (!options.normalOutput.empty() || !options.depthOutput.empty())
-    throw Error("--normal/--depth: only with --headless");
+    failUsage("--normal/--depth", "only with --headless");
   ViewerOptions viewer;
   viewer.input = options.input;
   viewer.width = options.width;
@@ -234,15 +241,18 @@ void rejectWindowFlagsWhenHeadless(const Options& options) {
   if (!options.headless) return;
   if (options.frames > 0 || !options.screenshot.empty() || !options.environment.empty() || !options.reference.empty() || !options.envDir.empty() ||
       options.noPanel)
-    throw Error("--frames, --screenshot, --env, --env-dir, --reference and --no-panel are for the window, not --headless");
+    throw UsageError(
+        "--frames, --screenshot, --env, --env-dir, --reference and --no-panel are for the window, not "
+        "--headless");
 }
 
 }  // namespace
 }  // namespace iblkit
 
 int main(int argc, char** argv) {
-  iblkit::Options options;
-  CLI::App app{"Renders a baked scene in real time (OpenGL 4.5), in a window or headless."};
+  using namespace iblkit;
+  Options options;
+  CLI::App app{"Renders a baked scene in real time (OpenGL 4.5), in a window or headless.", kProgram};
   app.add_option("input", options.input, "iblkit-bake output folder, or a .json/.gltf/.glb scene")
       ->required();
   app.add_flag("--headless", options.headless, "render offscreen through EGL and write -o");
@@ -256,8 +266,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--exposure", options.exposure, "exposure in stops (PNG and display)")
       ->capture_default_str();
-  app.add_option("--env-rotation", options.envRotation, "extra environment rotation about +Y, degrees")
-      ->capture_default_str();
+  app.add_option("--env-rotation", options.envRotation, "rotation about +Y, degrees (replaces the bake's)");
   app.add_flag("--sample-shading", options.sampleShading,
                "shade every MSAA sample (supersampling: the pixel's shading is averaged, as the reference does)");
   app.add_option("--supersample", options.supersample,
@@ -280,20 +289,18 @@ int main(int argc, char** argv) {
                  "window: switch to this environment map at start (prefiltered while the bake's shows)");
   app.add_option("--reference", options.reference,
                  "window: path-traced reference (.exr) shown beside the live frame, or as a difference");
-  app.add_option("--compare", options.compare, "window: the reference view to start with: live, split, difference")
-      ->capture_default_str();
+  addNameOption(app, "--compare", options.compare, kComparisonViewNames, "view",
+                "window: the reference view to start with");
   app.add_option("--frames", options.frames, "window: quit after N frames and print the median frame time")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--screenshot", options.screenshot,
                  "window: at exit, write the last frame as FILE.exr (radiance) and FILE.png (the view)");
   app.add_flag("--no-panel", options.noPanel, "window: start with the panel hidden (Tab shows it)");
-  CLI11_PARSE(app, argc, argv);
-
-  try {
-    iblkit::rejectWindowFlagsWhenHeadless(options);
-    return options.headless ? iblkit::runHeadless(options) : iblkit::runWindow(options);
-  } catch (const std::exception& e) {
-    std::cerr << iblkit::kProgram << ": " << e.what() << '\n';
-    return 1;
-  }
+  return runProgram(app, argc, argv, [&] {
+    rejectWindowFlagsWhenHeadless(options);
+    EnvironmentOverride rotation;
+    rotation.rotationDegrees = options.envRotation;
+    checkEnvironmentOverride(rotation);
+    return options.headless ? runHeadless(options) : runWindow(options);
+  });
 }

@@ -40,19 +40,11 @@ void recordFirstHit(const SurfacePoint& point, float distance, CameraSample& res
 }  // namespace
 
 IntegratorKind parseIntegratorKind(const std::string& name) {
-  if (name == "path") return IntegratorKind::Path;
-  if (name == "direct") return IntegratorKind::Direct;
-  if (name == "ao") return IntegratorKind::AmbientOcclusion;
-  fail("--integrator", "unknown integrator '" + name + "' (path, direct or ao)");
+  return parseEnumName(kIntegratorNames, name, "--integrator", "integrator");
 }
 
 EnvSampling parseEnvSampling(const std::string& name) {
-  if (name == "uniform") return EnvSampling::Uniform;
-  if (name == "cosine") return EnvSampling::Cosine;
-  if (name == "brdf") return EnvSampling::Brdf;
-  if (name == "env") return EnvSampling::Env;
-  if (name == "mis") return EnvSampling::Mis;
-  fail("--env-sampling", "unknown strategy '" + name + "' (uniform, cosine, brdf, env or mis)");
+  return parseEnumName(kEnvSamplingNames, name, "--env-sampling", "strategy");
 }
 
 Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environment,

@@ -25,6 +25,7 @@
 #include <string>
 
 #include "core/brdf.h"
+#include "core/enum_names.h"
 #include "core/environment_map.h"
 #include "core/ray.h"
 #include "reference/environment_sampler.h"
@@ -37,8 +38,17 @@ namespace iblkit {
 enum class IntegratorKind { Path, Direct, AmbientOcclusion };
 enum class EnvSampling { Uniform, Cosine, Brdf, Env, Mis };
 
-// Parse "path" | "direct" | "ao" and "uniform" | "cosine" | "brdf" | "env" | "mis"; anything else
-// throws Error("--integrator: unknown integrator 'x' (path, direct or ao)") and the like.
+inline constexpr EnumName<IntegratorKind> kIntegratorNames[] = {{IntegratorKind::Path, "path"},
+                                                                {IntegratorKind::Direct, "direct"},
+                                                                {IntegratorKind::AmbientOcclusion, "ao"}};
+inline constexpr EnumName<EnvSampling> kEnvSamplingNames[] = {{EnvSampling::Uniform, "uniform"},
+                                                              {EnvSampling::Cosine, "cosine"},
+                                                              {EnvSampling::Brdf, "brdf"},
+                                                              {EnvSampling::Env, "env"},
+                                                              {EnvSampling::Mis, "mis"}};
+
+// Parse a name of the tables above; anything else throws Error("--integrator: unknown integrator
+// 'x' (expected one of path, direct, ao)") and the like.
 IntegratorKind parseIntegratorKind(const std::string& name);
 EnvSampling parseEnvSampling(const std::string& name);
 

@@ -35,9 +35,7 @@ std::vector<float> boxTable() { return {1.0f}; }
 }  // namespace
 
 PixelFilterKind parsePixelFilter(const std::string& name) {
-  if (name == "box") return PixelFilterKind::Box;
-  if (name == "gaussian") return PixelFilterKind::Gaussian;
-  fail("--filter", "unknown filter '" + name + "' (box or gaussian)");
+  return parseEnumName(kPixelFilterNames, name, "--filter", "filter");
 }
 
 PixelFilter::PixelFilter(PixelFilterKind kind)

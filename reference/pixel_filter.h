@@ -15,12 +15,17 @@
 #include <string>
 
 #include "core/distribution.h"
+#include "core/enum_names.h"
 
 namespace iblkit {
 
 enum class PixelFilterKind { Box, Gaussian };
 
-// "box" | "gaussian"; anything else throws Error("--filter: unknown filter 'x' (box or gaussian)").
+inline constexpr EnumName<PixelFilterKind> kPixelFilterNames[] = {{PixelFilterKind::Box, "box"},
+                                                                  {PixelFilterKind::Gaussian, "gaussian"}};
+
+// A name of the table above; anything else throws Error("--filter: unknown filter 'x' (expected
+// one of box, gaussian)").
 PixelFilterKind parsePixelFilter(const std::string& name);
 
 class PixelFilter {

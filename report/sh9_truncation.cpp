@@ -9,11 +9,11 @@
 
 #include "bakefile/bake_layout.h"
 #include "bakefile/sh9_json.h"
-#include "core/environment_map_file.h"
 #include "core/environment_sh.h"
 #include "core/error.h"
 #include "core/latlong.h"
 #include "core/scene.h"
+#include "core/scene_environment.h"
 
 namespace iblkit {
 
@@ -107,10 +107,7 @@ Sh9Truncation caseSh9Truncation(const std::filesystem::path& sceneFile,
                                 const std::filesystem::path& environmentFile,
                                 const std::filesystem::path& bake, const Image& normals,
                                 std::span<const std::uint8_t> mask) {
-  const Scene scene = loadScene(sceneFile);
-  EnvironmentMap environment = loadEnvironmentMap(environmentFile);
-  environment.setRotationDegrees(scene.environment.rotationDegrees);
-  environment.setIntensity(scene.environment.intensity);
+  const EnvironmentMap environment = loadSceneEnvironment(loadScene(sceneFile), environmentFile);
   return sh9Truncation(environment, readSh9Json(bake / kBakeSh9File), normals, mask);
 }
 

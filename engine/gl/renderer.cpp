@@ -25,6 +25,10 @@ glm::vec2 inverseRotation(float degrees) {
 
 }  // namespace
 
+float envRotationFromBake(const EnvironmentStages& env, std::optional<float> degrees) {
+  return degrees ? *degrees - env.rotationDegrees : 0.0f;
+}
+
 struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;

@@ -5,6 +5,7 @@
 #include <epoxy/gl.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "bakefile/bake_folder.h"
@@ -21,7 +22,8 @@ struct FrameSettings {
   float exposure = 0.0f;                    // stops; presentToneMapped only (render writes linear radiance)
   ToneCurve curve = ToneCurve::AcesFitted;  // presentToneMapped only
   // Extra environment rotation about +Y (degrees, environment_map.h's sense), on top of the
-  // scene's, applied to every lookup (sky, mirror, SH9, PRT, specular cube).
+  // bake's, applied to every lookup (sky, mirror, SH9, PRT, specular cube): the stages are baked
+  // at one rotation and turned here rather than baked again. envRotationFromBake gives it.
   float envRotationDegrees = 0.0f;
   bool drawSky = true;  // false: the background is black with alpha 0
   FrameLayer layer = FrameLayer::Radiance;
@@ -29,6 +31,11 @@ struct FrameSettings {
   // over the pixel like the reference's pixel filter does, not only the edges. N times the cost.
   bool sampleShading = false;
 };
+
+// The envRotationDegrees that shows the environment at the absolute rotation `degrees` about +Y
+// (--env-rotation, docs/conventions.md): the turn from the rotation `env` was baked at; 0 when
+// `degrees` is unset (the bake's own rotation).
+float envRotationFromBake(const EnvironmentStages& env, std::optional<float> degrees);
 
 class Renderer {
  public:

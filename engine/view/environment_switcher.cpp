@@ -5,7 +5,7 @@
 #include <chrono>
 #include <utility>
 
-#include "core/environment_map_file.h"
+#include "core/scene_environment.h"
 
 namespace iblkit {
 
@@ -43,10 +43,7 @@ void EnvironmentSwitcher::start(int index) {
   status_ = "prefiltering " + files_[std::size_t(index)].filename().string() + " ...";
   worker_ = std::async(std::launch::async, [file = files_[std::size_t(index)], rotation = rotationDegrees_,
                                             intensity = intensity_, prepare = prepare_] {
-    EnvironmentMap map = loadEnvironmentMap(file);
-    map.setRotationDegrees(rotation);
-    map.setIntensity(intensity);
-    return prepare(map);
+    return prepare(loadEnvironment({.file = file, .rotationDegrees = rotation, .intensity = intensity}));
   });
 }
 

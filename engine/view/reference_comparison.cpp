@@ -9,21 +9,12 @@
 namespace iblkit {
 
 const char* comparisonViewName(ComparisonView view) {
-  switch (view) {
-    case ComparisonView::Live:
-      return "live";
-    case ComparisonView::Split:
-      return "split";
-    case ComparisonView::Difference:
-      return "difference";
-  }
-  return "?";
+  // The table's names are literals, so their data is null-terminated.
+  return enumNameOf(kComparisonViewNames, view).data();
 }
 
 ComparisonView parseComparisonView(const std::string& name) {
-  for (ComparisonView view : {ComparisonView::Live, ComparisonView::Split, ComparisonView::Difference})
-    if (name == comparisonViewName(view)) return view;
-  throw Error("--compare: unknown view '" + name + "' (expected live, split or difference)");
+  return parseEnumName(kComparisonViewNames, name, "--compare", "view");
 }
 
 namespace {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/enum_names.h"
 #include "core/image.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/renderer.h"
@@ -16,8 +17,13 @@
 namespace iblkit {
 
 enum class ComparisonView { Live, Split, Difference };
+inline constexpr EnumName<ComparisonView> kComparisonViewNames[] = {
+    {ComparisonView::Live, "live"},
+    {ComparisonView::Split, "split"},
+    {ComparisonView::Difference, "difference"}};
 const char* comparisonViewName(ComparisonView view);
-// "live", "split" or "difference"; throws Error("--compare: ...") otherwise.
+// A name of the table above; throws Error("--compare: unknown view 'x' (expected one of ...)")
+// otherwise.
 ComparisonView parseComparisonView(const std::string& name);
 
 class ReferenceComparison {

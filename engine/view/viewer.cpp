@@ -59,7 +59,7 @@ class Viewer {
       : options_(options), bake_(options.loadScene(options.input)) {
     settings_.mode = parseShadingMode(options.mode);
     settings_.exposure = options.exposure;
-    settings_.envRotationDegrees = options.envRotation;
+    settings_.envRotationDegrees = envRotationFromBake(bake_.env, options.envRotation);
     settings_.drawSky = !options.noSky;
     // The reference decides the size (same camera, same pixels) unless --width/--height do.
     int width = bake_.scene.width, height = bake_.scene.height;

@@ -4,6 +4,7 @@
 // and the comparison with a path-traced reference.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "bakefile/bake_folder.h"
@@ -22,7 +23,7 @@ struct ViewerOptions {
   int width = 0, height = 0;    // window size; 0: the reference's, else the scene's
   std::string mode = "full";
   float exposure = 0.0f;
-  float envRotation = 0.0f;
+  std::optional<float> envRotation;  // absolute about +Y (docs/conventions.md); unset: the bake's
   int samples = 1;  // MSAA
   bool noSky = false;
   std::filesystem::path envDir = "assets/hdri";

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <glm/gtc/constants.hpp>
 #include <nlohmann/json.hpp>
 
 #include "baker/visibility_attributes.h"
@@ -12,6 +14,7 @@
 #include "core/procedural_mesh.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
+#include "support/usage_error_check.h"
 
 namespace iblkit {
 namespace {
@@ -197,10 +200,51 @@ TEST(IblkitBake, BadShWindowIsRefusedWithoutOutput) {
   int status = 0;
   const std::string log =
       bake(scene.string() + " --env " + env.string() + " -o " + out.string() + " --sh-window wide", &status);
-  EXPECT_EQ(status, 1);
+  EXPECT_EQ(status, 2);  // a usage error (cli/program.h)
   EXPECT_EQ(log, "iblkit-bake: --sh-window: expected auto, none or a positive number of bands, got 'wide'\n");
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(leftovers(root), 0);
+}
+
+// --env-rotation and --env-intensity replace the scene's (docs/conventions.md), in the stages and
+// in bake.json, whose rotation the engine reads.
+TEST(IblkitBake, EnvironmentOverridesReplaceTheScenesAndAreRecorded) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = root / "rotated.json", out = root / "out", env = root / "sky.exr";
+  writeBallScene(root);
+  std::ofstream(scene) << R"({"models": [{"file": "models/ball.glb"}], "ground": {},
+    "environment": {"file": "sky.exr", "rotation": 30, "intensity": 2}})";
+  writeExr(env, Image(16, 8, glm::vec4(1.0f)), {});
+  int status = 0;
+  std::string log = bake(
+      scene.string() + " -o " + out.string() + " --ao-rays 4 --specular-samples 16 --lut-size 8", &status);
+  ASSERT_EQ(status, 0) << log;
+  nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+  EXPECT_EQ(report["parameters"]["environment_rotation_degrees"], 30.0);
+  EXPECT_EQ(report["parameters"]["environment_intensity"], 2.0);
+  log = bake(scene.string() + " -o " + out.string() +
+                 " --ao-rays 4 --specular-samples 16 --lut-size 8 --env-rotation 90 --env-intensity 0.5",
+             &status);
+  ASSERT_EQ(status, 0) << log;
+  report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+  EXPECT_EQ(report["parameters"]["environment_rotation_degrees"], 90.0);
+  EXPECT_EQ(report["parameters"]["environment_intensity"], 0.5);
+  // A uniform map of radiance 1 at intensity 0.5 (not the scene's 2): SH9's DC term is
+  // 0.5 * Y00 * 4 pi = 0.5 * 2 sqrt(pi).
+  const nlohmann::json sh = nlohmann::json::parse(std::ifstream(out / "env" / "sh9.json"));
+  EXPECT_NEAR(sh["L"][0][0].get<float>(), std::sqrt(glm::pi<float>()), 0.01f * std::sqrt(glm::pi<float>()));
+
+  log = bake(scene.string() + " -o " + out.string() + " --env-intensity -1", &status);
+  EXPECT_EQ(status, 2);
+  EXPECT_EQ(log, "iblkit-bake: --env-intensity: must be finite and >= 0\n");
+}
+
+// Every program's command-line errors: one line naming the program, status 2 (cli/program.h).
+TEST(IblkitBake, ABadOptionIsOneLineAndStatusTwo) {
+  test::expectUsageError(
+      (test::binDir() / "iblkit-bake").string() + " scene.json -o out --env-format cubecross",
+      "iblkit-bake: --env-format: unknown environment format 'cubecross' (expected one of "
+      "latlong, mirrorball, angular)");
 }
 
 TEST(IblkitBake, VisibilityOptionsAreRecorded) {

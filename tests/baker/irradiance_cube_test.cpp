@@ -7,6 +7,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "bakefile/irradiance_exr.h"
 #include "core/environment_sh.h"
 #include "core/image_io.h"
 #include "core/latlong.h"

@@ -10,8 +10,8 @@
 #include <climits>
 #include <cmath>
 
-#include "core/environment_map_file.h"
 #include "core/image_io.h"
+#include "core/scene_environment.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
 
@@ -24,9 +24,10 @@ bool assetsFetched() { return fs::exists(test::assetsDir() / "hdri" / "sky.exr")
 
 Scene bunny() { return loadScene(test::assetsDir() / "scenes" / "bunny.json"); }
 
+// The map as the study program lights the bunny with it.
 EnvironmentMap map(const std::string& name) {
   test::WarningCapture quiet;  // sky.exr has a few negative texels, repaired with a warning
-  return loadEnvironmentMap(test::assetsDir() / "hdri" / (name + ".exr"));
+  return loadSceneEnvironment(bunny(), test::assetsDir() / "hdri" / (name + ".exr"));
 }
 
 // 32 x 18 pixels, 1 to 64 spp against 1024 spp: about a second per map in a Release build.

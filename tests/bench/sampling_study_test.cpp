@@ -117,35 +117,45 @@ TEST_F(SamplingStudyProgram, WritesTheTableThePlotAndOnlyItsSectionOfTheUpdatedF
 TEST_F(SamplingStudyProgram, BadInputFailsWithOneLineBeforeAnythingIsWritten) {
   const std::string missingMap = "sampling_study: " + (test::assetsDir() / "hdri" / "nope.exr").string() +
                                  ": cannot open: No such file or directory";
-  const std::vector<std::pair<std::map<std::string, std::string>, std::string>> cases = {
-      {{{"--maps", "nope"}}, missingMap},
+  struct Case {
+    std::map<std::string, std::string> changed;
+    int status;  // 2: the command line, 1: a file (cli/program.h)
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{{"--maps", "nope"}}, 1, missingMap},
       // The good map first: nothing of it may be rendered or cached before the bad one fails.
-      {{{"--maps", "sky,nope"}}, missingMap},
-      {{{"--maps", ""}}, "sampling_study: --maps: '' is not NAME[:LABEL] with NAME a map in ASSETS/hdri"},
+      {{{"--maps", "sky,nope"}}, 1, missingMap},
+      {{{"--maps", ""}}, 2, "sampling_study: --maps: '' is not NAME[:LABEL] with NAME a map in ASSETS/hdri"},
       {{{"--maps", "sky,:label"}},
+       2,
        "sampling_study: --maps: ':label' is not NAME[:LABEL] with NAME a map in ASSETS/hdri"},
-      {{{"--update", "missing.md"}}, "sampling_study: missing.md: cannot open: No such file or directory"},
+      {{{"--update", "missing.md"}}, 1, "sampling_study: missing.md: cannot open: No such file or directory"},
       {{{"--update", "plain.md"}},
+       1,
        "sampling_study: plain.md: has no <!-- study:begin --> ... <!-- study:end --> section"},
       {{{"--name", "other2"}},
+       1,
        "sampling_study: notes.md: has no <!-- other2:begin --> ... <!-- other2:end --> section"},
-      {{{"--name", "a/b"}}, "sampling_study: --name: 'a/b' is not a file name"},
-      {{{"--out-dir", "missing"}}, "sampling_study: missing: folder does not exist"},
-      {{{"--scene", "missing.json"}}, "sampling_study: missing.json: cannot read file"},
-      {{{"--width", "0"}}, "sampling_study: --width: must be in 1..16384, not 0"},
-      {{{"--height", "20000"}}, "sampling_study: --height: must be in 1..16384, not 20000"},
-      {{{"--max-spp", "99999999"}}, "sampling_study: --max-spp: must be in 1..16777216, not 99999999"},
-      {{{"--reference-spp", "-1"}}, "sampling_study: --reference-spp: must be in 1..16777216, not -1"},
-      {{{"--threads", "-2"}}, "sampling_study: --threads: must be >= 0, not -2"},
-      {{{"--phong", "-1"}}, "sampling_study: --phong: exponent must be finite and >= 0"},
-      {{{"--width", "abc"}}, "sampling_study: Could not convert: --width = abc"},
-      {{{"--max-spp", "4x"}}, "sampling_study: Could not convert: --max-spp = 4x"},
-      {{{"--frobnicate", "1"}}, "sampling_study: The following arguments were not expected: 1 --frobnicate"},
+      {{{"--name", "a/b"}}, 2, "sampling_study: --name: 'a/b' is not a file name"},
+      {{{"--out-dir", "missing"}}, 1, "sampling_study: missing: folder does not exist"},
+      {{{"--scene", "missing.json"}}, 1, "sampling_study: missing.json: cannot read file"},
+      {{{"--width", "0"}}, 2, "sampling_study: --width: must be in 1..16384, not 0"},
+      {{{"--height", "20000"}}, 2, "sampling_study: --height: must be in 1..16384, not 20000"},
+      {{{"--max-spp", "99999999"}}, 2, "sampling_study: --max-spp: must be in 1..16777216, not 99999999"},
+      {{{"--reference-spp", "-1"}}, 2, "sampling_study: --reference-spp: must be in 1..16777216, not -1"},
+      {{{"--threads", "-2"}}, 2, "sampling_study: --threads: must be >= 0, not -2"},
+      {{{"--phong", "-1"}}, 2, "sampling_study: --phong: exponent must be finite and >= 0"},
+      {{{"--width", "abc"}}, 2, "sampling_study: Could not convert: --width = abc"},
+      {{{"--max-spp", "4x"}}, 2, "sampling_study: Could not convert: --max-spp = 4x"},
+      {{{"--frobnicate", "1"}},
+       2,
+       "sampling_study: The following arguments were not expected: 1 --frobnicate"},
   };
-  for (const auto& [changed, expected] : cases) {
+  for (const auto& [changed, status, expected] : cases) {
     const std::string what = changed.begin()->first + " " + changed.begin()->second;
     std::string output;
-    EXPECT_EQ(study(changed, &output), 1) << what << ": " << output;
+    EXPECT_EQ(study(changed, &output), status) << what << ": " << output;
     const std::vector<std::string> printed = test::splitLines(output);
     ASSERT_FALSE(printed.empty()) << what;
     EXPECT_EQ(printed.back(), expected) << what << ": " << output;

@@ -65,8 +65,9 @@ TEST(EnvironmentMapFile, BadInputNamesTheFile) {
             file.string() + ": lat-long map is 30x10, expected a 2:1 aspect ratio");
   EXPECT_EQ(test::errorMessage([&] { loadEnvironmentMap(file, ProbeFormat::Angular); }),
             file.string() + ": angular map is 30x10, expected a square image");
-  EXPECT_EQ(test::errorMessage([] { parseProbeFormat("cubecross"); }),
-            "unknown environment format 'cubecross' (expected latlong, mirrorball or angular)");
+  EXPECT_EQ(
+      test::errorMessage([] { parseProbeFormat("cubecross"); }),
+      "--env-format: unknown environment format 'cubecross' (expected one of latlong, mirrorball, angular)");
 }
 
 }  // namespace

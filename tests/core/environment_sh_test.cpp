@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "bakefile/sh9_json.h"
 #include "core/environment_sh.h"
 #include "core/environment_map_file.h"
 #include "core/latlong.h"

@@ -11,6 +11,7 @@
 #include "core/image_io.h"
 #include "support/bake_fixture.h"
 #include "support/test_paths.h"
+#include "support/usage_error_check.h"
 
 namespace iblkit {
 namespace {
@@ -131,7 +132,7 @@ TEST(IblkitView, SupersamplingAndSampleShadingAverageTheShadingOverThePixel) {
   EXPECT_NEAR(b / a, 1.0, 0.05);
   const ProgramRun refused = run("iblkit-view", quoted(fixture.bake) + " --headless -o " +
                                                     quoted(dir / "x.exr") + " --supersample 3");
-  EXPECT_NE(refused.status, 0);
+  EXPECT_EQ(refused.status, 2);  // a usage error (cli/program.h)
   EXPECT_FALSE(fs::exists(dir / "x.exr"));
 }
 
@@ -242,10 +243,12 @@ TEST(IblkitView, EglPlatformCanBeForced) {
       << output;
 }
 
-void expectFailure(const std::string& arguments, const std::string& message, const fs::path& out) {
+// Status 1 for bad input files, 2 for the command line (cli/program.h).
+void expectFailure(const std::string& arguments, const std::string& message, const fs::path& out,
+                   int status = 1) {
   fs::remove(out);
   const ProgramRun r = run("iblkit-view", arguments);
-  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_EQ(r.status, status) << r.output;
   EXPECT_NE(r.output.find(message + "\n"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
 }
@@ -287,7 +290,52 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
                 "sh-ao, sh-ao-bent, prt, full)",
                 out);
   expectFailure(quoted(fixture.bake) + " -o " + quoted(out),
-                "iblkit-view: -o: only with --headless (the window saves screenshots: --screenshot)", out);
+                "iblkit-view: -o: only with --headless (the window saves screenshots: --screenshot)", out, 2);
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --no-such-option",
+                "iblkit-view: The following argument was not expected: --no-such-option", out, 2);
+}
+
+// Every program's command-line errors: exactly one stderr line, status 2 (cli/program.h).
+TEST(IblkitView, ABadOptionIsOneLineAndStatusTwo) {
+  test::expectUsageError(quoted(test::binDir() / "iblkit-view") + " bake --headless -o x.exr --frobnicate",
+                         "iblkit-view: The following argument was not expected: --frobnicate");
+}
+
+// --env-rotation is absolute (docs/conventions.md): a bake at 30 degrees shown at 90 is the frame
+// of a bake at 90 shown as baked, up to the prefiltered cube's texels turned by 60 degrees.
+TEST(IblkitView, EnvRotationIsAbsoluteNotAddedToTheBakes) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  const auto bakeAt = [&](const std::string& degrees) {
+    const fs::path folder = dir / ("bake" + degrees);
+    const ProgramRun r = run("iblkit-bake", quoted(fixture.scene) + " --env " + quoted(fixture.environment) +
+                                                " --env-rotation " + degrees + " -o " + quoted(folder) +
+                                                " --ao-rays 16 --specular-samples 32 --lut-size 16");
+    EXPECT_EQ(r.status, 0) << r.output;
+    return folder;
+  };
+  const auto frame = [&](const fs::path& bake, const std::string& options) {
+    const fs::path out = dir / "frame.exr";
+    fs::remove(out);
+    const ProgramRun r = run("iblkit-view", quoted(bake) + " --headless -o " + quoted(out) + kSize + options);
+    EXPECT_EQ(r.status, 0) << r.output;
+    return readExr(out);
+  };
+  const fs::path at30 = bakeAt("30"), at90 = bakeAt("90");
+  const Image turned = frame(at30, " --env-rotation 90"), baked = frame(at90, "");
+  const Image unturned = frame(at30, "");
+  const auto meanDifference = [](const Image& a, const Image& b) {
+    double sum = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+      const glm::vec4 d = glm::abs(a.pixels()[i] - b.pixels()[i]);
+      sum += d.r + d.g + d.b;
+      total += b.pixels()[i].r + b.pixels()[i].g + b.pixels()[i].b;
+    }
+    return sum / total;
+  };
+  EXPECT_LT(meanDifference(turned, baked), 0.01);
+  // The rotation shows: without the flag the bake at 30 is another frame.
+  EXPECT_GT(meanDifference(unturned, baked), 10.0 * meanDifference(turned, baked));
 }
 
 }  // namespace

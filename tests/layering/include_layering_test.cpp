@@ -34,8 +34,12 @@ const std::vector<test::Layer> kLayers = {
     {"reference", {"core", "raytrace"}, kGl},
     {"score", {"core"}, both(kGl, kEmbree)},
     {"report", {"core", "bakefile", "score"}, both(kGl, kEmbree)},
-    {"programs", {"core", "raytrace", "bakefile", "baker", "engine/gl", "engine/view", "reference", "score", "report"}, {}},
-    {"bench", {"core", "raytrace", "bakefile", "baker", "reference", "score"}, kGl},
+    {"cli", {"core"}, both(kGl, kEmbree)},
+    {"programs",
+     {"core", "raytrace", "bakefile", "baker", "engine/gl", "engine/view", "reference", "score", "report",
+      "cli"},
+     {}},
+    {"bench", {"core", "raytrace", "bakefile", "baker", "reference", "score", "cli"}, kGl},
 };
 
 TEST(IncludeLayering, TheTreeHasNoWrongWayInclude) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/test_paths.h"
+#include "support/usage_error_check.h"
 
 namespace iblkit {
 namespace {
@@ -128,7 +129,21 @@ TEST(IblkitInfo, PngPreviewNeedsOneImage) {
   int status = 0;
   const std::string output = info("--png /tmp/x.png a.exr b.exr", &status);
   EXPECT_EQ(status, 2);
-  EXPECT_EQ(output, "iblkit-info: --png needs exactly one image file\n");
+  EXPECT_EQ(output, "iblkit-info: --png: needs exactly one image file\n");
+}
+
+// Every program's command-line errors: one line naming the program, status 2 (cli/program.h).
+TEST(IblkitInfo, ABadOptionIsOneLineAndStatusTwo) {
+  test::expectUsageError((test::binDir() / "iblkit-info").string() + " --json",
+                         "iblkit-info: files is required");
+}
+
+TEST(IblkitInfo, HelpExitsZero) {
+  int status = 0;
+  const std::string output = info("--help", &status);
+  EXPECT_EQ(status, 0);
+  EXPECT_NE(output.find("Usage: iblkit-info"), std::string::npos) << output;
+  EXPECT_NE(output.find("Exit status: 0 success, 1 failure at run time"), std::string::npos) << output;
 }
 
 }  // namespace

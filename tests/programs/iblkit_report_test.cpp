@@ -11,6 +11,7 @@
 #include <string>
 
 #include "support/test_paths.h"
+#include "support/usage_error_check.h"
 
 namespace iblkit {
 namespace {
@@ -49,8 +50,8 @@ TEST(IblkitReport, LoneSpheresScoreEveryModeHoldTheirClaimsAndRerunFromTheCache)
       smallReport(out, quoted(scenes / "mirror_sphere.json") + " " + quoted(scenes / "diffuse_sphere.json"),
                   "sky,studio");
   std::string output;
-  // --strict exits 2: under the studio map SH9 itself is far more than 3% off (see below).
-  ASSERT_EQ(report(arguments + " --strict", &output), 2) << output;
+  // --strict exits 3: under the studio map SH9 itself is far more than 3% off (see below).
+  ASSERT_EQ(report(arguments + " --strict", &output), 3) << output;
   ASSERT_TRUE(fs::is_regular_file(out / "report.html"));
   const json document = readJson(out / "report.json");
   ASSERT_EQ(document["cases"].size(), 4u);
@@ -142,6 +143,20 @@ TEST(IblkitReport, AMissingSceneIsOneLineAndNoReport) {
   EXPECT_EQ(report(smallReport(out, quoted(test::scratchDir() / "absent.json"), "sky"), &output), 1);
   EXPECT_NE(output.find("absent.json: scene file does not exist"), std::string::npos) << output;
   EXPECT_EQ(output.find('\n'), output.size() - 1) << output;
+  EXPECT_FALSE(fs::exists(out / "report.json"));
+}
+
+// Every program's command-line errors: one line naming the program, status 2 (cli/program.h).
+TEST(IblkitReport, ABadOptionIsOneLineAndStatusTwo) {
+  const fs::path out = test::scratchDir() / "report";
+  const std::string program = (test::binDir() / "iblkit-report").string() + " -o " + quoted(out);
+  test::expectUsageError(program + " --no-such-option",
+                         "iblkit-report: The following argument was not expected: --no-such-option");
+  test::expectUsageError(
+      program + " --integrator ao",
+      "iblkit-report: --integrator: unknown integrator 'ao' (expected one of path, direct)");
+  test::expectUsageError(program + " --min-passes 3 --max-passes 8",
+                         "iblkit-report: --min-passes and --max-passes must be even, min <= max");
   EXPECT_FALSE(fs::exists(out / "report.json"));
 }
 

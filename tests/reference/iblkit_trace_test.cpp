@@ -102,27 +102,39 @@ TEST_F(IblkitTrace, GaussianFilterSoftensEdges) {
 }
 
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
-  const std::pair<std::string, std::string> cases[] = {
-      {"scene.json -o out.exr --spp 0", "iblkit-trace: --spp: must be in 1..16777216, not 0\n"},
-      {"scene.json -o out.exr --spp 16777217", "iblkit-trace: --spp: must be in 1..16777216, not 16777217\n"},
-      {"scene.json -o out.exr --width 20000", "iblkit-trace: --width: must be in 1..16384, not 20000\n"},
-      {"scene.json -o out.exr --height -4", "iblkit-trace: --height: must be in 1..16384, not -4\n"},
-      {"scene.json -o out.exr --threads -1", "iblkit-trace: --threads: must be >= 0 (0: all cores)\n"},
-      // Checked before anything is read: the range error, not the missing scene.
-      {"missing.json -o out.exr --spp 0", "iblkit-trace: --spp: must be in 1..16777216, not 0\n"},
-      {"scene.json -o out.exr --integrator bidir",
-       "iblkit-trace: --integrator: unknown integrator 'bidir' (path, direct or ao)\n"},
-      {"scene.json -o out.exr --env missing.exr",
-       "iblkit-trace: missing.exr: cannot open: No such file or directory\n"},
-      {"scene.json -o out.exr --filter tent",
-       "iblkit-trace: --filter: unknown filter 'tent' (box or gaussian)\n"},
-      {"scene.json -o nowhere/out.exr", "iblkit-trace: nowhere/out.exr: folder does not exist\n"},
-      {"scene.json -o out.exr --bent-normal b.exr", "iblkit-trace: --bent-normal: needs --integrator ao\n"},
-      {"scene.json", "iblkit-trace: --output is required\n"},
+  struct Case {
+    std::string arguments;
+    int status;  // 2: the command line, 1: a file (cli/program.h)
+    std::string message;
   };
-  for (const auto& [arguments, expected] : cases) {
+  const Case cases[] = {
+      {"scene.json -o out.exr --spp 0", 2, "iblkit-trace: --spp: must be in 1..16777216, not 0\n"},
+      {"scene.json -o out.exr --spp 16777217", 2,
+       "iblkit-trace: --spp: must be in 1..16777216, not 16777217\n"},
+      {"scene.json -o out.exr --width 20000", 2, "iblkit-trace: --width: must be in 1..16384, not 20000\n"},
+      {"scene.json -o out.exr --height -4", 2, "iblkit-trace: --height: must be in 1..16384, not -4\n"},
+      {"scene.json -o out.exr --threads -1", 2, "iblkit-trace: --threads: must be >= 0 (0: all cores)\n"},
+      // Checked before anything is read: the range error, not the missing scene.
+      {"missing.json -o out.exr --spp 0", 2, "iblkit-trace: --spp: must be in 1..16777216, not 0\n"},
+      {"scene.json -o out.exr --integrator bidir", 2,
+       "iblkit-trace: --integrator: unknown integrator 'bidir' (expected one of path, direct, ao)\n"},
+      {"scene.json -o out.exr --env-sampling light", 2,
+       "iblkit-trace: --env-sampling: unknown strategy 'light' (expected one of uniform, cosine, brdf, env, "
+       "mis)\n"},
+      {"scene.json -o out.exr --env missing.exr", 1,
+       "iblkit-trace: missing.exr: cannot open: No such file or directory\n"},
+      {"scene.json -o out.exr --filter tent", 2,
+       "iblkit-trace: --filter: unknown filter 'tent' (expected one of box, gaussian)\n"},
+      {"scene.json -o nowhere/out.exr", 1, "iblkit-trace: nowhere/out.exr: folder does not exist\n"},
+      {"scene.json -o out.exr --bent-normal b.exr", 2,
+       "iblkit-trace: --bent-normal: needs --integrator ao\n"},
+      {"scene.json", 2, "iblkit-trace: --output is required\n"},
+      {"scene.json -o out.exr --no-such-option", 2,
+       "iblkit-trace: The following argument was not expected: --no-such-option\n"},
+  };
+  for (const auto& [arguments, status, expected] : cases) {
     std::string output;
-    EXPECT_EQ(trace(arguments, &output), 1) << arguments;
+    EXPECT_EQ(trace(arguments, &output), status) << arguments;
     EXPECT_EQ(output, expected) << arguments;
   }
   EXPECT_FALSE(std::filesystem::exists(dir_ / "out.exr"));

@@ -185,9 +185,9 @@ TEST(Integrator, ParsesNamesAndRefusesOthers) {
   EXPECT_EQ(parseIntegratorKind("ao"), IntegratorKind::AmbientOcclusion);
   EXPECT_EQ(parseEnvSampling("cosine"), EnvSampling::Cosine);
   EXPECT_EQ(test::errorMessage([] { parseIntegratorKind("bidir"); }),
-            "--integrator: unknown integrator 'bidir' (path, direct or ao)");
+            "--integrator: unknown integrator 'bidir' (expected one of path, direct, ao)");
   EXPECT_EQ(test::errorMessage([] { parseEnvSampling("light"); }),
-            "--env-sampling: unknown strategy 'light' (uniform, cosine, brdf, env or mis)");
+            "--env-sampling: unknown strategy 'light' (expected one of uniform, cosine, brdf, env, mis)");
 }
 
 }  // namespace

@@ -90,7 +90,7 @@ TEST(PixelFilter, ParsesNamesAndRefusesOthers) {
   EXPECT_EQ(parsePixelFilter("box"), PixelFilterKind::Box);
   EXPECT_EQ(parsePixelFilter("gaussian"), PixelFilterKind::Gaussian);
   EXPECT_EQ(test::errorMessage([] { parsePixelFilter("tent"); }),
-            "--filter: unknown filter 'tent' (box or gaussian)");
+            "--filter: unknown filter 'tent' (expected one of box, gaussian)");
 }
 
 }  // namespace

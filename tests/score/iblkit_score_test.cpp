@@ -6,6 +6,7 @@
 
 #include "core/image_io.h"
 #include "support/test_paths.h"
+#include "support/usage_error_check.h"
 
 namespace iblkit {
 namespace {
@@ -68,6 +69,18 @@ TEST(IblkitScore, BadInputIsOneLineAndNonZeroExit) {
                              &output),
             1);
   EXPECT_EQ(output, "iblkit-score: " + bad.string() + ": 4 NaN or infinite pixel values\n");
+}
+
+// Every program's command-line errors: one line naming the program, status 2 (cli/program.h).
+TEST(IblkitScore, ABadOptionIsOneLineAndStatusTwo) {
+  const std::filesystem::path image = test::dataDir() / "flip" / "ldr-noise-park.ref.png";
+  const std::string score =
+      (test::binDir() / "iblkit-score").string() + " " + quoted(image) + " " + quoted(image);
+  test::expectUsageError(score + " --no-such-option",
+                         "iblkit-score: The following argument was not expected: --no-such-option");
+  test::expectUsageError(
+      score + " --metric lpips",
+      "iblkit-score: --metric: unknown metric 'lpips' (expected one of mse, relmse, psnr, ssim, flip)");
 }
 
 }  // namespace

@@ -1,0 +1,89 @@
+#include "cli/program.h"
+
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/usage_error.h"
+
+namespace iblkit {
+
+const char* const kExitStatusHelp =
+    "Exit status: 0 success, 1 failure at run time (bad input file, I/O), 2 command-line usage "
+    "error, 3 iblkit-report --strict: a claim does not hold.";
+
+namespace {
+
+// The lines of `message`, trimmed and joined by single spaces.
+std::string foldedOntoOneLine(const std::string& message) {
+  std::istringstream lines(message);
+  std::string line, folded;
+  while (std::getline(lines, line)) {
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    const std::size_t last = line.find_last_not_of(" \t\r");
+    if (!folded.empty()) folded += ' ';
+    folded += line.substr(first, last - first + 1);
+  }
+  return folded;
+}
+
+std::string joined(const std::vector<std::string>& names, const char* separator) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : separator) + name;
+  return text;
+}
+
+}  // namespace
+
+void printError(const std::string& program, const std::string& message) {
+  std::cout.flush();
+  std::cerr << program << ": " << foldedOntoOneLine(message) << '\n';
+}
+
+int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run) {
+  const std::string program = app.get_name();
+  app.footer(kExitStatusHelp);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help: the help on stdout, status 0
+  } catch (const CLI::ParseError& e) {
+    printError(program, e.what());
+    return kExitUsage;
+  }
+  try {
+    return run();
+  } catch (const UsageError& e) {
+    printError(program, e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    printError(program, e.what());
+    return kExitFailure;
+  } catch (...) {
+    printError(program, "unknown error");
+    return kExitFailure;
+  }
+}
+
+void addEnvironmentOptions(CLI::App& app, EnvironmentOverride& override) {
+  app.add_option("--env", override.file, "environment map (default: the scene's)");
+  app.add_option("--env-rotation", override.rotationDegrees,
+                 "absolute environment rotation about +Y in degrees (replaces the scene's)");
+  app.add_option("--env-intensity", override.intensity,
+                 "environment radiance multiplier (replaces the scene's)");
+}
+
+CLI::Validator nameChoice(std::vector<std::string> names, std::string noun) {
+  const std::string description = "{" + joined(names, ",") + "}";
+  return CLI::Validator(
+      [names = std::move(names), noun = std::move(noun)](std::string& text) -> std::string {
+        if (std::find(names.begin(), names.end(), text) != names.end()) return {};
+        return unknownNameProblem(noun, text, names);
+      },
+      description);
+}
+
+}  // namespace iblkit

@@ -1,0 +1,61 @@
+#pragma once
+// The scaffold every program's main runs through (programs/, bench/sampling_study.cpp): CLI11
+// parses the command line, `--help` prints the help and exits 0, and every error, the parser's
+// included, is one line "PROGRAM: message" on stderr with one exit status table for all programs.
+
+#include <CLI/CLI.hpp>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/enum_names.h"
+#include "core/scene_environment.h"
+
+namespace iblkit {
+
+// The exit status of every program (README.md, "Exit codes").
+enum ExitStatus : int {
+  kExitSuccess = 0,
+  kExitFailure = 1,     // failed at run time: a bad input file, I/O
+  kExitUsage = 2,       // the command line: an unknown option, a bad or missing value
+  kExitClaimFails = 3,  // iblkit-report --strict: a claim does not hold
+};
+
+// The table above as --help prints it (the footer runProgram gives every program).
+extern const char* const kExitStatusHelp;
+
+// Parses `argv` with `app` (whose name is the program's) and returns run()'s status. A parse
+// error or a UsageError exits kExitUsage, any other exception kExitFailure, each after one line
+// on stderr.
+int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run);
+
+// Prints "PROGRAM: message" on stderr, a multi-line message folded onto the one line.
+void printError(const std::string& program, const std::string& message);
+
+// A CLI11 check that accepts only `names`: the help lists them as {a,b,c}, anything else fails
+// with "<option>: unknown <noun> 'x' (expected one of a, b, c)", the wording of parseEnumName.
+CLI::Validator nameChoice(std::vector<std::string> names, std::string noun);
+
+template <class E, std::size_t N>
+CLI::Validator nameChoice(const EnumName<E> (&table)[N], std::string noun) {
+  return nameChoice(enumNames(table), std::move(noun));
+}
+
+// A string option `name` that takes only the names of `table` (nameChoice with `noun`); the help
+// shows the choices, the default and `description` (empty: the noun).
+template <class E, std::size_t N>
+CLI::Option* addNameOption(CLI::App& app, const std::string& name, std::string& value,
+                           const EnumName<E> (&table)[N], const std::string& noun,
+                           const std::string& description = {}) {
+  return app.add_option(name, value, description.empty() ? noun : description)
+      ->check(nameChoice(table, noun))
+      ->capture_default_str();
+}
+
+// --env FILE, --env-rotation DEGREES and --env-intensity X into `override`, with one wording in
+// every program that takes them (docs/conventions.md: each replaces the scene's).
+void addEnvironmentOptions(CLI::App& app, EnvironmentOverride& override);
+
+}  // namespace iblkit
