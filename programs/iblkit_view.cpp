@@ -261,8 +261,10 @@ int main(int argc, char** argv) {
   app.add_option("--width", options.width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
   app.add_option("--height", options.height, "image height (default: the scene's)")
       ->check(CLI::Range(1, 16384));
-  app.add_option("--mode", options.mode,
-                 "unlit, mirror, sh, sh-ao, sh-ao-bent, prt or full (all: every mode, --bench)")
+  std::vector<std::string> modeChoices = enumNames(kShadingModeNames);
+  modeChoices.push_back("all");
+  app.add_option("--mode", options.mode, "shading mode (all: every mode, --bench)")
+      ->check(nameChoice(modeChoices, "shading mode"))
       ->capture_default_str();
   app.add_option("--exposure", options.exposure, "exposure in stops (PNG and display)")
       ->capture_default_str();

@@ -3,6 +3,8 @@
 // isolates one approximation of the reference path tracer, so the scorer can measure them apart.
 #include <string_view>
 
+#include "core/enum_names.h"
+
 namespace iblkit {
 
 enum class ShadingMode {
@@ -15,16 +17,23 @@ enum class ShadingMode {
   Full,      // the material model: diffuse (PRT) + split-sum specular with occlusion terms
 };
 
-// "unlit", "mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full". Throws Error("--mode: unknown
-// shading mode '<name>' (expected one of unlit, mirror, ...)") for anything else.
-ShadingMode parseShadingMode(std::string_view name);
-
-// The name parseShadingMode accepts for `mode`.
-std::string_view shadingModeName(ShadingMode mode);
+// The one spelling of each mode (iblkit-view --mode and the viewer's menu; the report passes them on), in
+// the order of the enum: the ladder from the cost floor to the full model.
+inline constexpr EnumName<ShadingMode> kShadingModeNames[] = {
+    {ShadingMode::Unlit, "unlit"}, {ShadingMode::Mirror, "mirror"},       {ShadingMode::Sh, "sh"},
+    {ShadingMode::ShAo, "sh-ao"},  {ShadingMode::ShAoBent, "sh-ao-bent"}, {ShadingMode::Prt, "prt"},
+    {ShadingMode::Full, "full"}};
 
 // Every mode, in the order of the enum (for benchmarks, tests and the viewer's mode menu).
 inline constexpr ShadingMode kShadingModes[] = {ShadingMode::Unlit, ShadingMode::Mirror,   ShadingMode::Sh,
                                                 ShadingMode::ShAo,  ShadingMode::ShAoBent, ShadingMode::Prt,
                                                 ShadingMode::Full};
+
+// The mode named `name` in kShadingModeNames. Throws Error("--mode: unknown shading mode '<name>'
+// (expected one of unlit, mirror, ...)") for anything else.
+ShadingMode parseShadingMode(std::string_view name);
+
+// The name parseShadingMode accepts for `mode`.
+std::string_view shadingModeName(ShadingMode mode);
 
 }  // namespace iblkit

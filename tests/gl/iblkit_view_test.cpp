@@ -287,8 +287,8 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
 
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --mode shiny",
                 "iblkit-view: --mode: unknown shading mode 'shiny' (expected one of unlit, mirror, sh, "
-                "sh-ao, sh-ao-bent, prt, full)",
-                out);
+                "sh-ao, sh-ao-bent, prt, full, all)",
+                out, 2);
   expectFailure(quoted(fixture.bake) + " -o " + quoted(out),
                 "iblkit-view: -o: only with --headless (the window saves screenshots: --screenshot)", out, 2);
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --no-such-option",
