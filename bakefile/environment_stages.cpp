@@ -24,7 +24,7 @@ fs::path requireFile(const fs::path& file) {
 
 void writeEnvironmentStages(const fs::path& folder, const EnvironmentStages& stages) {
   fs::create_directories((folder / kBakeSh9File).parent_path());
-  writeSh9Json(folder / kBakeSh9File, stages.sh9Projection, stages.shWindowCutoff);
+  writeSh9Json(folder / kBakeSh9File, stages.sh9, stages.shWindowCutoff);
   if (stages.irradiance.size > 0) writeIrradianceCubeExr(folder / kBakeIrradianceFile, stages.irradiance);
   writeSpecularCubeExr(folder / kBakeSpecularFile, stages.specular);
   writeBrdfLutExr(folder / kBakeBrdfLutFile, stages.brdfLut);
@@ -40,8 +40,7 @@ EnvironmentStages readEnvironmentStages(const fs::path& folder, const BakeInputs
       loadEnvironmentMap(requireFile(inputs.environment),
                          parseProbeFormat(inputs.environmentFormat, (folder / kBakeRecordFile).string()))
           .image();
-  env.sh9Projection = readSh9Json(requireFile(folder / kBakeSh9File), &env.shWindowCutoff);
-  env.sh9 = env.sh9Projection;
+  env.sh9 = readSh9Json(requireFile(folder / kBakeSh9File), &env.shWindowCutoff);
   env.specular = readSpecularCubeExr(requireFile(folder / kBakeSpecularFile));
   env.brdfLut = readBrdfLutExr(requireFile(folder / kBakeBrdfLutFile));
   return env;

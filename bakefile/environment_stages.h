@@ -21,12 +21,11 @@ struct EnvironmentStages {
   Image latLong;
   float rotationDegrees = 0.0f;
   float intensity = 1.0f;
-  // The SH9 projection of the radiance (spherical_harmonics.h), in world space: rotationDegrees
-  // and intensity are already in it. env/sh9.json stores it unwindowed, with the cutoff.
-  SphericalHarmonics9 sh9Projection;
-  float shWindowCutoff = 0.0f;  // the sinc^4 ringing window's cutoff (0: none)
-  // The coefficients the engine evaluates.
+  // SH9 radiance coefficients L_k (spherical_harmonics.h) with the sinc^4 ringing window of
+  // shWindowCutoff applied (0: none), in world space: rotationDegrees and intensity are already in
+  // them. What env/sh9.json stores and the engine evaluates.
   SphericalHarmonics9 sh9;
+  float shWindowCutoff = 0.0f;
   // The prefiltered chain (level i has perceptual roughness specular.roughness[i]), world space
   // like sh9.
   SpecularCube specular;
@@ -36,7 +35,7 @@ struct EnvironmentStages {
   CubeMap irradiance;
 };
 
-// Writes env/sh9.json (sh9Projection and shWindowCutoff), env/irradiance.exr (when computed),
+// Writes env/sh9.json (sh9 and shWindowCutoff), env/irradiance.exr (when computed),
 // env/specular.exr and env/brdf_lut.exr into `folder`, creating env/. Throws Error naming the file.
 void writeEnvironmentStages(const std::filesystem::path& folder, const EnvironmentStages& stages);
 

@@ -9,8 +9,9 @@
 
 namespace iblkit {
 
-// Writes `sh` as given (the baker stores its unwindowed projection: docs/baker.md), with the
-// A_l constants of the irradiance formula and the window cutoff (0: none). Temp name, then rename.
+// Writes `sh`, the coefficients the engine evaluates (already windowed when windowCutoff > 0,
+// docs/prefilter.md), with the A_l constants of the irradiance formula and the window cutoff (0:
+// none). Temp name, then rename.
 // Throws Error("<path>: ...") for non-finite coefficients or when the file cannot be written.
 void writeSh9Json(const std::filesystem::path& path, const SphericalHarmonics9& sh, float windowCutoff);
 

@@ -22,10 +22,10 @@ EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, co
   stages.rotationDegrees = environment.rotationDegrees();
   stages.intensity = environment.intensity();
   step(0);
-  stages.sh9Projection = projectEnvironmentSh9(environment);
-  stages.shWindowCutoff = options.shWindowCutoff ? *options.shWindowCutoff
-                                                 : automaticShWindowCutoff(stages.sh9Projection);
-  stages.sh9 = windowSh9(stages.sh9Projection, stages.shWindowCutoff);
+  const SphericalHarmonics9 projection = projectEnvironmentSh9(environment);
+  stages.shWindowCutoff =
+      options.shWindowCutoff ? *options.shWindowCutoff : automaticShWindowCutoff(projection);
+  stages.sh9 = windowSh9(projection, stages.shWindowCutoff);
   measured.sh9 = stopwatch.lap();
   step(1);
   if (options.irradianceCubeSize > 0) stages.irradiance = irradianceCube(environment, options.irradianceCubeSize);

@@ -80,6 +80,14 @@ void requireExtension(const fs::path& file, std::initializer_list<const char*> a
   fail(file, "unsupported output format (expected " + list + ")");
 }
 
+// A scene given instead of a bake folder is baked in memory with `aoRays` visibility rays per
+// vertex and the viewer's environment stages.
+InMemoryBakeOptions inMemoryBake(int aoRays) {
+  InMemoryBakeOptions options;
+  options.aoRays = aoRays;
+  return options;
+}
+
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
@@ -153,7 +161,7 @@ int runHeadless(const Options& options) {
   settings.drawSky = !options.noSky;
   settings.sampleShading = options.sampleShading;
 
-  const BakedScene bake = loadOrBakeScene(options.input, {.aoRays = options.aoRays});
+  const BakedScene bake = loadOrBakeScene(options.input, inMemoryBake(options.aoRays));
   settings.envRotationDegrees = envRotationFromBake(bake.env, options.envRotation);
   const int width = options.width > 0 ? options.width : bake.scene.width;
   const int height = options.height > 0 ? options.height : bake.scene.height;
@@ -222,7 +230,7 @@ int runWindow(const Options& options) {
   viewer.samples = options.samples;
   viewer.noSky = options.noSky;
   viewer.loadScene = [aoRays = options.aoRays](const fs::path& input) {
-    return loadOrBakeScene(input, {.aoRays = aoRays});
+    return loadOrBakeScene(input, inMemoryBake(aoRays));
   };
   viewer.prepareEnvironment = [](const EnvironmentMap& map) {
     return computeEnvironmentStages(map, kViewerEnvironmentStages);

@@ -50,8 +50,8 @@ TEST(BakedScene, ReadsBackWhatTheBakerWrote) {
             original.scene.meshes[1].attributes.at("_SHT2").data);
   for (int k = 0; k < kShCoefficients; ++k)
     for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(bake.env.sh9Projection.coefficients[std::size_t(k)][c],
-                  original.env.sh9Projection.coefficients[std::size_t(k)][c], 1e-6f);
+      EXPECT_NEAR(bake.env.sh9.coefficients[std::size_t(k)][c],
+                  original.env.sh9.coefficients[std::size_t(k)][c], 1e-6f);
   EXPECT_EQ(bake.env.shWindowCutoff, original.env.shWindowCutoff);
   ASSERT_EQ(bake.env.specular.levels.size(), original.env.specular.levels.size());
   EXPECT_EQ(bake.env.specular.roughness.size(), original.env.specular.roughness.size());

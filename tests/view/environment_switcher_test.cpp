@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 EnvironmentStages prepareSmall(const EnvironmentMap& map) {
   return computeEnvironmentStages(map,
-                                  {.specularSamples = 16, .lutSize = 8, .lutSamples = 16, .irradianceCubeSize = 0});
+                                  {.shWindowCutoff = std::nullopt, .specularSamples = 16, .lutSize = 8, .lutSamples = 16, .irradianceCubeSize = 0});
 }
 
 void writeConstantMap(const fs::path& file, const glm::vec3& radiance) {
