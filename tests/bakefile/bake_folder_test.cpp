@@ -30,7 +30,11 @@ fs::path writeBakeFolder(const std::string& name, const BakedScene& bake,
   const fs::path environment = folder / "sky.exr";
   writeExr(environment, bake.env.latLong, {.pixelType = PixelType::Float});
   nlohmann::json record = makeBakeRecord(
-      {.scene = "test", .environment = environment, .environmentRotationDegrees = 30.0f, .environmentIntensity = 2.0f},
+      {.scene = "test",
+       .environment = environment,
+       .environmentFormat = "latlong",
+       .environmentRotationDegrees = 30.0f,
+       .environmentIntensity = 2.0f},
       nlohmann::json::object());
   record["version"] = version;
   writeBakeRecord(folder / kBakeRecordFile, record);
@@ -107,12 +111,20 @@ TEST(BakeRecord, WritesTheInputsItReadsBack) {
   EXPECT_EQ(nlohmann::json::parse(stream).at("parameters").at("ao_rays"), 7);
 }
 
+// Inputs of a bake of scene "s" under `environment` (empty: none), the other fields as default.
+BakeInputs inputsOf(const fs::path& environment) {
+  BakeInputs inputs;
+  inputs.scene = "s";
+  inputs.environment = environment;
+  return inputs;
+}
+
 TEST(BakeRecord, ARelativeEnvironmentIsRelativeToTheBakeAndNoneMeansNoStages) {
   const fs::path folder = test::scratchDir() / "bake_relative";
   fs::create_directories(folder);
-  writeBakeRecord(folder / kBakeRecordFile, makeBakeRecord({.scene = "s", .environment = "map.exr"}, {}));
+  writeBakeRecord(folder / kBakeRecordFile, makeBakeRecord(inputsOf("map.exr"), {}));
   EXPECT_EQ(readBakeRecord(folder / kBakeRecordFile).environment, folder / "map.exr");
-  writeBakeRecord(folder / kBakeRecordFile, makeBakeRecord({.scene = "s"}, {}));
+  writeBakeRecord(folder / kBakeRecordFile, makeBakeRecord(inputsOf(""), {}));
   EXPECT_TRUE(readBakeRecord(folder / kBakeRecordFile).environment.empty());
   EXPECT_EQ(test::errorMessage([&] { readEnvironmentStages(folder, readBakeRecord(folder / kBakeRecordFile)); }),
             (folder / kBakeRecordFile).string() + ": the bake has no environment stages (bake with --env)");

@@ -72,7 +72,9 @@ TEST(EnvironmentStages, TheBakeFolderHoldsTheWindowedCoefficientsTheEngineUses) 
   fs::remove_all(folder);
   writeEnvironmentStages(folder, stages);
   writeExr(folder / "sunny.exr", stages.latLong, {.pixelType = PixelType::Float});
-  const EnvironmentStages read = readEnvironmentStages(folder, {.scene = "s", .environment = folder / "sunny.exr"});
+  BakeInputs inputs;
+  inputs.environment = folder / "sunny.exr";
+  const EnvironmentStages read = readEnvironmentStages(folder, inputs);
   EXPECT_EQ(read.shWindowCutoff, stages.shWindowCutoff);
   for (int k = 0; k < kShCoefficients; ++k)
     for (int c = 0; c < 3; ++c)
