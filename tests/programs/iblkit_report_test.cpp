@@ -64,7 +64,9 @@ TEST(IblkitReport, LoneSpheresScoreEveryModeHoldTheirClaimsAndRerunFromTheCache)
                                "/" + mode["mode"].get<std::string>();
       ASSERT_FALSE(mode.contains("failure")) << what << ": " << mode["failure"];
       EXPECT_TRUE(mode["frameMilliseconds"].is_number()) << what;
-      if (mode["frameMilliseconds"].is_number()) EXPECT_GT(mode["frameMilliseconds"].get<double>(), 0.0) << what;
+      if (mode["frameMilliseconds"].is_number()) {
+        EXPECT_GT(mode["frameMilliseconds"].get<double>(), 0.0) << what;
+      }
       const double flip = mode["meanFlip"].get<double>();
       EXPECT_TRUE(std::isfinite(flip) && flip >= 0.0 && flip <= 1.0) << what;
       EXPECT_TRUE(fs::is_regular_file(out / mode["image"].get<std::string>())) << what;
@@ -86,7 +88,9 @@ TEST(IblkitReport, LoneSpheresScoreEveryModeHoldTheirClaimsAndRerunFromTheCache)
   EXPECT_FALSE((*diffuse)["holds"].get<bool>()) << diffuse->dump();
   EXPECT_NE((*diffuse)["detail"].get<std::string>().find("SH9's own truncation error"), std::string::npos);
   for (const json& entry : document["cases"])
-    if (entry["scene"] == "diffuse_sphere") EXPECT_GT(entry["sh9TruncationError"].get<double>(), 0.0);
+    if (entry["scene"] == "diffuse_sphere") {
+      EXPECT_GT(entry["sh9TruncationError"].get<double>(), 0.0);
+    }
 
   // Everything again: every stage comes from the cache, the numbers are the same.
   ASSERT_EQ(report(arguments, &output), 0) << output;
