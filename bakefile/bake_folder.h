@@ -26,8 +26,4 @@ struct BakedScene {
 // incomplete or of the wrong version.
 BakedScene readBakeFolder(const std::filesystem::path& folder);
 
-// Whether `folder` holds a bake.json of this bake layout's version (for programs that must not
-// replace a folder that is not a bake).
-bool isBakeFolder(const std::filesystem::path& folder);
-
 }  // namespace iblkit

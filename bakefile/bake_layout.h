@@ -12,6 +12,8 @@
 //   env/brdf_lut.exr    split-sum DFG table (brdf_lut_exr.h)
 // The env/ files exist only when the bake had an environment map.
 
+#include <filesystem>
+
 namespace iblkit {
 
 // The "version" of bake.json this code writes and reads; a change to the layout or to the meaning
@@ -24,5 +26,9 @@ inline constexpr const char* kBakeSh9File = "env/sh9.json";
 inline constexpr const char* kBakeIrradianceFile = "env/irradiance.exr";
 inline constexpr const char* kBakeSpecularFile = "env/specular.exr";
 inline constexpr const char* kBakeBrdfLutFile = "env/brdf_lut.exr";
+
+// `file`, a file of a bake folder that a reader needs. Throws Error("<file>: missing (incomplete
+// bake folder?)") unless it is a regular file.
+std::filesystem::path requireBakeFile(const std::filesystem::path& file);
 
 }  // namespace iblkit

@@ -31,8 +31,7 @@ void writeBakeRecord(const fs::path& file, const json& record) {
 }
 
 BakeInputs readBakeRecord(const fs::path& file) {
-  std::ifstream stream(file);
-  if (!stream) fail(file, "missing (incomplete bake folder?)");
+  std::ifstream stream(requireBakeFile(file));
   json record;
   try {
     record = json::parse(stream);

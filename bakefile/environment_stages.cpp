@@ -11,17 +11,6 @@ namespace iblkit {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// A bake folder's file, which must exist.
-fs::path requireFile(const fs::path& file) {
-  std::error_code error;
-  if (!fs::is_regular_file(file, error)) fail(file, "missing (incomplete bake folder?)");
-  return file;
-}
-
-}  // namespace
-
 void writeEnvironmentStages(const fs::path& folder, const EnvironmentStages& stages) {
   fs::create_directories((folder / kBakeSh9File).parent_path());
   writeSh9Json(folder / kBakeSh9File, stages.sh9, stages.shWindowCutoff);
@@ -37,12 +26,12 @@ EnvironmentStages readEnvironmentStages(const fs::path& folder, const BakeInputs
   env.rotationDegrees = inputs.environmentRotationDegrees;
   env.intensity = inputs.environmentIntensity;
   env.latLong =
-      loadEnvironmentMap(requireFile(inputs.environment),
+      loadEnvironmentMap(requireBakeFile(inputs.environment),
                          parseProbeFormat(inputs.environmentFormat, (folder / kBakeRecordFile).string()))
           .image();
-  env.sh9 = readSh9Json(requireFile(folder / kBakeSh9File), &env.shWindowCutoff);
-  env.specular = readSpecularCubeExr(requireFile(folder / kBakeSpecularFile));
-  env.brdfLut = readBrdfLutExr(requireFile(folder / kBakeBrdfLutFile));
+  env.sh9 = readSh9Json(requireBakeFile(folder / kBakeSh9File), &env.shWindowCutoff);
+  env.specular = readSpecularCubeExr(requireBakeFile(folder / kBakeSpecularFile));
+  env.brdfLut = readBrdfLutExr(requireBakeFile(folder / kBakeBrdfLutFile));
   return env;
 }
 

@@ -8,6 +8,4 @@ void writeIrradianceCubeExr(const std::filesystem::path& path, const CubeMap& ir
   writeExr(path, cubeToExrStrip(irradiance), {.pixelType = PixelType::Float, .envmap = EnvmapLayout::Cube});
 }
 
-CubeMap readIrradianceCubeExr(const std::filesystem::path& path) { return cubeFromExrStrip(readExr(path), path); }
-
 }  // namespace iblkit

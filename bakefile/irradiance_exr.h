@@ -12,7 +12,4 @@ namespace iblkit {
 // attribute). Throws Error naming the file when it cannot be written.
 void writeIrradianceCubeExr(const std::filesystem::path& path, const CubeMap& irradiance);
 
-// Reads it back. Throws Error("<path>: ...") when the file is missing or not a W x 6W strip.
-CubeMap readIrradianceCubeExr(const std::filesystem::path& path);
-
 }  // namespace iblkit

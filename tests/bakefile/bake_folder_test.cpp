@@ -82,17 +82,6 @@ TEST(BakedScene, MissingOrIncompleteOrWrongVersionIsAnErrorNamingTheFile) {
       (old / "bake.json").string() + ": version 'iblkit-bake 0' is not supported (expected 'iblkit-bake 1')");
 }
 
-TEST(BakedScene, IsBakeFolderOnlyForThisLayoutsVersion) {
-  const BakedScene original = test::makeTestBake({.rings = 4, .segments = 8});
-  EXPECT_TRUE(isBakeFolder(writeBakeFolder("bake_is", original)));
-  EXPECT_FALSE(isBakeFolder(writeBakeFolder("bake_is_old", original, "iblkit-bake 0")));
-  const fs::path plain = test::scratchDir() / "not_a_bake";
-  fs::create_directories(plain);
-  std::ofstream(plain / kBakeRecordFile) << "not json";
-  EXPECT_FALSE(isBakeFolder(plain));
-  EXPECT_FALSE(isBakeFolder(test::scratchDir() / "no_such_folder"));
-}
-
 TEST(BakeRecord, WritesTheInputsItReadsBack) {
   const fs::path file = test::scratchDir() / "bake_record.json";
   writeBakeRecord(file, makeBakeRecord({.scene = "/a/scene.json",

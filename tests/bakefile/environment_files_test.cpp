@@ -1,9 +1,8 @@
 // The env/ files of a bake folder read back what was written: the specular cube chain with its
-// roughness per level, the DFG table and the irradiance cube; and their readers' errors.
+// roughness per level and the DFG table; and the specular reader's errors.
 #include <gtest/gtest.h>
 
 #include "bakefile/brdf_lut_exr.h"
-#include "bakefile/irradiance_exr.h"
 #include "bakefile/specular_exr.h"
 #include "core/image_io.h"
 #include "support/error_capture.h"
@@ -56,15 +55,6 @@ TEST(BrdfLutExr, ReadsBackTheTable) {
   const fs::path file = test::scratchDir() / "brdf_lut_round_trip.exr";
   writeBrdfLutExr(file, lut);
   EXPECT_EQ(readBrdfLutExr(file).pixels(), lut.pixels());
-}
-
-TEST(IrradianceExr, ReadsBackTheCube) {
-  const CubeMap cube = patternCube(4, 0);
-  const fs::path file = test::scratchDir() / "irradiance_round_trip.exr";
-  writeIrradianceCubeExr(file, cube);
-  const CubeMap read = readIrradianceCubeExr(file);
-  ASSERT_EQ(read.size, 4);
-  for (int face = 0; face < 6; ++face) EXPECT_EQ(read.faces[face].pixels(), cube.faces[face].pixels());
 }
 
 }  // namespace
