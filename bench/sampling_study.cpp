@@ -90,6 +90,10 @@ int run(const Options& options) {
   const fs::path sceneFile = options.scene.empty() ? options.assets / "scenes" / "bunny.json" : options.scene;
   const Scene scene = loadScene(sceneFile);
   const std::vector<StudyMap> maps = loadStudyMaps(options, scene);
+  // --update is rewritten on purpose (its marked section); the tables must not replace an input.
+  std::vector<fs::path> inputs = sceneInputs(scene);
+  for (const StudyMap& map : maps) inputs.push_back(options.assets / "hdri" / (map.name + ".exr"));
+  checkOutputs(inputs, {options.outDir / (options.name + ".md"), options.outDir / (options.name + ".svg")});
 
   const StudyLog log = [](const std::string& line) {
     std::printf("%s\n", line.c_str());

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/temporary_files.h"
 #include "core/usage_error.h"
 
 namespace iblkit {
@@ -46,6 +48,7 @@ void printError(const std::string& program, const std::string& message) {
 int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run) {
   const std::string program = app.get_name();
   app.footer(kExitStatusHelp);
+  installInterruptCleanup();
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -59,6 +62,11 @@ int runProgram(CLI::App& app, int argc, const char* const* argv, const std::func
   } catch (const UsageError& e) {
     printError(program, e.what());
     return kExitUsage;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // "<path>: <reason>", as every other error names its file first.
+    printError(program, (e.path1().empty() ? std::string("filesystem") : e.path1().string()) + ": " +
+                            e.code().message());
+    return kExitFailure;
   } catch (const std::exception& e) {
     printError(program, e.what());
     return kExitFailure;
@@ -74,6 +82,17 @@ void addEnvironmentOptions(CLI::App& app, EnvironmentOverride& override) {
                  "absolute environment rotation about +Y in degrees (replaces the scene's)");
   app.add_option("--env-intensity", override.intensity,
                  "environment radiance multiplier (replaces the scene's)");
+}
+
+void addForceOption(CLI::App& app, bool& force) {
+  app.add_flag("--force", force, "replace an existing output folder even when it is not one this program wrote");
+}
+
+std::vector<std::filesystem::path> sceneInputs(const Scene& scene, const EnvironmentOverride& override) {
+  std::vector<std::filesystem::path> inputs = {scene.file};
+  inputs.insert(inputs.end(), scene.modelFiles.begin(), scene.modelFiles.end());
+  inputs.push_back(overriddenEnvironment(scene.environment, override).file);
+  return inputs;
 }
 
 CLI::Validator nameChoice(std::vector<std::string> names, std::string noun) {

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "core/enum_names.h"
+#include "core/output_path.h"
+#include "core/scene.h"
 #include "core/scene_environment.h"
 
 namespace iblkit {
@@ -28,7 +30,11 @@ extern const char* const kExitStatusHelp;
 
 // Parses `argv` with `app` (whose name is the program's) and returns run()'s status. A parse
 // error or a UsageError exits kExitUsage, any other exception kExitFailure, each after one line
-// on stderr.
+// on stderr. Before parsing it installs the interrupt cleanup (core/temporary_files.h): SIGINT or
+// SIGTERM removes every temporary of the atomic writes and ends the program by that signal, so
+// an interrupted program leaves no partial output. Each program declares what it reads and
+// writes with checkOutputs (core/output_path.h) before it writes anything; a refused output is a
+// run-time failure (kExitFailure), as it depends on what is on disk, not on the command line.
 int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run);
 
 // Prints "PROGRAM: message" on stderr, a multi-line message folded onto the one line.
@@ -57,5 +63,13 @@ CLI::Option* addNameOption(CLI::App& app, const std::string& name, std::string& 
 // --env FILE, --env-rotation DEGREES and --env-intensity X into `override`, with one wording in
 // every program that takes them (docs/conventions.md: each replaces the scene's).
 void addEnvironmentOptions(CLI::App& app, EnvironmentOverride& override);
+
+// --force: an existing output folder that is not of the program's kind may be replaced
+// (checkOutputs' ProgramFiles::force).
+void addForceOption(CLI::App& app, bool& force);
+
+// The files a loaded scene was read from: the scene file, its models and its environment map
+// (the override's, when it names one): the inputs an output must not replace.
+std::vector<std::filesystem::path> sceneInputs(const Scene& scene, const EnvironmentOverride& override = {});
 
 }  // namespace iblkit

@@ -64,6 +64,7 @@ struct Options {
   std::string shWindow = "auto";  // "auto", "none" or a cutoff in bands
   std::uint32_t specularSamples = 1024;
   int lutSize = 128;
+  bool force = false;
 };
 
 // A one-line progress bar on stderr, redrawn when the whole percentage changes; only when stderr
@@ -146,6 +147,10 @@ int bake(const Options& options) {
   timings["load_s"] = stopwatch.lap();
 
   const EnvironmentSettings environment = overriddenEnvironment(scene.environment, options.environment);
+  // -o replaces the folder: it must not be or hold an input, and an existing folder must be a
+  // bake (or empty) unless --force.
+  checkOutputs(sceneInputs(scene, options.environment), {},
+               {OutputFolder(options.output, {"iblkit bake folder", {kBakeRecordFile}})}, options.force);
   std::error_code error;
   if (!environment.file.empty() && !fs::is_regular_file(environment.file, error))
     fail(environment.file, "does not exist");
@@ -230,7 +235,10 @@ int main(int argc, char** argv) {
                iblkit::kProgram};
   app.add_option("scene", options.scene, "scene: .json description, .gltf or .glb")->required();
   iblkit::addEnvironmentOptions(app, options.environment);
-  app.add_option("-o,--output", options.output, "output folder, replaced only after success")->required();
+  app.add_option("-o,--output", options.output,
+                 "output folder, replaced only after success (an existing one must be a bake, or --force)")
+      ->required();
+  iblkit::addForceOption(app, options.force);
   app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex")
       ->check(CLI::Range(1, 1 << 24))
       ->capture_default_str();

@@ -148,6 +148,7 @@ struct Options {
 int describeFiles(const Options& options) {
   if (!options.png.empty() && (options.files.size() != 1 || !isImage(options.files.front())))
     iblkit::failUsage("--png", "needs exactly one image file");
+  iblkit::checkOutputs({options.files.begin(), options.files.end()}, {options.png});
   int status = iblkit::kExitSuccess;
   for (const std::string& name : options.files) {
     try {

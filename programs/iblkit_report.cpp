@@ -6,10 +6,12 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 #include "cli/program.h"
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/usage_error.h"
 #include "report/report_case.h"
 #include "report/report_claims.h"
@@ -28,8 +30,19 @@ struct Options {
   std::vector<std::string> environments = {"sky", "esplanade", "studio", "city", "forest", "sunset"};
   std::string environmentFolder = "assets/hdri", output = "out/demo", cacheFolder, binFolder;
   ReportSettings settings;
-  bool strict = false;
+  bool strict = false, force = false;
 };
+
+// The report folder's kind: the marker the report writes first (so that a rerun after an
+// interrupt finds it), or the report.json of a finished report.
+const OutputFolderKind kReportFolder{"iblkit report folder", {".iblkit-report", "report.json"}};
+
+// ENV-DIR/NAME.exr for a bare name, else the path given.
+fs::path environmentFile(const Options& options, const std::string& name) {
+  return name.find('/') != std::string::npos || fs::path(name).has_extension()
+             ? fs::path(name)
+             : fs::path(options.environmentFolder) / (name + ".exr");
+}
 
 fs::path programFolder() {
   std::error_code error;
@@ -45,7 +58,15 @@ int report(Options& options) {
   const auto start = std::chrono::steady_clock::now();
   settings.outDir = options.output;
   settings.binDir = options.binFolder.empty() ? programFolder() : fs::path(options.binFolder);
-  fs::create_directories(settings.outDir);
+  std::vector<fs::path> inputs(options.scenes.begin(), options.scenes.end());
+  for (const std::string& name : options.environments) inputs.push_back(environmentFile(options, name));
+  checkOutputs(inputs, {settings.outDir / "report.json", settings.outDir / "report.html"},
+               {OutputFolder(settings.outDir, kReportFolder, /*replaced=*/false)}, options.force);
+  std::error_code error;
+  fs::create_directories(settings.outDir, error);
+  if (error) fail(settings.outDir, "cannot create folder: " + error.message());
+  writeAtomically(settings.outDir / kReportFolder.markers.front(),
+                  [](const fs::path& temporary) { std::ofstream(temporary) << "iblkit-report\n"; });
   const StageCache cache(options.cacheFolder.empty() ? settings.outDir / "cache"
                                                      : fs::path(options.cacheFolder));
 
@@ -54,9 +75,7 @@ int report(Options& options) {
   for (const std::string& scene : options.scenes) {
     if (!fs::is_regular_file(scene)) fail(scene, "scene file does not exist");
     for (const std::string& name : options.environments) {
-      const fs::path environment = name.find('/') != std::string::npos || fs::path(name).has_extension()
-                                       ? fs::path(name)
-                                       : fs::path(options.environmentFolder) / (name + ".exr");
+      const fs::path environment = environmentFile(options, name);
       if (!fs::is_regular_file(environment)) fail(environment, "environment map does not exist");
       const int before = cache.misses();
       CaseResult result = runCase(settings, cache, scene, environment);
@@ -102,6 +121,7 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   app.add_option("--env-dir", options.environmentFolder, "folder of the environment maps");
   app.add_option("-o,--output", options.output, "report folder (report.html, report.json, images/)");
+  addForceOption(app, options.force);
   app.add_option("--cache", options.cacheFolder, "stage cache folder (default: OUTPUT/cache)");
   app.add_option("--bin", options.binFolder,
                  "folder of iblkit-bake, iblkit-trace, iblkit-view (default: this program's)");

@@ -47,6 +47,7 @@ int score(const Options& options) {
       options.metricList.empty()
           ? all
           : std::set<std::string>(options.metricList.begin(), options.metricList.end());
+  checkOutputs({options.referenceFile, options.testFile, options.maskFile}, {options.heatMapFile});
   const ScoreInputs inputs = loadScoreInputs(options.referenceFile, options.testFile, options.maskFile);
   ScoreOptions scoring;
   scoring.mse = metrics.count("mse") || metrics.count("psnr");

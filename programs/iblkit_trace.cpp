@@ -94,6 +94,10 @@ int run(const Options& options, const CLI::App& app) {
     checkOutputFolder(*file);
 
   Scene scene = loadScene(options.scene);
+  // No output may replace the scene, a model or the map (nor a device node).
+  checkOutputs(sceneInputs(scene, options.environment),
+               {options.output, options.png, options.albedo, options.normal, options.depth, options.variance,
+                options.mask, options.bentNormal});
   RenderSettings settings;
   settings.width = app.count("--width") ? options.width : scene.width;
   settings.height = app.count("--height") ? options.height : scene.height;

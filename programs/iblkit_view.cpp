@@ -34,6 +34,7 @@
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
 #include "engine/view/reference_comparison.h"
+#include "engine/view/screenshot.h"
 #include "engine/view/viewer.h"
 
 namespace iblkit {
@@ -162,6 +163,10 @@ int runHeadless(const Options& options) {
   settings.sampleShading = options.sampleShading;
 
   const BakedScene bake = loadOrBakeScene(options.input, inMemoryBake(options.aoRays));
+  // No image may replace the bake folder's files, the scene, a model or the map.
+  std::vector<fs::path> inputs = sceneInputs(bake.scene);
+  inputs.push_back(options.input);
+  checkOutputs(inputs, {options.output, options.normalOutput, options.depthOutput});
   settings.envRotationDegrees = envRotationFromBake(bake.env, options.envRotation);
   const int width = options.width > 0 ? options.width : bake.scene.width;
   const int height = options.height > 0 ? options.height : bake.scene.height;
@@ -220,6 +225,10 @@ int runWindow(const Options& options) {
     failUsage("--bench", "only with --headless (the window prints its frame time with --frames)");
   if (!options.normalOutput.empty() || !options.depthOutput.empty())
     failUsage("--normal/--depth", "only with --headless");
+  if (!options.screenshot.empty()) {
+    const ScreenshotFiles files = screenshotFiles(options.screenshot);
+    checkOutputs({options.input, options.environment, options.reference}, {files.exr, files.png});
+  }
   ViewerOptions viewer;
   viewer.input = options.input;
   viewer.width = options.width;

@@ -6,11 +6,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/temporary_files.h"
 
 extern char** environ;
 
@@ -45,14 +47,31 @@ std::string runProgram(const std::vector<std::string>& argv, const fs::path& log
   std::vector<char*> arguments;
   for (const std::string& argument : argv) arguments.push_back(const_cast<char*>(argument.c_str()));
   arguments.push_back(nullptr);
+  // The child starts with no signal blocked (runProgram blocks SIGINT and SIGTERM for its
+  // interrupt cleanup), and an interrupt of this program stops it before removing its folder.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
   pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, argv[0].c_str(), &actions, nullptr, arguments.data(), environ);
+  int spawned = 0;
+  withTemporariesLocked([&] {
+    spawned = posix_spawn(&pid, argv[0].c_str(), &actions, &attributes, arguments.data(), environ);
+    if (spawned == 0) registerChildProcess(pid);
+  });
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) fail(argv[0], std::string("cannot run: ") + std::strerror(spawned));
 
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) fail(argv[0], std::string("cannot wait for it: ") + std::strerror(errno));
+    if (errno != EINTR) {
+      unregisterChildProcess(pid);
+      fail(argv[0], std::string("cannot wait for it: ") + std::strerror(errno));
+    }
+  unregisterChildProcess(pid);
 
   std::ifstream stream(log, std::ios::binary);
   stream.seekg(std::streamoff(outputStart));

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/file_io.h"
 
 namespace iblkit {
 
@@ -17,16 +18,12 @@ using nlohmann::json;
 
 namespace {
 
-void writeAtomically(const fs::path& file, const std::string& text) {
-  const fs::path temporary = file.string() + ".tmp";
-  {
+void writeText(const fs::path& file, const std::string& text) {
+  writeAtomically(file, [&](const fs::path& temporary) {
     std::ofstream stream(temporary, std::ios::binary);
     stream << text;
-    if (!stream) fail(temporary, "cannot write file");
-  }
-  std::error_code error;
-  fs::rename(temporary, file, error);
-  if (error) fail(file, "cannot write file: " + error.message());
+    if (!stream.flush()) fail(file, "cannot write file");
+  });
 }
 
 json number(double value) { return std::isfinite(value) ? json(value) : json(); }
@@ -119,7 +116,7 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
     }
     document["cases"].push_back(entry);
   }
-  writeAtomically(file, document.dump(2) + "\n");
+  writeText(file, document.dump(2) + "\n");
 }
 
 std::string ladderSvg(const std::vector<CaseResult>& cases, const std::string& scene,
@@ -303,7 +300,7 @@ relMSE, estimated from two independent halves, is at most )"
        << " stages run, " << summary.cachedStages << " taken from the cache. Thumbnails: ACES fitted tone curve, the"
           " exposure that maps the reference's median scored luminance to 0.18; heat maps: HDR-FLIP error,"
           " magma, 0 to 1.</p>\n</body></html>\n";
-  writeAtomically(file, html.str());
+  writeText(file, html.str());
 }
 
 }  // namespace iblkit

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "core/temporary_files.h"
 
 namespace iblkit {
 
@@ -25,21 +26,24 @@ fs::path StageCache::stage(const std::string& name, const std::string& key,
   }
   if (hit) *hit = false;
   ++misses_;
-  // The process id keeps two reports sharing a cache from writing into the same temporary folder.
-  const fs::path temporary = root_ / (name + "-" + key + ".tmp-" + std::to_string(::getpid()));
-  fs::remove_all(temporary, error);
-  fs::create_directories(temporary, error);
-  if (error) fail(temporary, "cannot create folder: " + error.message());
+  // A unique name keeps two reports sharing a cache from writing into the same temporary folder,
+  // and an interrupt removes it (core/temporary_files.h).
+  const fs::path temporary = createTemporaryFolder(folder, ".tmp-");
   try {
     produce(temporary);
   } catch (...) {
-    fs::remove_all(temporary, error);
+    discardTemporary(temporary);
     throw;
   }
-  fs::rename(temporary, folder, error);
-  if (error) {
+  bool renamed = false;
+  withTemporariesLocked([&] {
+    fs::rename(temporary, folder, error);
+    renamed = !error;
+    if (renamed) unregisterTemporary(temporary);
+  });
+  if (!renamed) {
     // Another report finished the same stage first: keep its folder.
-    fs::remove_all(temporary, error);
+    discardTemporary(temporary);
     if (!fs::is_directory(folder, error)) fail(folder, "cannot create the stage folder");
   }
   return folder;

@@ -22,6 +22,13 @@ void writeText(const std::filesystem::path& file, const std::string& text) {
   std::ofstream(file, std::ios::binary) << text;
 }
 
+// How many entries `folder` holds (a temporary left behind shows as one more).
+int entries(const std::filesystem::path& folder) {
+  int count = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder)) ++count;
+  return count;
+}
+
 TEST(ReadFileBytes, ReadsEveryByte) {
   const std::filesystem::path file = test::scratchDir() / "bytes.bin";
   const std::string text("a\0b\nc", 5);
@@ -48,7 +55,9 @@ TEST(WriteAtomically, WritesThroughATemporaryName) {
     EXPECT_FALSE(std::filesystem::exists(file));  // nothing under the final name while writing
     writeText(temporary, "done");
   });
-  EXPECT_EQ(seen.string(), file.string() + ".tmp");
+  // A unique name beside the file: "<file>.tmp-XXXXXX".
+  EXPECT_EQ(seen.string().rfind(file.string() + ".tmp-", 0), 0u) << seen;
+  EXPECT_EQ(seen.string().size(), file.string().size() + 11);
   EXPECT_EQ(contents(file), "done");
   EXPECT_FALSE(std::filesystem::exists(seen));
 }
@@ -64,19 +73,50 @@ TEST(WriteAtomically, FailedWriteLeavesTheOldFileAndNoTemporary) {
             }),
             file.string() + ": disk full");
   EXPECT_EQ(contents(file), "old");
-  EXPECT_FALSE(std::filesystem::exists(file.string() + ".tmp"));
+  EXPECT_EQ(entries(file.parent_path()), 1);
 }
 
-TEST(WriteAtomically, RenameFailureIsAnError) {
-  // A non-empty directory under the final name cannot be replaced by a file.
+TEST(WriteAtomically, AFolderUnderTheFinalNameIsAnError) {
   const std::filesystem::path target = test::scratchDir() / "taken";
   std::filesystem::create_directories(target / "inside");
+  bool wrote = false;
   EXPECT_EQ(test::errorMessage([&] {
-              writeAtomically(target,
-                              [](const std::filesystem::path& temporary) { writeText(temporary, "x"); });
+              writeAtomically(target, [&](const std::filesystem::path& temporary) {
+                wrote = true;
+                writeText(temporary, "x");
+              });
             }),
-            target.string() + ": cannot rename taken.tmp: Is a directory");
-  EXPECT_FALSE(std::filesystem::exists(target.string() + ".tmp"));
+            target.string() + ": is a folder");
+  EXPECT_FALSE(wrote);
+  EXPECT_EQ(entries(target.parent_path()), 1);
+}
+
+// -o /dev/full run as root replaced the device node with a regular file: the rename must never
+// replace what is not a regular file.
+TEST(WriteAtomically, NeverReplacesADeviceNode) {
+  const std::filesystem::path device = std::filesystem::exists("/dev/full") ? "/dev/full" : "/dev/null";
+  EXPECT_EQ(test::errorMessage([&] {
+              writeAtomically(device, [](const std::filesystem::path& temporary) { writeText(temporary, "x"); });
+            }),
+            device.string() + ": exists and is not a regular file (not replaced)");
+  EXPECT_TRUE(std::filesystem::is_character_file(device));
+  // Also when it appears while the temporary is written (checked again before the rename).
+  const std::filesystem::path link = test::scratchDir() / "late";
+  EXPECT_EQ(test::errorMessage([&] {
+              writeAtomically(link, [&](const std::filesystem::path& temporary) {
+                writeText(temporary, "x");
+                std::filesystem::create_symlink(device, link);
+              });
+            }),
+            link.string() + ": exists and is not a regular file (not replaced)");
+  EXPECT_TRUE(std::filesystem::is_character_file(device));
+  EXPECT_EQ(entries(link.parent_path()), 1);  // the link; no temporary
+}
+
+TEST(WriteAtomically, AMissingFolderNamesTheFile) {
+  const std::filesystem::path file = test::scratchDir() / "no" / "out.txt";
+  EXPECT_EQ(test::errorMessage([&] { writeAtomically(file, [](const std::filesystem::path&) {}); }),
+            file.string() + ": cannot create a temporary file beside it: No such file or directory");
 }
 
 }  // namespace

@@ -1,0 +1,171 @@
+// End-to-end: no program overwrites or deletes what it did not write (issue 13, "Data loss", and
+// crash 4). Each case runs the real program on a small generated scene and checks the exit
+// status, the one error line naming the output and the reason, and that the input is untouched.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/small_scene.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+using test::shellQuoted;
+
+struct Run {
+  int status = -1;
+  std::string output;
+};
+
+Run run(const std::string& program, const std::string& arguments) {
+  Run result;
+  result.status = test::runCommand(shellQuoted(test::binDir() / program) + " " + arguments + " 2>&1", &result.output);
+  return result;
+}
+
+// The output is exactly one line starting "PROGRAM: OUTPUT: " and holding `reason`.
+void expectOneLine(const Run& run, const std::string& program, const fs::path& output, const std::string& reason) {
+  EXPECT_EQ(run.status, 1) << run.output;
+  EXPECT_EQ(run.output.rfind(program + ": " + output.string() + ": ", 0), 0u) << run.output;
+  EXPECT_NE(run.output.find(reason), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find('\n'), run.output.size() - 1) << run.output;
+}
+
+// A device node that exists on every Linux machine; /dev/full as the issue's case.
+fs::path deviceNode() { return fs::exists("/dev/full") ? fs::path("/dev/full") : fs::path("/dev/null"); }
+
+bool isCharacterDevice(const fs::path& path) {
+  struct stat info {};
+  return ::lstat(path.c_str(), &info) == 0 && S_ISCHR(info.st_mode);
+}
+
+TEST(OutputSafety, TraceRefusesToOverwriteTheSceneOrTheMap) {
+  const fs::path root = test::scratchDir();
+  const test::SmallScene small = test::writeSmallScene(root);
+  const std::string scene = test::fileBytes(small.scene), map = test::fileBytes(small.map);
+  const std::string trace = shellQuoted(small.scene) + " --spp 1 --width 8 --height 6 ";
+  expectOneLine(run("iblkit-trace", trace + "-o " + shellQuoted(small.scene)), "iblkit-trace", small.scene,
+                "output is the same file as the input " + small.scene.string());
+  expectOneLine(run("iblkit-trace", trace + "-o " + shellQuoted(root / "out.exr") + " --png " + shellQuoted(small.map)),
+                "iblkit-trace", small.map, "output is the same file as the input");
+  expectOneLine(run("iblkit-trace", trace + "-o " + shellQuoted(root / "out.exr") + " --depth " +
+                                        shellQuoted(root / "models" / ".." / "scene.json")),
+                "iblkit-trace", root / "models" / ".." / "scene.json", "output is the same file as the input");
+  // Through a link.
+  fs::create_symlink(small.model, root / "link.exr");
+  expectOneLine(run("iblkit-trace", trace + "-o " + shellQuoted(root / "link.exr")), "iblkit-trace",
+                root / "link.exr", "output is the same file as the input " + small.model.string());
+  EXPECT_EQ(test::fileBytes(small.scene), scene);
+  EXPECT_EQ(test::fileBytes(small.map), map);
+  EXPECT_FALSE(fs::exists(root / "out.exr"));
+  // Two outputs on one file.
+  expectOneLine(run("iblkit-trace", trace + "-o " + shellQuoted(root / "out.exr") + " --albedo " +
+                                        shellQuoted(root / "out.exr")),
+                "iblkit-trace", root / "out.exr", "given as two outputs");
+  // And the same command with a new output works.
+  const Run good = run("iblkit-trace", trace + "-o " + shellQuoted(root / "out.exr"));
+  EXPECT_EQ(good.status, 0) << good.output;
+  EXPECT_TRUE(fs::is_regular_file(root / "out.exr"));
+}
+
+TEST(OutputSafety, ScoreRefusesAHeatMapOnAnInput) {
+  const fs::path root = test::scratchDir();
+  const test::SmallScene small = test::writeSmallScene(root);
+  const fs::path png = root / "a.png";
+  ASSERT_EQ(run("iblkit-info", shellQuoted(small.map) + " --png " + shellQuoted(png)).status, 0);
+  const std::string bytes = test::fileBytes(png);
+  expectOneLine(run("iblkit-score", shellQuoted(png) + " " + shellQuoted(png) + " --heatmap " + shellQuoted(png)),
+                "iblkit-score", png, "output is the same file as the input " + png.string());
+  EXPECT_EQ(test::fileBytes(png), bytes);
+}
+
+TEST(OutputSafety, InfoRefusesAPreviewOnItsInput) {
+  const fs::path root = test::scratchDir();
+  const test::SmallScene small = test::writeSmallScene(root);
+  const std::string bytes = test::fileBytes(small.map);
+  expectOneLine(run("iblkit-info", shellQuoted(small.map) + " --png " + shellQuoted(small.map)), "iblkit-info",
+                small.map, "output is the same file as the input");
+  EXPECT_EQ(test::fileBytes(small.map), bytes);
+}
+
+// -o /dev/full, run as root, replaced the device node with a regular file.
+TEST(OutputSafety, ADeviceNodeIsNeverReplaced) {
+  const fs::path root = test::scratchDir();
+  const test::SmallScene small = test::writeSmallScene(root);
+  const fs::path device = deviceNode();
+  ASSERT_TRUE(isCharacterDevice(device));
+  const std::string trace = shellQuoted(small.scene) + " --spp 1 --width 8 --height 6 ";
+  expectOneLine(run("iblkit-trace", trace + "-o " + shellQuoted(device)), "iblkit-trace", device,
+                "exists and is not a regular file");
+  expectOneLine(run("iblkit-trace", trace + "-o " + shellQuoted(root / "out.exr") + " --png " + shellQuoted(device)),
+                "iblkit-trace", device, "exists and is not a regular file");
+  expectOneLine(run("iblkit-info", shellQuoted(small.map) + " --png " + shellQuoted(device)), "iblkit-info", device,
+                "exists and is not a regular file");
+  expectOneLine(run("iblkit-bake", shellQuoted(small.scene) + " --ao-rays 1 -o " + shellQuoted(device)),
+                "iblkit-bake", device, "exists and is not a folder");
+  expectOneLine(run("iblkit-report", shellQuoted(small.scene) + " --envs " + shellQuoted(small.map) + " -o " +
+                                         shellQuoted(device)),
+                "iblkit-report", device, "exists and is not a folder");
+  EXPECT_TRUE(isCharacterDevice(device));
+  EXPECT_FALSE(fs::exists(root / "out.exr"));
+}
+
+// It deleted the folder holding the map it was reading.
+TEST(OutputSafety, BakeRefusesAFolderThatIsNotABake) {
+  const fs::path root = test::scratchDir();
+  const test::SmallScene small = test::writeSmallScene(root);
+  const fs::path notes = root / "notes";
+  fs::create_directories(notes);
+  std::ofstream(notes / "todo.txt") << "mine";
+  const std::string bake = shellQuoted(small.scene) + " --ao-rays 2 --specular-samples 1 --lut-size 8 -o ";
+  expectOneLine(run("iblkit-bake", bake + shellQuoted(notes)), "iblkit-bake", notes,
+                "exists and is not an iblkit bake folder (use --force to replace it)");
+  EXPECT_EQ(test::fileBytes(notes / "todo.txt"), "mine");
+  // The folder holding the map (and the scene): refused even with --force.
+  const std::string map = test::fileBytes(small.map);
+  expectOneLine(run("iblkit-bake", bake + shellQuoted(small.map.parent_path()) + " --force"), "iblkit-bake",
+                small.map.parent_path(), "output folder holds the input " + small.map.string());
+  expectOneLine(run("iblkit-bake", bake + shellQuoted(root) + " --force"), "iblkit-bake", root,
+                "output folder holds the input");
+  EXPECT_EQ(test::fileBytes(small.map), map);
+  // A folder inside an input folder is no input: a bake may go into a new folder beside the scene.
+  // --force replaces a folder of another kind; a bake folder is replaced without it.
+  Run forced = run("iblkit-bake", bake + shellQuoted(notes) + " --force");
+  ASSERT_EQ(forced.status, 0) << forced.output;
+  EXPECT_FALSE(fs::exists(notes / "todo.txt"));
+  EXPECT_TRUE(fs::is_regular_file(notes / "bake.json"));
+  forced = run("iblkit-bake", bake + shellQuoted(notes));
+  EXPECT_EQ(forced.status, 0) << forced.output;
+  // An empty folder is fine.
+  fs::create_directories(root / "empty");
+  const Run empty = run("iblkit-bake", bake + shellQuoted(root / "empty"));
+  EXPECT_EQ(empty.status, 0) << empty.output;
+}
+
+// Crash 4: an uncaught std::filesystem_error aborted.
+TEST(OutputSafety, ReportOntoAnExistingFileIsOneLineAndExitOne) {
+  const fs::path root = test::scratchDir();
+  const test::SmallScene small = test::writeSmallScene(root);
+  const fs::path file = root / "existing.txt";
+  std::ofstream(file) << "keep";
+  expectOneLine(run("iblkit-report", shellQuoted(small.scene) + " --envs " + shellQuoted(small.map) + " -o " +
+                                         shellQuoted(file)),
+                "iblkit-report", file, "exists and is not a folder");
+  EXPECT_EQ(test::fileBytes(file), "keep");
+  // And onto a folder that is not a report.
+  const fs::path notes = root / "notes";
+  fs::create_directories(notes);
+  std::ofstream(notes / "todo.txt") << "mine";
+  expectOneLine(run("iblkit-report", shellQuoted(small.scene) + " --envs " + shellQuoted(small.map) + " -o " +
+                                         shellQuoted(notes)),
+                "iblkit-report", notes, "exists and is not an iblkit report folder (use --force to replace it)");
+  EXPECT_EQ(test::fileBytes(notes / "todo.txt"), "mine");
+}
+
+}  // namespace
+}  // namespace iblkit
