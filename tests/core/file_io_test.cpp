@@ -1,6 +1,8 @@
 #include "core/file_io.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 #include <fstream>
 #include <iterator>
@@ -93,15 +95,18 @@ TEST(WriteAtomically, AFolderUnderTheFinalNameIsAnError) {
 
 // -o /dev/full run as root replaced the device node with a regular file: the rename must never
 // replace what is not a regular file.
+// The node is made in the scratch folder (a character device like /dev/full where the test may
+// make one, else a FIFO): a regression must not replace the machine's /dev/full.
 TEST(WriteAtomically, NeverReplacesADeviceNode) {
-  const std::filesystem::path device = std::filesystem::exists("/dev/full") ? "/dev/full" : "/dev/null";
+  const std::filesystem::path device = test::scratchDir() / "full";
+  if (::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) ASSERT_EQ(::mkfifo(device.c_str(), 0666), 0);
   EXPECT_EQ(test::errorMessage([&] {
               writeAtomically(device, [](const std::filesystem::path& temporary) { writeText(temporary, "x"); });
             }),
             device.string() + ": exists and is not a regular file (not replaced)");
-  EXPECT_TRUE(std::filesystem::is_character_file(device));
+  EXPECT_FALSE(std::filesystem::is_regular_file(device));
   // Also when it appears while the temporary is written (checked again before the rename).
-  const std::filesystem::path link = test::scratchDir() / "late";
+  const std::filesystem::path link = device.parent_path() / "late";
   EXPECT_EQ(test::errorMessage([&] {
               writeAtomically(link, [&](const std::filesystem::path& temporary) {
                 writeText(temporary, "x");
@@ -109,8 +114,8 @@ TEST(WriteAtomically, NeverReplacesADeviceNode) {
               });
             }),
             link.string() + ": exists and is not a regular file (not replaced)");
-  EXPECT_TRUE(std::filesystem::is_character_file(device));
-  EXPECT_EQ(entries(link.parent_path()), 1);  // the link; no temporary
+  EXPECT_FALSE(std::filesystem::is_regular_file(device));
+  EXPECT_EQ(entries(link.parent_path()), 2);  // the node and the link; no temporary
 }
 
 TEST(WriteAtomically, AMissingFolderNamesTheFile) {

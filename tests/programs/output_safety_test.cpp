@@ -3,6 +3,7 @@
 // status, the one error line naming the output and the reason, and that the input is untouched.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,31 +18,37 @@ namespace {
 namespace fs = std::filesystem;
 using test::shellQuoted;
 
-struct Run {
+struct Outcome {
   int status = -1;
   std::string output;
 };
 
-Run run(const std::string& program, const std::string& arguments) {
-  Run result;
+Outcome run(const std::string& program, const std::string& arguments) {
+  Outcome result;
   result.status = test::runCommand(shellQuoted(test::binDir() / program) + " " + arguments + " 2>&1", &result.output);
   return result;
 }
 
 // The output is exactly one line starting "PROGRAM: OUTPUT: " and holding `reason`.
-void expectOneLine(const Run& run, const std::string& program, const fs::path& output, const std::string& reason) {
+void expectOneLine(const Outcome& run, const std::string& program, const fs::path& output, const std::string& reason) {
   EXPECT_EQ(run.status, 1) << run.output;
   EXPECT_EQ(run.output.rfind(program + ": " + output.string() + ": ", 0), 0u) << run.output;
   EXPECT_NE(run.output.find(reason), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find('\n'), run.output.size() - 1) << run.output;
 }
 
-// A device node that exists on every Linux machine; /dev/full as the case.
-fs::path deviceNode() { return fs::exists("/dev/full") ? fs::path("/dev/full") : fs::path("/dev/null"); }
+// Not a regular file, in `root`: a character device like /dev/full (major 1, minor 7) where the
+// tests may make one (root, as in CI), else a FIFO. Not /dev/full itself: a regression would
+// replace the machine's device node (as the old programs did here, run as root).
+fs::path specialFile(const fs::path& root) {
+  const fs::path node = root / "full";
+  if (::mknod(node.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) EXPECT_EQ(::mkfifo(node.c_str(), 0666), 0);
+  return node;
+}
 
-bool isCharacterDevice(const fs::path& path) {
+bool isSpecial(const fs::path& path) {
   struct stat info {};
-  return ::lstat(path.c_str(), &info) == 0 && S_ISCHR(info.st_mode);
+  return ::lstat(path.c_str(), &info) == 0 && (S_ISCHR(info.st_mode) || S_ISFIFO(info.st_mode));
 }
 
 TEST(OutputSafety, TraceRefusesToOverwriteTheSceneOrTheMap) {
@@ -68,7 +75,7 @@ TEST(OutputSafety, TraceRefusesToOverwriteTheSceneOrTheMap) {
                                         shellQuoted(root / "out.exr")),
                 "iblkit-trace", root / "out.exr", "given as two outputs");
   // And the same command with a new output works.
-  const Run good = run("iblkit-trace", trace + "-o " + shellQuoted(root / "out.exr"));
+  const Outcome good = run("iblkit-trace", trace + "-o " + shellQuoted(root / "out.exr"));
   EXPECT_EQ(good.status, 0) << good.output;
   EXPECT_TRUE(fs::is_regular_file(root / "out.exr"));
 }
@@ -97,8 +104,8 @@ TEST(OutputSafety, InfoRefusesAPreviewOnItsInput) {
 TEST(OutputSafety, ADeviceNodeIsNeverReplaced) {
   const fs::path root = test::scratchDir();
   const test::SmallScene small = test::writeSmallScene(root);
-  const fs::path device = deviceNode();
-  ASSERT_TRUE(isCharacterDevice(device));
+  const fs::path device = specialFile(root);
+  ASSERT_TRUE(isSpecial(device));
   const std::string trace = shellQuoted(small.scene) + " --spp 1 --width 8 --height 6 ";
   expectOneLine(run("iblkit-trace", trace + "-o " + shellQuoted(device)), "iblkit-trace", device,
                 "exists and is not a regular file");
@@ -111,7 +118,7 @@ TEST(OutputSafety, ADeviceNodeIsNeverReplaced) {
   expectOneLine(run("iblkit-report", shellQuoted(small.scene) + " --envs " + shellQuoted(small.map) + " -o " +
                                          shellQuoted(device)),
                 "iblkit-report", device, "exists and is not a folder");
-  EXPECT_TRUE(isCharacterDevice(device));
+  EXPECT_TRUE(isSpecial(device));
   EXPECT_FALSE(fs::exists(root / "out.exr"));
 }
 
@@ -135,7 +142,7 @@ TEST(OutputSafety, BakeRefusesAFolderThatIsNotABake) {
   EXPECT_EQ(test::fileBytes(small.map), map);
   // A folder inside an input folder is no input: a bake may go into a new folder beside the scene.
   // --force replaces a folder of another kind; a bake folder is replaced without it.
-  Run forced = run("iblkit-bake", bake + shellQuoted(notes) + " --force");
+  Outcome forced = run("iblkit-bake", bake + shellQuoted(notes) + " --force");
   ASSERT_EQ(forced.status, 0) << forced.output;
   EXPECT_FALSE(fs::exists(notes / "todo.txt"));
   EXPECT_TRUE(fs::is_regular_file(notes / "bake.json"));
@@ -143,7 +150,7 @@ TEST(OutputSafety, BakeRefusesAFolderThatIsNotABake) {
   EXPECT_EQ(forced.status, 0) << forced.output;
   // An empty folder is fine.
   fs::create_directories(root / "empty");
-  const Run empty = run("iblkit-bake", bake + shellQuoted(root / "empty"));
+  const Outcome empty = run("iblkit-bake", bake + shellQuoted(root / "empty"));
   EXPECT_EQ(empty.status, 0) << empty.output;
 }
 
