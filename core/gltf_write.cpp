@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/gltf_model.h"
 
 namespace iblkit {
@@ -165,30 +166,6 @@ bool isBinaryOutput(const fs::path& output) {
   return extension == ".glb";
 }
 
-// Removes the temporary file unless the write completed.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(fs::path path) : path_(std::move(path)) {}
-  ~TemporaryFile() {
-    std::error_code ignored;
-    if (!committed_) fs::remove(path_, ignored);
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  const fs::path& path() const { return path_; }
-  void commit(const fs::path& destination) {
-    std::error_code error;
-    fs::rename(path_, destination, error);
-    if (error) fail(destination, "cannot rename " + path_.string() + ": " + error.message());
-    committed_ = true;
-  }
-
- private:
-  fs::path path_;
-  bool committed_ = false;
-};
-
 }  // namespace
 
 void writeGltfWithAttributes(const fs::path& input, const fs::path& output,
@@ -200,16 +177,14 @@ void writeGltfWithAttributes(const fs::path& input, const fs::path& output,
     addAttributes(model, attributes);
     repackBuffers(model, input);
 
-    TemporaryFile temporary(fs::path(output).concat(".tmp"));
-    {
-      std::ofstream stream(temporary.path(), std::ios::binary);
-      if (!stream) fail(output, "cannot create " + temporary.path().string());
+    writeAtomically(output, [&](const fs::path& temporary) {
+      std::ofstream stream(temporary, std::ios::binary);
+      if (!stream) fail(output, "cannot create " + temporary.string());
       tinygltf::TinyGLTF writer;
       writer.WriteGltfSceneToStream(&model, stream, /*prettyPrint=*/!binary, /*writeBinary=*/binary);
       stream.close();
-      if (!stream) fail(output, "cannot write " + temporary.path().string());
-    }
-    temporary.commit(output);
+      if (!stream) fail(output, "cannot write " + temporary.string());
+    });
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
