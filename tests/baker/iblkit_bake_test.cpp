@@ -113,6 +113,7 @@ TEST(IblkitBake, ReplacesAnEarlierOutputOnlyAfterSuccess) {
   const fs::path scene = writeBallScene(root), out = root / "out";
   fs::create_directories(out);
   std::ofstream(out / "stale.txt") << "from an earlier bake";
+  std::ofstream(out / "bake.json") << "{}";  // what marks a bake folder (else --force is needed)
   int status = 0;
   std::string log = bake(scene.string() + " -o " + out.string() + " --ao-rays 4 --ao-distance 0.1", &status);
   ASSERT_EQ(status, 0) << log;

@@ -76,7 +76,7 @@ TEST(Png, BadFilesGiveClearErrors) {
             empty.string() + ": cannot write an empty image");
   const std::filesystem::path noDir = dir / "missing" / "out.png";
   EXPECT_EQ(test::errorMessage([&] { writePng(noDir, Image(1, 1)); }),
-            noDir.string() + ": cannot write PNG: No such file or directory");
+            noDir.string() + ": cannot create a temporary file beside it: No such file or directory");
 }
 
 }  // namespace
