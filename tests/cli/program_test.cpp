@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -87,6 +88,12 @@ TEST(Program, EveryOtherExceptionIsOneLineAndStatusOne) {
       {[]() -> int { throw std::invalid_argument("stof"); }, "test-program: stof\n"},
       {[]() -> int { throw Error("first line\n  second line\n"); }, "test-program: first line second line\n"},
       {[]() -> int { throw 42; }, "test-program: unknown error\n"},
+      // A filesystem error names its path first, like every other error (crash 4 of issue 13).
+      {[]() -> int {
+         std::filesystem::create_directories("/dev/null/out");
+         return 0;
+       },
+       "test-program: /dev/null/out: Not a directory\n"},
   };
   for (const auto& [run, expected] : cases) {
     const Outcome outcome = runTestProgram({"--count", "3"}, run);

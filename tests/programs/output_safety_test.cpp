@@ -172,6 +172,15 @@ TEST(OutputSafety, ReportOntoAnExistingFileIsOneLineAndExitOne) {
                                          shellQuoted(notes)),
                 "iblkit-report", notes, "exists and is not an iblkit report folder (use --force to replace it)");
   EXPECT_EQ(test::fileBytes(notes / "todo.txt"), "mine");
+  // --force: the report writes into the folder (it replaces only its own files).
+  const Outcome forced = run("iblkit-report", shellQuoted(small.scene) + " --envs " + shellQuoted(small.map) +
+                                                  " --bin " + shellQuoted(test::binDir()) +
+                                                  " --width 8 --height 8 --pass-spp 1 --min-passes 2 --max-passes 2"
+                                                  " --bench 0 --modes sh --force -o " + shellQuoted(notes));
+  EXPECT_EQ(forced.status, 0) << forced.output;
+  EXPECT_TRUE(fs::is_regular_file(notes / ".iblkit-report"));
+  EXPECT_TRUE(fs::is_regular_file(notes / "report.json"));
+  EXPECT_EQ(test::fileBytes(notes / "todo.txt"), "mine");
 }
 
 }  // namespace
