@@ -65,7 +65,7 @@ CLI::Option* addNameOption(CLI::App& app, const std::string& name, std::string& 
 void addEnvironmentOptions(CLI::App& app, EnvironmentOverride& override);
 
 // --force: an existing output folder that is not of the program's kind may be replaced
-// (checkOutputs' ProgramFiles::force).
+// (checkOutputs' `force`).
 void addForceOption(CLI::App& app, bool& force);
 
 // The files a loaded scene was read from: the scene file, its models and its environment map

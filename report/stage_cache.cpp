@@ -1,7 +1,5 @@
 #include "report/stage_cache.h"
 
-#include <unistd.h>
-
 #include "core/error.h"
 #include "core/temporary_files.h"
 

@@ -19,8 +19,10 @@ StageRun runStage(const StageCache& cache, const std::string& name, const StageC
     const auto start = std::chrono::steady_clock::now();
     runProgram(argv, folder / "log.txt");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::ofstream(folder / "stage.json")
-        << json{{"seconds", seconds}, {"command", commandLine(argv)}}.dump(2);
+    // Checked: a stage folder is renamed into the cache only with its whole record.
+    std::ofstream record(folder / "stage.json");
+    record << json{{"seconds", seconds}, {"command", commandLine(argv)}}.dump(2);
+    if (!record.flush()) fail(folder / "stage.json", "cannot write the stage record");
   });
   std::ifstream stream(run.folder / "stage.json");
   const json record = json::parse(stream, nullptr, false);
