@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <optional>
 #include <span>
@@ -214,9 +215,50 @@ class ExrLevelReader {
 };
 
 // Opens `file` and runs use(reader), with OpenEXR's errors turned into Error.
+// OpenEXR allocates an attribute's value at the size the header claims before reading it (an
+// attribute of unknown type, OpaqueAttribute), so a 400-byte file claiming a 2 GiB attribute made
+// it allocate and clear 2 GiB before it found the file truncated (found by fuzz/fuzz_exr). Every
+// header attribute's size is checked against the bytes left first; what this walk cannot follow
+// (a name without its terminating NUL, the chunk tables) is left for OpenEXR to report.
+void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vector<char>& bytes) {
+  constexpr std::uint32_t kMultiPartFlag = 0x1000;
+  constexpr char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 4) != 0) return;  // OpenEXR reports it
+  std::uint32_t version = 0;
+  std::memcpy(&version, bytes.data() + 4, sizeof version);
+  std::size_t at = 8;
+  const auto skipString = [&] {
+    const auto end = std::find(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end(), '\0');
+    if (end == bytes.end()) return false;
+    at = static_cast<std::size_t>(end - bytes.begin()) + 1;
+    return true;
+  };
+  for (;;) {  // one header, or each part's header up to the empty one ending a multi-part file
+    bool empty = true;
+    for (;;) {
+      if (at >= bytes.size()) return;
+      if (bytes[at] == '\0') {
+        ++at;
+        break;
+      }
+      empty = false;
+      if (!skipString() || !skipString() || bytes.size() - at < 4) return;  // name, type name
+      std::int32_t size = 0;
+      std::memcpy(&size, bytes.data() + at, sizeof size);
+      at += 4;
+      if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - at)
+        fail(file, "truncated file (unexpected end of data)");
+      at += static_cast<std::size_t>(size);
+    }
+    if (!(version & kMultiPartFlag) || empty) return;
+  }
+}
+
 template <class Use>
 auto withExrFile(const std::filesystem::path& file, Use&& use) {
-  MemoryStream stream(file, readFileBytes(file));
+  std::vector<char> bytes = readFileBytes(file);
+  checkHeaderAttributeSizes(file, bytes);
+  MemoryStream stream(file, std::move(bytes));
   return rethrowAsError(file, &stream, [&] {
     ExrLevelReader reader(file, stream);
     return use(reader);

@@ -1,7 +1,13 @@
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "core/image_io.h"
@@ -162,6 +168,46 @@ TEST(Exr, OpenExrErrorsBecomeOneLineErrors) {
   EXPECT_EQ(test::errorMessage([&] { writeExr(missingDir, numberedImage(2, 2)); }),
             missingDir.string() + ": Cannot open image file \"" + missingDir.string() +
                 ".tmp\". No such file or directory.");
+}
+
+// fuzz/fuzz_exr found it: OpenEXR allocates an attribute of unknown type at the size the header
+// claims before reading it, so a file of a few hundred bytes claiming a 2 GiB attribute allocated
+// 2 GiB. The sizes are checked against the file first: the reader says the file is truncated, and
+// allocates nothing large (checked in a child process limited to 1 GiB of address space, where
+// the 2 GiB allocation would fail with std::bad_alloc; not under ASan, which needs far more).
+TEST(Exr, AttributeClaimingMoreBytesThanTheFileIsTruncationWithoutAllocatingIt) {
+  const std::filesystem::path file = test::scratchDir() / "huge_attribute.exr";
+  writeExr(file, numberedImage(4, 2), {.stringAttributes = {{"iblkit:fuzz", "x"}}});
+  std::vector<char> bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string pattern("iblkit:fuzz\0string\0", 19);
+  const auto at = std::search(bytes.begin(), bytes.end(), pattern.begin(), pattern.end());
+  ASSERT_NE(at, bytes.end());
+  std::memcpy(&*at + 12, "fuzzed", 6);  // a type OpenEXR does not know: an opaque attribute
+  const std::int32_t claimed = 0x7fffffff;
+  std::memcpy(&*at + 19, &claimed, sizeof claimed);
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+
+  const std::string expected = file.string() + ": truncated file (unexpected end of data)";
+  EXPECT_EQ(test::errorMessage([&] { readExr(file); }), expected);
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "no address-space limit under AddressSanitizer";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  GTEST_SKIP() << "no address-space limit under AddressSanitizer";
+#endif
+#endif
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto readWithinOneGiB = [&] {
+    const rlim_t oneGiB = rlim_t{1} << 30;
+    const rlimit limit{oneGiB, oneGiB};
+    setrlimit(RLIMIT_AS, &limit);
+    _exit(test::errorMessage([&] { readExr(file); }) == expected ? 0 : 1);
+  };
+  EXPECT_EXIT(readWithinOneGiB(), testing::ExitedWithCode(0), "");
 }
 
 // Layouts our writer never makes are committed files in tests/data/exr, written once with
