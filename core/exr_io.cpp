@@ -119,7 +119,8 @@ EnvmapLayout envmapLayout(const Imf::Header& header) {
 // (ImfEnvmap.h maps directions to data-window pixel positions), whatever its origin.
 class ExrLevelReader {
  public:
-  ExrLevelReader(const std::filesystem::path& file, MemoryStream& stream) : file_(file) {
+  ExrLevelReader(const std::filesystem::path& file, MemoryStream& stream, std::size_t fileBytes)
+      : file_(file), fileBytes_(fileBytes) {
     bool tiled = false, deep = false, multiPart = false;
     if (!Imf::isOpenExrFile(stream, tiled, deep, multiPart))
       fail(file, "not an OpenEXR file (bad magic number)");
@@ -191,6 +192,7 @@ class ExrLevelReader {
     if (grey && !channels.findChannel("Y")) fail(file_, "no R, G, B or Y channel");
     if (grey && (channels.findChannel("RY") || channels.findChannel("BY")))
       fail(file_, "luminance/chroma (Y, RY, BY) images are not supported");
+    checkFileCanHold(window);
     Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
     Imf::FrameBuffer frameBuffer;
     for (int c = 0; c < 4; ++c) {
@@ -208,13 +210,31 @@ class ExrLevelReader {
     return image;
   }
 
+  // A file cannot hold much more pixel data than its size: uncompressed data is stored as is, and
+  // OpenEXR's codecs stay far below kMaxCompressionRatio (deflate's limit is about 1032:1). A
+  // header claiming more (a few hundred bytes claiming a 2^27-pixel data window, found by
+  // fuzz/fuzz_exr) is refused before its image (16 bytes a pixel) is allocated.
+  void checkFileCanHold(const Imath::Box2i& window) const {
+    constexpr double kMaxCompressionRatio = 4096.0;
+    const double pixels = (double(window.max.x) - window.min.x + 1) * (double(window.max.y) - window.min.y + 1);
+    double bytesPerPixel = 0.0;
+    for (auto it = header().channels().begin(); it != header().channels().end(); ++it)
+      bytesPerPixel += (it.channel().type == Imf::HALF ? 2.0 : 4.0) /
+                       (std::max(it.channel().xSampling, 1) * double(std::max(it.channel().ySampling, 1)));
+    const double ratio = header().compression() == Imf::NO_COMPRESSION ? 1.0 : kMaxCompressionRatio;
+    if (pixels * bytesPerPixel > ratio * double(fileBytes_))
+      fail(file_, "data window of " + std::to_string(window.max.x - window.min.x + 1) + " x " +
+                      std::to_string(window.max.y - window.min.y + 1) + " pixels holds more data than the file's " +
+                      std::to_string(fileBytes_) + " bytes can (truncated or corrupt header)");
+  }
+
   std::filesystem::path file_;
+  std::size_t fileBytes_ = 0;
   std::optional<Imf::InputFile> scanlineFile_;
   std::optional<Imf::TiledInputFile> tiledFile_;
   int levels_ = 1;
 };
 
-// Opens `file` and runs use(reader), with OpenEXR's errors turned into Error.
 // OpenEXR allocates an attribute's value at the size the header claims before reading it (an
 // attribute of unknown type, OpaqueAttribute), so a 400-byte file claiming a 2 GiB attribute made
 // it allocate and clear 2 GiB before it found the file truncated (found by fuzz/fuzz_exr). Every
@@ -254,13 +274,15 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
   }
 }
 
+// Opens `file` and runs use(reader), with OpenEXR's errors turned into Error.
 template <class Use>
 auto withExrFile(const std::filesystem::path& file, Use&& use) {
   std::vector<char> bytes = readFileBytes(file);
   checkHeaderAttributeSizes(file, bytes);
+  const std::size_t fileBytes = bytes.size();
   MemoryStream stream(file, std::move(bytes));
   return rethrowAsError(file, &stream, [&] {
-    ExrLevelReader reader(file, stream);
+    ExrLevelReader reader(file, stream, fileBytes);
     return use(reader);
   });
 }
