@@ -27,8 +27,8 @@ inline constexpr EnumName<Loader> kLoaderNames[] = {
 // "glTF" magic, scene.json, bake.json, sh9.json), and runs:
 //   Exr: readExrLevels, then readExr of level 0 with PixelRepair::Keep; Hdr: readRadianceHdr;
 //   Png: readPng; Gltf: loadGltf (Draco included); Scene: loadSceneFile (models it names are
-//   loaded; environment files are only checked to exist); BakeRecord: readBakeRecord;
-//   Sh9: readSh9Json.
+//   loaded; environment files are only checked to exist; beside the scene lie model.gltf, one
+//   triangle, and env.hdr, 2 x 1, for it to name); BakeRecord: readBakeRecord; Sh9: readSh9Json.
 // Warnings are silenced. With the environment variable IBLKIT_FUZZ_STRICT=1 a refusal must also
 // be an iblkit::Error whose message is one line naming the input file, else it aborts.
 // A refusal's message goes to *refusal when given.
