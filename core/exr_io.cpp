@@ -21,6 +21,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -235,11 +236,41 @@ class ExrLevelReader {
   int levels_ = 1;
 };
 
-// OpenEXR allocates an attribute's value at the size the header claims before reading it (an
-// attribute of unknown type, OpaqueAttribute), so a 400-byte file claiming a 2 GiB attribute made
-// it allocate and clear 2 GiB before it found the file truncated (found by fuzz/fuzz_exr). Every
-// header attribute's size is checked against the bytes left first; what this walk cannot follow
-// (a name without its terminating NUL, the chunk tables) is left for OpenEXR to report.
+// How many bytes OpenEXR 3.1's Header::readFrom consumes for the value of an attribute of type
+// `type` whose declared size is `size`, starting at `at`: the fixed size of a fixed-size type
+// (read whatever the declared size), a channel list up to its empty name, and the declared size
+// for the rest (strings, vectors, previews, whose size OpenEXR checks against their dimensions, and
+// types it does not know, kept as opaque bytes). Nullopt when the bytes end first.
+std::optional<std::uint64_t> attributeValueBytes(const std::vector<char>& bytes, std::size_t at,
+                                                 std::string_view type, std::int32_t size) {
+  static constexpr std::pair<std::string_view, std::uint64_t> kFixed[] = {
+      {"box2i", 16},     {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8},
+      {"envmap", 1},     {"float", 4},  {"int", 4},             {"keycode", 28},    {"lineOrder", 1},
+      {"m33f", 36},      {"m33d", 72},  {"m44f", 64},           {"m44d", 128},      {"rational", 8},
+      {"tiledesc", 9},   {"timecode", 8}, {"v2i", 8},           {"v2f", 8},         {"v2d", 16},
+      {"v3i", 12},       {"v3f", 12},   {"v3d", 24},            {"deepImageState", 1}};
+  for (const auto& [name, fixed] : kFixed)
+    if (type == name) return fixed;
+  if (type == "chlist") {  // name\0 and 16 bytes per channel, up to an empty name
+    std::size_t end = at;
+    for (;;) {
+      if (end >= bytes.size()) return std::nullopt;
+      if (bytes[end] == '\0') return end + 1 - at;
+      const auto nul = std::find(bytes.begin() + static_cast<std::ptrdiff_t>(end), bytes.end(), '\0');
+      if (nul == bytes.end()) return std::nullopt;
+      end = static_cast<std::size_t>(nul - bytes.begin()) + 1 + 16;
+    }
+  }
+  return static_cast<std::uint64_t>(std::max(size, 0));
+}
+
+// OpenEXR allocates an attribute's value before reading it: an attribute of a type it does not
+// know at the size the header claims (OpaqueAttribute). A 445-byte file claiming a 2 GiB
+// attribute made it allocate and clear 2 GiB before it found the file truncated (found by
+// fuzz/fuzz_exr). So the header is walked first as OpenEXR reads it (a walk by the declared sizes
+// alone got out of step with OpenEXR's reads through a channel list on a second fuzzed file), and
+// a value running past the end of the file is a truncated file. What the walk cannot follow (a
+// name without its NUL) is left to OpenEXR, which reports it.
 void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vector<char>& bytes) {
   constexpr std::uint32_t kMultiPartFlag = 0x1000;
   constexpr char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
@@ -247,9 +278,10 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
   std::uint32_t version = 0;
   std::memcpy(&version, bytes.data() + 4, sizeof version);
   std::size_t at = 8;
-  const auto skipString = [&] {
+  const auto readString = [&](std::string_view* text) {
     const auto end = std::find(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end(), '\0');
     if (end == bytes.end()) return false;
+    *text = std::string_view(bytes.data() + at, static_cast<std::size_t>(end - bytes.begin()) - at);
     at = static_cast<std::size_t>(end - bytes.begin()) + 1;
     return true;
   };
@@ -262,13 +294,15 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
         break;
       }
       empty = false;
-      if (!skipString() || !skipString() || bytes.size() - at < 4) return;  // name, type name
+      std::string_view name, type;
+      if (!readString(&name) || !readString(&type) || bytes.size() - at < 4) return;
       std::int32_t size = 0;
       std::memcpy(&size, bytes.data() + at, sizeof size);
       at += 4;
-      if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - at)
-        fail(file, "truncated file (unexpected end of data)");
-      at += static_cast<std::size_t>(size);
+      if (size < 0) return;  // OpenEXR refuses it before reading
+      const std::optional<std::uint64_t> value = attributeValueBytes(bytes, at, type, size);
+      if (!value || *value > bytes.size() - at) fail(file, "truncated file (unexpected end of data)");
+      at += static_cast<std::size_t>(*value);
     }
     if (!(version & kMultiPartFlag) || empty) return;
   }

@@ -220,6 +220,33 @@ TEST(Exr, AttributeClaimingMoreBytesThanTheFileIsTruncationWithoutAllocatingIt) 
   expectRefusedWithinOneGiB(file, file.string() + ": truncated file (unexpected end of data)");
 }
 
+// The header is walked as OpenEXR reads it, not by the declared sizes alone: OpenEXR reads a
+// channel list up to its empty name whatever its declared size says, so a channel list declaring
+// 0 bytes hides the opaque attribute that follows from a walk by declared sizes.
+TEST(Exr, OpaqueAttributeAfterAChannelListOfWrongDeclaredSizeIsStillChecked) {
+  const std::filesystem::path file = test::scratchDir() / "chlist_out_of_step.exr";
+  writeExr(file, numberedImage(4, 2), {.stringAttributes = {{"iblkit:fuzz", "x"}}});
+  std::vector<char> bytes = fileBytes(file);
+  const std::size_t at = attributeAt(bytes, std::string("iblkit:fuzz") + '\0' + "string");
+  std::memcpy(&bytes[at + 12], "fuzzed", 6);
+  const std::int32_t claimed = 0x7fffffff;
+  std::memcpy(&bytes[at + 19], &claimed, sizeof claimed);
+  const std::size_t channels = attributeAt(bytes, std::string("channels") + '\0' + "chlist");
+  // Moves the opaque attribute right after the channel list (before the other attributes) ...
+  std::vector<char> opaque(bytes.begin() + std::ptrdiff_t(at), bytes.begin() + std::ptrdiff_t(at + 24));
+  bytes.erase(bytes.begin() + std::ptrdiff_t(at), bytes.begin() + std::ptrdiff_t(at + 24));
+  std::int32_t listBytes = 0;
+  std::memcpy(&listBytes, &bytes[channels + 16], sizeof listBytes);
+  const std::size_t afterList = channels + 16 + 4 + std::size_t(listBytes);
+  bytes.insert(bytes.begin() + std::ptrdiff_t(afterList), opaque.begin(), opaque.end());
+  // ... and declares the channel list 0 bytes long: a walk by declared sizes would then read the
+  // list's first channel name as the next attribute and lose step.
+  const std::int32_t zero = 0;
+  std::memcpy(&bytes[channels + 16], &zero, sizeof zero);
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  expectRefusedWithinOneGiB(file, file.string() + ": truncated file (unexpected end of data)");
+}
+
 TEST(Exr, DataWindowLargerThanTheFileCanHoldIsRefusedBeforeAllocating) {
   const std::filesystem::path file = test::scratchDir() / "huge_window.exr";
   writeExr(file, numberedImage(4, 2));  // ZIP-compressed half RGB
