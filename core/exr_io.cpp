@@ -15,6 +15,7 @@
 #include <ImfTiledOutputFile.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -118,6 +119,22 @@ EnvmapLayout envmapLayout(const Imf::Header& header) {
 // An open OpenEXR file as a list of levels: a scanline file has one, a tiled file one per mip level.
 // The image of a level is its data window; for environment maps the data window is the map
 // (ImfEnvmap.h maps directions to data-window pixel positions), whatever its origin.
+// A file cannot hold much more pixel data than its size: uncompressed data is stored as is, and
+// OpenEXR's codecs stay far below kMaxCompressionRatio (deflate's limit is about 1032:1). A header
+// claiming more (a few hundred bytes claiming a 2^27-pixel data window, found by fuzz/fuzz_exr)
+// is refused before OpenEXR sizes its line buffers by it and before we allocate its image.
+// `bytesPerPixel`: the stored bytes of one pixel, summed over the channels (subsampling applied).
+void checkFileCanHold(const std::filesystem::path& file, std::int64_t width, std::int64_t height,
+                      double bytesPerPixel, bool compressed, std::size_t fileBytes) {
+  constexpr double kMaxCompressionRatio = 4096.0;
+  if (width < 1 || height < 1) return;  // OpenEXR or checkImageSize reports it
+  const double ratio = compressed ? kMaxCompressionRatio : 1.0;
+  if (double(width) * double(height) * bytesPerPixel > ratio * double(fileBytes))
+    fail(file, "data window of " + std::to_string(width) + " x " + std::to_string(height) +
+                   " pixels holds more data than the file's " + std::to_string(fileBytes) +
+                   " bytes can (truncated or corrupt header)");
+}
+
 class ExrLevelReader {
  public:
   ExrLevelReader(const std::filesystem::path& file, MemoryStream& stream, std::size_t fileBytes)
@@ -211,22 +228,14 @@ class ExrLevelReader {
     return image;
   }
 
-  // A file cannot hold much more pixel data than its size: uncompressed data is stored as is, and
-  // OpenEXR's codecs stay far below kMaxCompressionRatio (deflate's limit is about 1032:1). A
-  // header claiming more (a few hundred bytes claiming a 2^27-pixel data window, found by
-  // fuzz/fuzz_exr) is refused before its image (16 bytes a pixel) is allocated.
   void checkFileCanHold(const Imath::Box2i& window) const {
-    constexpr double kMaxCompressionRatio = 4096.0;
-    const double pixels = (double(window.max.x) - window.min.x + 1) * (double(window.max.y) - window.min.y + 1);
     double bytesPerPixel = 0.0;
     for (auto it = header().channels().begin(); it != header().channels().end(); ++it)
       bytesPerPixel += (it.channel().type == Imf::HALF ? 2.0 : 4.0) /
                        (std::max(it.channel().xSampling, 1) * double(std::max(it.channel().ySampling, 1)));
-    const double ratio = header().compression() == Imf::NO_COMPRESSION ? 1.0 : kMaxCompressionRatio;
-    if (pixels * bytesPerPixel > ratio * double(fileBytes_))
-      fail(file_, "data window of " + std::to_string(window.max.x - window.min.x + 1) + " x " +
-                      std::to_string(window.max.y - window.min.y + 1) + " pixels holds more data than the file's " +
-                      std::to_string(fileBytes_) + " bytes can (truncated or corrupt header)");
+    iblkit::checkFileCanHold(file_, std::int64_t{window.max.x} - window.min.x + 1,
+                             std::int64_t{window.max.y} - window.min.y + 1, bytesPerPixel,
+                             header().compression() != Imf::NO_COMPRESSION, fileBytes_);
   }
 
   std::filesystem::path file_;
@@ -264,6 +273,22 @@ std::optional<std::uint64_t> attributeValueBytes(const std::vector<char>& bytes,
   return static_cast<std::uint64_t>(std::max(size, 0));
 }
 
+// The stored bytes of one pixel of the channel list at `at` (attributeValueBytes found it whole):
+// per channel, name\0, pixel type (0 uint, 1 half, 2 float), pLinear and 3 reserved bytes, x and
+// y sampling.
+double channelListBytesPerPixel(const std::vector<char>& bytes, std::size_t at) {
+  double total = 0.0;
+  while (bytes[at] != '\0') {
+    at = static_cast<std::size_t>(std::find(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end(), '\0') -
+                                  bytes.begin()) + 1;
+    std::int32_t fields[4] = {};  // pixel type, pLinear + reserved, x sampling, y sampling
+    std::memcpy(fields, bytes.data() + at, sizeof fields);
+    total += (fields[0] == 1 ? 2.0 : 4.0) / (std::max(fields[2], 1) * double(std::max(fields[3], 1)));
+    at += 16;
+  }
+  return total;
+}
+
 // OpenEXR allocates an attribute's value before reading it: an attribute of a type it does not
 // know at the size the header claims (OpaqueAttribute). A 445-byte file claiming a 2 GiB
 // attribute made it allocate and clear 2 GiB before it found the file truncated (found by
@@ -287,10 +312,18 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
   };
   for (;;) {  // one header, or each part's header up to the empty one ending a multi-part file
     bool empty = true;
+    std::optional<std::array<std::int32_t, 4>> dataWindow;
+    std::optional<bool> compressed;
+    double bytesPerPixel = 0.0;
     for (;;) {
       if (at >= bytes.size()) return;
       if (bytes[at] == '\0') {
         ++at;
+        // The data window against the file before OpenEXR sizes its line buffers by it.
+        if (dataWindow && compressed && bytesPerPixel > 0.0)
+          checkFileCanHold(file, std::int64_t{(*dataWindow)[2]} - (*dataWindow)[0] + 1,
+                           std::int64_t{(*dataWindow)[3]} - (*dataWindow)[1] + 1, bytesPerPixel, *compressed,
+                           bytes.size());
         break;
       }
       empty = false;
@@ -302,6 +335,14 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
       if (size < 0) return;  // OpenEXR refuses it before reading
       const std::optional<std::uint64_t> value = attributeValueBytes(bytes, at, type, size);
       if (!value || *value > bytes.size() - at) fail(file, "truncated file (unexpected end of data)");
+      if (name == "dataWindow" && type == "box2i") {
+        dataWindow.emplace();
+        std::memcpy(dataWindow->data(), bytes.data() + at, 16);
+      } else if (name == "compression" && type == "compression") {
+        compressed = bytes[at] != 0;
+      } else if (name == "channels" && type == "chlist") {
+        bytesPerPixel = channelListBytesPerPixel(bytes, at);
+      }
       at += static_cast<std::size_t>(*value);
     }
     if (!(version & kMultiPartFlag) || empty) return;
