@@ -313,16 +313,16 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
   for (;;) {  // one header, or each part's header up to the empty one ending a multi-part file
     bool empty = true;
     std::optional<std::array<std::int32_t, 4>> dataWindow;
-    std::optional<bool> compressed;
-    double bytesPerPixel = 0.0;
+    bool compressed = true;      // OpenEXR's default header is ZIP-compressed
+    double bytesPerPixel = 0.0;  // a second channel list adds its channels to the first
     for (;;) {
       if (at >= bytes.size()) return;
       if (bytes[at] == '\0') {
         ++at;
         // The data window against the file before OpenEXR sizes its line buffers by it.
-        if (dataWindow && compressed && bytesPerPixel > 0.0)
+        if (dataWindow)
           checkFileCanHold(file, std::int64_t{(*dataWindow)[2]} - (*dataWindow)[0] + 1,
-                           std::int64_t{(*dataWindow)[3]} - (*dataWindow)[1] + 1, bytesPerPixel, *compressed,
+                           std::int64_t{(*dataWindow)[3]} - (*dataWindow)[1] + 1, bytesPerPixel, compressed,
                            bytes.size());
         break;
       }
@@ -341,7 +341,7 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
       } else if (name == "compression" && type == "compression") {
         compressed = bytes[at] != 0;
       } else if (name == "channels" && type == "chlist") {
-        bytesPerPixel = channelListBytesPerPixel(bytes, at);
+        bytesPerPixel += channelListBytesPerPixel(bytes, at);
       }
       at += static_cast<std::size_t>(*value);
     }
