@@ -312,5 +312,19 @@ TEST(Exr, EveryFetchedMapLoads) {
   EXPECT_EQ(count, 18);
 }
 
+// Compressed, OpenEXR sized its line buffers by the data window when the file was opened (ZIP
+// keeps 16 lines: 1.9 GB for this one, found by fuzz/fuzz_exr), before our own check of the image.
+TEST(Exr, CompressedDataWindowLargerThanTheFileCanHoldIsRefusedBeforeOpenExrAllocates) {
+  const std::filesystem::path file = test::scratchDir() / "huge_zip_window.exr";
+  writeExr(file, numberedImage(4, 2));  // ZIP-compressed half RGB
+  std::vector<char> bytes = fileBytes(file);
+  const std::size_t at = attributeAt(bytes, std::string("dataWindow") + '\0' + "box2i");
+  const std::int32_t window[4] = {0, 0, 20000630, 2};
+  std::memcpy(&bytes[at + 17 + 4], window, sizeof window);
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  expectRefusedWithinOneGiB(file, file.string() + ": data window of 20000631 x 3 pixels holds more data than the file's " +
+                                      std::to_string(bytes.size()) + " bytes can (truncated or corrupt header)");
+}
+
 }  // namespace
 }  // namespace iblkit
