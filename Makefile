@@ -5,11 +5,16 @@
 #   make programs  only the programs (what make demo needs)
 #   make bench   build and run the benchmarks (results: docs/benchmarks.md)
 #   make sanitize  build with ASan+UBSan into build-asan/ and run the tests there
+#   make fuzz    build the libFuzzer targets (clang) into build-fuzz/ and run each for FUZZ_SECONDS
+#                (docs/robustness.md); make test runs them for TEST_FUZZ_SECONDS each (0: not at all)
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+TEST_FUZZ_SECONDS ?= 10
 
-.PHONY: all setup assets configure build programs test demo bench sanitize clean
+.PHONY: all setup assets configure build programs test demo bench sanitize fuzz fuzz-build clean
 
 all: build
 
@@ -27,6 +32,7 @@ build: configure
 
 test: build assets
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	@if [ "$(TEST_FUZZ_SECONDS)" != 0 ]; then $(MAKE) --no-print-directory fuzz FUZZ_SECONDS=$(TEST_FUZZ_SECONDS); fi
 
 programs: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target iblkit_programs
@@ -38,7 +44,16 @@ bench: build assets
 	@bash scripts/bench.sh $(BUILD)
 
 sanitize:
-	@$(MAKE) --no-print-directory test BUILD=build-asan CMAKE_FLAGS="-DIBLKIT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIBLKIT_BUILD_BENCHMARKS=OFF"
+	@$(MAKE) --no-print-directory test BUILD=build-asan TEST_FUZZ_SECONDS=0 CMAKE_FLAGS="-DIBLKIT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIBLKIT_BUILD_BENCHMARKS=OFF"
+
+# Only core, bakefile and fuzz/, with clang's -fsanitize=fuzzer,address,undefined (CMakeLists.txt).
+fuzz-build: setup
+	@cmake -S . -B $(FUZZ_BUILD) -G Ninja -DIBLKIT_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ >/dev/null
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target iblkit_fuzz_targets
+
+fuzz: fuzz-build assets
+	@bash scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 clean:
-	rm -rf build build-asan out
+	rm -rf build build-asan build-fuzz out

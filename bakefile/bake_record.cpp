@@ -38,7 +38,11 @@ BakeInputs readBakeRecord(const fs::path& file) {
   } catch (const json::exception& e) {
     fail(file, std::string("not valid JSON: ") + e.what());
   }
-  const std::string version = record.is_object() ? record.value("version", std::string()) : std::string();
+  // Any JSON value may stand there: a string is the version, anything else is shown as JSON (a
+  // number made json::value throw a type_error that named no file; found by fuzz/fuzz_bake_record).
+  std::string version;
+  if (record.is_object() && record.contains("version"))
+    version = record["version"].is_string() ? record["version"].get<std::string>() : record["version"].dump();
   if (version != kBakeVersion)
     fail(file, "version '" + version + "' is not supported (expected '" + kBakeVersion + "')");
   BakeInputs inputs;

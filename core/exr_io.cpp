@@ -15,11 +15,14 @@
 #include <ImfTiledOutputFile.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -116,9 +119,26 @@ EnvmapLayout envmapLayout(const Imf::Header& header) {
 // An open OpenEXR file as a list of levels: a scanline file has one, a tiled file one per mip level.
 // The image of a level is its data window; for environment maps the data window is the map
 // (ImfEnvmap.h maps directions to data-window pixel positions), whatever its origin.
+// A file cannot hold much more pixel data than its size: uncompressed data is stored as is, and
+// OpenEXR's codecs stay far below kMaxCompressionRatio (deflate's limit is about 1032:1). A header
+// claiming more (a few hundred bytes claiming a 2^27-pixel data window, found by fuzz/fuzz_exr)
+// is refused before OpenEXR sizes its line buffers by it and before we allocate its image.
+// `bytesPerPixel`: the stored bytes of one pixel, summed over the channels (subsampling applied).
+void checkFileCanHold(const std::filesystem::path& file, std::int64_t width, std::int64_t height,
+                      double bytesPerPixel, bool compressed, std::size_t fileBytes) {
+  constexpr double kMaxCompressionRatio = 4096.0;
+  if (width < 1 || height < 1) return;  // OpenEXR or checkImageSize reports it
+  const double ratio = compressed ? kMaxCompressionRatio : 1.0;
+  if (double(width) * double(height) * bytesPerPixel > ratio * double(fileBytes))
+    fail(file, "data window of " + std::to_string(width) + " x " + std::to_string(height) +
+                   " pixels holds more data than the file's " + std::to_string(fileBytes) +
+                   " bytes can (truncated or corrupt header)");
+}
+
 class ExrLevelReader {
  public:
-  ExrLevelReader(const std::filesystem::path& file, MemoryStream& stream) : file_(file) {
+  ExrLevelReader(const std::filesystem::path& file, MemoryStream& stream, std::size_t fileBytes)
+      : file_(file), fileBytes_(fileBytes) {
     bool tiled = false, deep = false, multiPart = false;
     if (!Imf::isOpenExrFile(stream, tiled, deep, multiPart))
       fail(file, "not an OpenEXR file (bad magic number)");
@@ -190,6 +210,7 @@ class ExrLevelReader {
     if (grey && !channels.findChannel("Y")) fail(file_, "no R, G, B or Y channel");
     if (grey && (channels.findChannel("RY") || channels.findChannel("BY")))
       fail(file_, "luminance/chroma (Y, RY, BY) images are not supported");
+    checkFileCanHold(window);
     Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
     Imf::FrameBuffer frameBuffer;
     for (int c = 0; c < 4; ++c) {
@@ -207,18 +228,136 @@ class ExrLevelReader {
     return image;
   }
 
+  void checkFileCanHold(const Imath::Box2i& window) const {
+    double bytesPerPixel = 0.0;
+    for (auto it = header().channels().begin(); it != header().channels().end(); ++it)
+      bytesPerPixel += (it.channel().type == Imf::HALF ? 2.0 : 4.0) /
+                       (std::max(it.channel().xSampling, 1) * double(std::max(it.channel().ySampling, 1)));
+    iblkit::checkFileCanHold(file_, std::int64_t{window.max.x} - window.min.x + 1,
+                             std::int64_t{window.max.y} - window.min.y + 1, bytesPerPixel,
+                             header().compression() != Imf::NO_COMPRESSION, fileBytes_);
+  }
+
   std::filesystem::path file_;
+  std::size_t fileBytes_ = 0;
   std::optional<Imf::InputFile> scanlineFile_;
   std::optional<Imf::TiledInputFile> tiledFile_;
   int levels_ = 1;
 };
 
+// How many bytes OpenEXR 3.1's Header::readFrom consumes for the value of an attribute of type
+// `type` whose declared size is `size`, starting at `at`: the fixed size of a fixed-size type
+// (read whatever the declared size), a channel list up to its empty name, and the declared size
+// for the rest (strings, vectors, previews, whose size OpenEXR checks against their dimensions, and
+// types it does not know, kept as opaque bytes). Nullopt when the bytes end first.
+std::optional<std::uint64_t> attributeValueBytes(const std::vector<char>& bytes, std::size_t at,
+                                                 std::string_view type, std::int32_t size) {
+  static constexpr std::pair<std::string_view, std::uint64_t> kFixed[] = {
+      {"box2i", 16},     {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8},
+      {"envmap", 1},     {"float", 4},  {"int", 4},             {"keycode", 28},    {"lineOrder", 1},
+      {"m33f", 36},      {"m33d", 72},  {"m44f", 64},           {"m44d", 128},      {"rational", 8},
+      {"tiledesc", 9},   {"timecode", 8}, {"v2i", 8},           {"v2f", 8},         {"v2d", 16},
+      {"v3i", 12},       {"v3f", 12},   {"v3d", 24},            {"deepImageState", 1}};
+  for (const auto& [name, fixed] : kFixed)
+    if (type == name) return fixed;
+  if (type == "chlist") {  // name\0 and 16 bytes per channel, up to an empty name
+    std::size_t end = at;
+    for (;;) {
+      if (end >= bytes.size()) return std::nullopt;
+      if (bytes[end] == '\0') return end + 1 - at;
+      const auto nul = std::find(bytes.begin() + static_cast<std::ptrdiff_t>(end), bytes.end(), '\0');
+      if (nul == bytes.end()) return std::nullopt;
+      end = static_cast<std::size_t>(nul - bytes.begin()) + 1 + 16;
+    }
+  }
+  return static_cast<std::uint64_t>(std::max(size, 0));
+}
+
+// The stored bytes of one pixel of the channel list at `at` (attributeValueBytes found it whole):
+// per channel, name\0, pixel type (0 uint, 1 half, 2 float), pLinear and 3 reserved bytes, x and
+// y sampling.
+double channelListBytesPerPixel(const std::vector<char>& bytes, std::size_t at) {
+  double total = 0.0;
+  while (bytes[at] != '\0') {
+    at = static_cast<std::size_t>(std::find(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end(), '\0') -
+                                  bytes.begin()) + 1;
+    std::int32_t fields[4] = {};  // pixel type, pLinear + reserved, x sampling, y sampling
+    std::memcpy(fields, bytes.data() + at, sizeof fields);
+    total += (fields[0] == 1 ? 2.0 : 4.0) / (std::max(fields[2], 1) * double(std::max(fields[3], 1)));
+    at += 16;
+  }
+  return total;
+}
+
+// OpenEXR allocates an attribute's value before reading it: an attribute of a type it does not
+// know at the size the header claims (OpaqueAttribute). A 445-byte file claiming a 2 GiB
+// attribute made it allocate and clear 2 GiB before it found the file truncated (found by
+// fuzz/fuzz_exr). So the header is walked first as OpenEXR reads it (a walk by the declared sizes
+// alone got out of step with OpenEXR's reads through a channel list on a second fuzzed file), and
+// a value running past the end of the file is a truncated file. What the walk cannot follow (a
+// name without its NUL) is left to OpenEXR, which reports it.
+void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vector<char>& bytes) {
+  constexpr std::uint32_t kMultiPartFlag = 0x1000;
+  constexpr char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 4) != 0) return;  // OpenEXR reports it
+  std::uint32_t version = 0;
+  std::memcpy(&version, bytes.data() + 4, sizeof version);
+  std::size_t at = 8;
+  const auto readString = [&](std::string_view* text) {
+    const auto end = std::find(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end(), '\0');
+    if (end == bytes.end()) return false;
+    *text = std::string_view(bytes.data() + at, static_cast<std::size_t>(end - bytes.begin()) - at);
+    at = static_cast<std::size_t>(end - bytes.begin()) + 1;
+    return true;
+  };
+  for (;;) {  // one header, or each part's header up to the empty one ending a multi-part file
+    bool empty = true;
+    std::optional<std::array<std::int32_t, 4>> dataWindow;
+    bool compressed = true;      // OpenEXR's default header is ZIP-compressed
+    double bytesPerPixel = 0.0;  // a second channel list adds its channels to the first
+    for (;;) {
+      if (at >= bytes.size()) return;
+      if (bytes[at] == '\0') {
+        ++at;
+        // The data window against the file before OpenEXR sizes its line buffers by it.
+        if (dataWindow)
+          checkFileCanHold(file, std::int64_t{(*dataWindow)[2]} - (*dataWindow)[0] + 1,
+                           std::int64_t{(*dataWindow)[3]} - (*dataWindow)[1] + 1, bytesPerPixel, compressed,
+                           bytes.size());
+        break;
+      }
+      empty = false;
+      std::string_view name, type;
+      if (!readString(&name) || !readString(&type) || bytes.size() - at < 4) return;
+      std::int32_t size = 0;
+      std::memcpy(&size, bytes.data() + at, sizeof size);
+      at += 4;
+      if (size < 0) return;  // OpenEXR refuses it before reading
+      const std::optional<std::uint64_t> value = attributeValueBytes(bytes, at, type, size);
+      if (!value || *value > bytes.size() - at) fail(file, "truncated file (unexpected end of data)");
+      if (name == "dataWindow" && type == "box2i") {
+        dataWindow.emplace();
+        std::memcpy(dataWindow->data(), bytes.data() + at, 16);
+      } else if (name == "compression" && type == "compression") {
+        compressed = bytes[at] != 0;
+      } else if (name == "channels" && type == "chlist") {
+        bytesPerPixel += channelListBytesPerPixel(bytes, at);
+      }
+      at += static_cast<std::size_t>(*value);
+    }
+    if (!(version & kMultiPartFlag) || empty) return;
+  }
+}
+
 // Opens `file` and runs use(reader), with OpenEXR's errors turned into Error.
 template <class Use>
 auto withExrFile(const std::filesystem::path& file, Use&& use) {
-  MemoryStream stream(file, readFileBytes(file));
+  std::vector<char> bytes = readFileBytes(file);
+  checkHeaderAttributeSizes(file, bytes);
+  const std::size_t fileBytes = bytes.size();
+  MemoryStream stream(file, std::move(bytes));
   return rethrowAsError(file, &stream, [&] {
-    ExrLevelReader reader(file, stream);
+    ExrLevelReader reader(file, stream, fileBytes);
     return use(reader);
   });
 }

@@ -67,7 +67,11 @@ Image readPng(const std::filesystem::path& file, PixelRepair repair) {
       stbi_image_free);
   if (!pixels) {
     // stb_image's reasons are terse ("outofdata" is a truncated file) and a few are empty.
-    const std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "";
+    std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "";
+    // An unknown chunk's reason starts with the chunk type's four raw bytes, which may be line
+    // breaks or other control characters (found by fuzz/fuzz_png): the message stays one line.
+    for (char& c : reason)
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
     if (reason == "outofdata") fail(file, "truncated file (unexpected end of data)");
     fail(file, reason.empty() ? "cannot decode PNG" : "cannot decode PNG: " + reason);
   }

@@ -11,6 +11,7 @@ packages=(
   libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libstb-dev
   libopenexr-dev libimath-dev
   libgtest-dev libbenchmark-dev libcli11-dev libimgui-dev
+  clang libclang-rt-dev  # make fuzz: clang and its libFuzzer runtime (libclang_rt.fuzzer)
   xvfb xauth
 )
 

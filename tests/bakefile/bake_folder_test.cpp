@@ -119,5 +119,14 @@ TEST(BakeRecord, ARelativeEnvironmentIsRelativeToTheBakeAndNoneMeansNoStages) {
             (folder / kBakeRecordFile).string() + ": the bake has no environment stages (bake with --env)");
 }
 
+// fuzz/fuzz_bake_record found it: a version that is not a string escaped as nlohmann's type_error,
+// a message naming no file.
+TEST(BakeRecord, AVersionThatIsNotAStringIsAnErrorNamingTheFile) {
+  const fs::path file = test::scratchDir() / kBakeRecordFile;
+  std::ofstream(file) << R"({"version": 1, "inputs": {"scene": "s", "environment": null}})";
+  EXPECT_EQ(test::errorMessage([&] { readBakeRecord(file); }),
+            file.string() + ": version '1' is not supported (expected 'iblkit-bake 1')");
+}
+
 }  // namespace
 }  // namespace iblkit

@@ -1,7 +1,13 @@
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "core/image_io.h"
@@ -163,6 +169,97 @@ TEST(Exr, OpenExrErrorsBecomeOneLineErrors) {
             missingDir.string() + ": cannot create a temporary file beside it: No such file or directory");
 }
 
+std::vector<char> fileBytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Where `attribute` (name, then type name) starts in `bytes`: its 4-byte size follows.
+std::size_t attributeAt(const std::vector<char>& bytes, const std::string& nameAndType) {
+  const std::string pattern(nameAndType.c_str(), nameAndType.size() + 1);
+  const auto at = std::search(bytes.begin(), bytes.end(), pattern.begin(), pattern.end());
+  EXPECT_NE(at, bytes.end()) << nameAndType;
+  return at == bytes.end() ? 0 : std::size_t(at - bytes.begin());
+}
+
+// readExr(file) fails with `expected`, also in a child process limited to 1 GiB of address space,
+// where allocating what the header claims (2 GiB) would fail with std::bad_alloc instead. The
+// child is skipped under AddressSanitizer, which needs far more address space than that.
+void expectRefusedWithinOneGiB(const std::filesystem::path& file, const std::string& expected) {
+  EXPECT_EQ(test::errorMessage([&] { readExr(file); }), expected);
+#if defined(__SANITIZE_ADDRESS__)
+  return;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  return;
+#endif
+#endif
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto readWithinOneGiB = [&] {
+    const rlim_t oneGiB = rlim_t{1} << 30;
+    const rlimit limit{oneGiB, oneGiB};
+    setrlimit(RLIMIT_AS, &limit);
+    _exit(test::errorMessage([&] { readExr(file); }) == expected ? 0 : 1);
+  };
+  EXPECT_EXIT(readWithinOneGiB(), testing::ExitedWithCode(0), "") << file;
+}
+
+// fuzz/fuzz_exr found both: OpenEXR allocates an attribute of unknown type at the size the header
+// claims before reading it, and we allocated the image of any data window up to kMaxImagePixels,
+// so a file of a few hundred bytes made us allocate 2 GiB. Both are checked against the file first.
+TEST(Exr, AttributeClaimingMoreBytesThanTheFileIsTruncationWithoutAllocatingIt) {
+  const std::filesystem::path file = test::scratchDir() / "huge_attribute.exr";
+  writeExr(file, numberedImage(4, 2), {.stringAttributes = {{"iblkit:fuzz", "x"}}});
+  std::vector<char> bytes = fileBytes(file);
+  const std::size_t at = attributeAt(bytes, std::string("iblkit:fuzz") + '\0' + "string");
+  std::memcpy(&bytes[at + 12], "fuzzed", 6);  // a type OpenEXR does not know: an opaque attribute
+  const std::int32_t claimed = 0x7fffffff;
+  std::memcpy(&bytes[at + 19], &claimed, sizeof claimed);
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  expectRefusedWithinOneGiB(file, file.string() + ": truncated file (unexpected end of data)");
+}
+
+// The header is walked as OpenEXR reads it, not by the declared sizes alone: OpenEXR reads a
+// channel list up to its empty name whatever its declared size says, so a channel list declaring
+// 0 bytes hides the opaque attribute that follows from a walk by declared sizes.
+TEST(Exr, OpaqueAttributeAfterAChannelListOfWrongDeclaredSizeIsStillChecked) {
+  const std::filesystem::path file = test::scratchDir() / "chlist_out_of_step.exr";
+  writeExr(file, numberedImage(4, 2), {.stringAttributes = {{"iblkit:fuzz", "x"}}});
+  std::vector<char> bytes = fileBytes(file);
+  const std::size_t at = attributeAt(bytes, std::string("iblkit:fuzz") + '\0' + "string");
+  std::memcpy(&bytes[at + 12], "fuzzed", 6);
+  const std::int32_t claimed = 0x7fffffff;
+  std::memcpy(&bytes[at + 19], &claimed, sizeof claimed);
+  const std::size_t channels = attributeAt(bytes, std::string("channels") + '\0' + "chlist");
+  // Moves the opaque attribute right after the channel list (before the other attributes) ...
+  std::vector<char> opaque(bytes.begin() + std::ptrdiff_t(at), bytes.begin() + std::ptrdiff_t(at + 24));
+  bytes.erase(bytes.begin() + std::ptrdiff_t(at), bytes.begin() + std::ptrdiff_t(at + 24));
+  std::int32_t listBytes = 0;
+  std::memcpy(&listBytes, &bytes[channels + 16], sizeof listBytes);
+  const std::size_t afterList = channels + 16 + 4 + std::size_t(listBytes);
+  bytes.insert(bytes.begin() + std::ptrdiff_t(afterList), opaque.begin(), opaque.end());
+  // ... and declares the channel list 0 bytes long: a walk by declared sizes would then read the
+  // list's first channel name as the next attribute and lose step.
+  const std::int32_t zero = 0;
+  std::memcpy(&bytes[channels + 16], &zero, sizeof zero);
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  expectRefusedWithinOneGiB(file, file.string() + ": truncated file (unexpected end of data)");
+}
+
+TEST(Exr, DataWindowLargerThanTheFileCanHoldIsRefusedBeforeAllocating) {
+  const std::filesystem::path file = test::scratchDir() / "huge_window.exr";
+  writeExr(file, numberedImage(4, 2));  // ZIP-compressed half RGB
+  std::vector<char> bytes = fileBytes(file);
+  const std::size_t at = attributeAt(bytes, std::string("dataWindow") + '\0' + "box2i");
+  const std::int32_t window[4] = {0, 0, (1 << 26) - 1, 1};  // 2^27 pixels, 2 GiB as our RGBA floats
+  std::memcpy(&bytes[at + 17 + 4], window, sizeof window);
+  // Uncompressed, as in the fuzzer's input (OpenEXR itself limits a compressed line's size).
+  bytes[attributeAt(bytes, std::string("compression") + '\0' + "compression") + 24 + 4] = 0;
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  expectRefusedWithinOneGiB(file, file.string() + ": data window of 67108864 x 2 pixels holds more data than the file's " +
+                                      std::to_string(bytes.size()) + " bytes can (truncated or corrupt header)");
+}
+
 // Layouts our writer never makes are committed files in tests/data/exr, written once with
 // OpenEXR's general interface as uncompressed float channels; their pixel values are listed here.
 
@@ -212,6 +309,20 @@ TEST(Exr, EveryFetchedMapLoads) {
     EXPECT_GE(std::min({stats.min.x, stats.min.y, stats.min.z}), 0.0f) << entry.path();
   }
   EXPECT_EQ(count, 18);
+}
+
+// Compressed, OpenEXR sized its line buffers by the data window when the file was opened (ZIP
+// keeps 16 lines: 1.9 GB for this one, found by fuzz/fuzz_exr), before our own check of the image.
+TEST(Exr, CompressedDataWindowLargerThanTheFileCanHoldIsRefusedBeforeOpenExrAllocates) {
+  const std::filesystem::path file = test::scratchDir() / "huge_zip_window.exr";
+  writeExr(file, numberedImage(4, 2));  // ZIP-compressed half RGB
+  std::vector<char> bytes = fileBytes(file);
+  const std::size_t at = attributeAt(bytes, std::string("dataWindow") + '\0' + "box2i");
+  const std::int32_t window[4] = {0, 0, 20000630, 2};
+  std::memcpy(&bytes[at + 17 + 4], window, sizeof window);
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  expectRefusedWithinOneGiB(file, file.string() + ": data window of 20000631 x 3 pixels holds more data than the file's " +
+                                      std::to_string(bytes.size()) + " bytes can (truncated or corrupt header)");
 }
 
 }  // namespace

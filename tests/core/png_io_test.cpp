@@ -79,5 +79,19 @@ TEST(Png, BadFilesGiveClearErrors) {
             noDir.string() + ": cannot create a temporary file beside it: No such file or directory");
 }
 
+// fuzz/fuzz_png found it: stb_image names an unknown chunk by its four raw bytes, which made a
+// message of several lines when they were line breaks.
+TEST(Png, AnUnknownChunkOfControlCharactersGivesAOneLineError) {
+  const std::filesystem::path file = test::scratchDir() / "control_chunk.png";
+  const char ihdr[] = "\0\0\0\x0dIHDR\0\0\0\x02\0\0\0\x01\x08\x02\0\0\0\0\0\0\0";  // 2 x 1 RGB, CRC not checked
+  const char chunk[] = "\0\0\0\0\n\x1aXY\0\0\0\0";  // a critical chunk of type "\n\x1aXY", empty
+  std::ofstream out(file, std::ios::binary);
+  out.write("\x89PNG\r\n\x1a\n", 8);
+  out.write(ihdr, sizeof ihdr - 1);
+  out.write(chunk, sizeof chunk - 1);
+  out.close();
+  EXPECT_EQ(test::errorMessage([&] { readPng(file); }), file.string() + ": cannot decode PNG: ??XY PNG chunk not known");
+}
+
 }  // namespace
 }  // namespace iblkit

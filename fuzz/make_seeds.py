@@ -1,0 +1,210 @@
+#!/usr/bin/env python3
+"""Regenerates the hand-made seeds of the fuzz corpora, fuzz/corpus/<target>/seed_* (committed; run
+by hand after edits). Small valid inputs of each format, so the fuzzer starts from files that get
+past the first checks. The other seeds (tests/data, assets/) are picked up by scripts/fuzz.sh at
+run time; the findings (fuzz/corpus/<target>/finding_*) are added by hand, one per finding.
+"""
+import base64
+import json
+import os
+import struct
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def put(target, name, data):
+    folder = os.path.join(HERE, "corpus", target)
+    os.makedirs(folder, exist_ok=True)
+    if isinstance(data, str):
+        data = data.encode()
+    with open(os.path.join(folder, name), "wb") as f:
+        f.write(data)
+
+
+# --- Radiance .hdr -------------------------------------------------------------------------------
+def rgbe(r, g, b):
+    import math
+    m = max(r, g, b)
+    if m < 1e-32:
+        return bytes(4)
+    mant, e = math.frexp(m)
+    scale = mant * 256.0 / m
+    return bytes([int(r * scale), int(g * scale), int(b * scale), e + 128])
+
+
+def hdr_flat(width, height, extra=""):
+    head = "#?RADIANCE\n" + extra + "FORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (height, width)
+    pixels = b"".join(rgbe(0.1 * x + 0.05, 0.5, 1.0 + y) for y in range(height) for x in range(width))
+    return head.encode() + pixels
+
+
+def hdr_rle(width, height):
+    head = ("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (height, width)).encode()
+    body = b""
+    for y in range(height):
+        body += bytes([2, 2, width >> 8, width & 255])
+        row = [rgbe(0.25 + 0.01 * x, 0.5, 2.0) for x in range(width)]
+        for c in range(4):
+            values = bytes(p[c] for p in row)
+            half = width // 2
+            body += bytes([128 + half, values[0]])           # a run
+            body += bytes([width - half]) + values[half:]    # literals
+    return head + body
+
+
+put("hdr", "seed_flat_4x2.hdr", hdr_flat(4, 2, "EXPOSURE=1.0\n"))
+put("hdr", "seed_rle_16x2.hdr", hdr_rle(16, 2))
+
+
+# --- PNG ---------------------------------------------------------------------------------------
+def png(width, height, color_type, channels, depth=8):
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    raw = b""
+    for y in range(height):
+        raw += b"\0" + bytes((17 * (x + y + c)) & 255 for x in range(width) for c in range(channels))
+    ihdr = struct.pack(">IIBBBBB", width, height, depth, color_type, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
+
+
+put("png", "seed_rgb_3x2.png", png(3, 2, 2, 3))
+put("png", "seed_rgba_2x2.png", png(2, 2, 6, 4))
+put("png", "seed_grey_2x1.png", png(2, 1, 0, 1))
+
+
+# --- OpenEXR (uncompressed half RGB: one scanline file, one tiled mip-mapped file) ---------------
+def attribute(name, kind, data):
+    return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(data)) + data
+
+
+def header(width, height, extra=b""):
+    channels = b"".join(c + b"\0" + struct.pack("<iBBBBii", 1, 0, 0, 0, 0, 1, 1) for c in (b"B", b"G", b"R")) + b"\0"
+    box = struct.pack("<iiii", 0, 0, width - 1, height - 1)
+    return (attribute("channels", "chlist", channels) + attribute("compression", "compression", b"\0")
+            + attribute("dataWindow", "box2i", box) + attribute("displayWindow", "box2i", box)
+            + attribute("lineOrder", "lineOrder", b"\0") + attribute("pixelAspectRatio", "float", struct.pack("<f", 1))
+            + attribute("screenWindowCenter", "v2f", struct.pack("<ff", 0, 0))
+            + attribute("screenWindowWidth", "float", struct.pack("<f", 1)) + extra + b"\0")
+
+
+def half_row(width, value):
+    return b"".join(struct.pack("<e", value + 0.125 * x) for x in range(width))
+
+
+def exr_scanline(width, height, envmap=None):
+    extra = attribute("envmap", "envmap", bytes([envmap])) if envmap is not None else b""
+    extra += attribute("owner", "string", b"iblkit fuzz seed")
+    head = struct.pack("<ii", 20000630, 2) + header(width, height, extra)
+    chunks = []
+    for y in range(height):
+        data = b"".join(half_row(width, v + y) for v in (0.25, 0.5, 1.0))
+        chunks.append(struct.pack("<ii", y, len(data)) + data)
+    offset = len(head) + 8 * height
+    table = b""
+    for c in chunks:
+        table += struct.pack("<Q", offset)
+        offset += len(c)
+    return head + table + b"".join(chunks)
+
+
+def exr_tiled_mip(size):
+    # MIPMAP_LEVELS, ROUND_DOWN; one tile per level (tile size = level 0 size).
+    extra = attribute("tiles", "tiledesc", struct.pack("<IIB", size, size, 1))
+    head = struct.pack("<ii", 20000630, 2 | 0x200) + header(size, size, extra)
+    levels = []
+    s = size
+    while s >= 1:
+        levels.append(s)
+        s //= 2
+    chunks = []
+    for level, s in enumerate(levels):
+        data = b"".join(half_row(s, v + y) for y in range(s) for v in (0.25, 0.5, 1.0))
+        chunks.append(struct.pack("<iiiii", 0, 0, level, level, len(data)) + data)
+    offset = len(head) + 8 * len(chunks)
+    table = b""
+    for c in chunks:
+        table += struct.pack("<Q", offset)
+        offset += len(c)
+    return head + table + b"".join(chunks)
+
+
+put("exr", "seed_scanline_4x2.exr", exr_scanline(4, 2, envmap=0))
+put("exr", "seed_cube_2x12.exr", exr_scanline(2, 12, envmap=1))
+put("exr", "seed_tiled_mip_4.exr", exr_tiled_mip(4))
+
+
+# --- glTF / glb --------------------------------------------------------------------------------
+def triangle_gltf(embed=True, mode=4):
+    positions = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    normals = struct.pack("<9f", 0, 0, 1, 0, 0, 1, 0, 0, 1)
+    indices = struct.pack("<3H", 0, 1, 2) + b"\0\0"
+    buffer = positions + normals + indices
+    doc = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0, "translation": [0, 0.5, 0], "scale": [2, 2, 2], "children": [2]},
+                  {"camera": 0, "translation": [0, 0, 3]},
+                  {"mesh": 0, "rotation": [0, 0.7071, 0, 0.7071]}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1, "aspectRatio": 1.5}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "mode": mode,
+                                    "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.2, 0.1, 1], "metallicFactor": 0.5,
+                                                "roughnessFactor": 0.3},
+                       "emissiveFactor": [0, 0, 0],
+                       "extensions": {"KHR_materials_specular": {"specularFactor": 0.5},
+                                      "KHR_materials_emissive_strength": {"emissiveStrength": 2}}}],
+        "extensionsUsed": ["KHR_materials_specular", "KHR_materials_emissive_strength"],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+            {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+            {"bufferView": 2, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                        {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+                        {"buffer": 0, "byteOffset": 72, "byteLength": 6}],
+        "buffers": [{"byteLength": len(buffer)}],
+    }
+    if embed:
+        doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()
+    return doc, buffer
+
+
+def glb(doc, buffer):
+    text = json.dumps(doc, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    buffer += b"\0" * (-len(buffer) % 4)
+    body = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(buffer), b"BIN\0") + buffer
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body
+
+
+doc, _ = triangle_gltf()
+put("gltf", "seed_triangle.gltf", json.dumps(doc, indent=1))
+doc, _ = triangle_gltf(mode=5)
+put("gltf", "seed_strip.gltf", json.dumps(doc))
+doc, buffer = triangle_gltf(embed=False)
+put("gltf", "seed_triangle.glb", glb(doc, buffer))
+
+# --- scene .json (fuzz_loaders.cpp puts model.gltf and env.hdr beside the scene) ---------------
+put("scene", "seed_shapes.json", json.dumps({
+    "models": [{"shape": "sphere", "translation": [0, 1, 0], "rotation": [0, 0.2588, 0, 0.9659], "scale": 0.5,
+                "material": {"baseColor": [0.9, 0.1, 0.1], "metallic": 1, "roughness": 0.2}},
+               {"file": "model.gltf", "scale": [1, 2, 1], "material": {"emissive": [1, 1, 1],
+                                                                       "specularColor": [1, 1, 1]}}],
+    "ground": {"enabled": True, "height": 0, "size": 4, "material": {"specular": 0.5}},
+    "environment": {"file": "env.hdr", "rotation": 90, "intensity": 2},
+    "camera": {"position": [0, 1, 4], "target": [0, 0.5, 0], "up": [0, 1, 0], "yfov": 40, "znear": 0.1, "zfar": 100},
+    "width": 64, "height": 32}, indent=1))
+
+# --- bake.json and sh9.json --------------------------------------------------------------------
+put("bake_record", "seed_bake.json", json.dumps({
+    "version": "iblkit-bake 1",
+    "inputs": {"scene": "/x/scene.json", "environment": "env.exr"},
+    "parameters": {"environment_rotation_degrees": 90.0, "environment_intensity": 1.5, "env_format": "latlong",
+                   "samples": 256},
+    "timings": {"total_s": 1.5}}, indent=1))
+put("bake_record", "seed_bake_no_env.json", json.dumps({
+    "version": "iblkit-bake 1", "inputs": {"scene": "scene.json", "environment": None}, "parameters": {}}))
+put("sh9", "seed_sh9.json", json.dumps({
+    "basis": "real, orthonormal", "A": [3.14159, 2.0944, 0.785398],
+    "L": [[0.1 * k, 0.2, 0.3 - 0.01 * k] for k in range(9)], "windowCutoff": 22.75}, indent=1))
