@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <initializer_list>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -16,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/gltf_load.h"
+#include "core/input_file.h"
 #include "core/procedural_mesh.h"
 
 namespace iblkit {
@@ -303,12 +302,11 @@ void readCamera(const ObjectReader& root, Scene& scene) {
 }
 
 json parseDocument(const fs::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) fail(file, "cannot read file");
-  const std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  const std::string text = readJsonText(file);
   try {
     return json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // parse_error, and out_of_range for a number beyond double's range ("1e999").
     fail(file, std::string("invalid JSON: ") + e.what());
   }
 }

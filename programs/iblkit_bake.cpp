@@ -262,7 +262,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(8, 1024))
       ->capture_default_str();
   app.add_option("--threads", options.threads, "worker threads; 0 = every core")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, iblkit::kMaxThreads))
       ->capture_default_str();
   return iblkit::runProgram(app, argc, argv, [&] {
     std::unique_ptr<tbb::global_control> threads;
