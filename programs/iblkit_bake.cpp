@@ -153,6 +153,8 @@ int bake(const Options& options) {
   std::optional<EnvironmentMap> environmentMap;
   if (!environment.file.empty()) {
     environmentMap = loadEnvironment(environment, parseProbeFormat(options.envFormat));
+    checkEnvironmentIntensity(*environmentMap, environment, scene, options.environment);
+    requireEnvironmentForStages(*environmentMap, environment.file);
     timings["load_environment_s"] = stopwatch.lap();
   }
 
