@@ -66,7 +66,12 @@ CLI::Validator finiteNumber() {
 
 void printError(const std::string& program, const std::string& message) {
   std::cout.flush();
-  std::cerr << program << ": " << foldedOntoOneLine(message) << '\n';
+  // Control characters left inside a line (a carriage return or an escape sequence in an argument
+  // CLI11 quotes) would split or rewrite the line on a terminal.
+  std::string line = foldedOntoOneLine(message);
+  for (char& c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  std::cerr << program << ": " << line << '\n';
 }
 
 int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run) {

@@ -39,7 +39,8 @@ int runProgram(CLI::App& app, int argc, const char* const* argv, const std::func
 // runProgram gives it to every option whose type is FLOAT, the options of subcommands included.
 CLI::Validator finiteNumber();
 
-// Prints "PROGRAM: message" on stderr, a multi-line message folded onto the one line.
+// Prints "PROGRAM: message" on stderr, a multi-line message folded onto the one line and any
+// other control character (a carriage return inside a line, an escape) printed as '?'.
 void printError(const std::string& program, const std::string& message);
 
 // A CLI11 check that accepts only `names`: the help lists them as {a,b,c}, anything else fails
