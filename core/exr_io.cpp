@@ -127,7 +127,6 @@ class ExrLevelReader {
     if (tiled) {
       tiledFile_.emplace(stream);
       levels_ = countLevels(*tiledFile_);
-      checkTileSizes();
     } else {
       scanlineFile_.emplace(stream);
       checkScanlineChunkSizes();
@@ -218,22 +217,6 @@ class ExrLevelReader {
       chunk.min.y = int(y);
       chunk.max.y = int(std::min<std::int64_t>(window.max.y, y + lines - 1));
       checkChunkSize(size, uncompressedBytes(chunk), "scanline chunk at y " + std::to_string(y));
-    }
-  }
-
-  void checkTileSizes() {
-    int tiles = 0;
-    for (int l = 0; l < levels_; ++l) tiles += tiledFile_->numXTiles(l) * tiledFile_->numYTiles(l);
-    for (int t = 0; t < tiles; ++t) {
-      int dx = 0, dy = 0, lx = 0, ly = 0, size = 0;
-      const char* data = nullptr;
-      tiledFile_->rawTileData(dx, dy, lx, ly, data, size);
-      const bool valid = lx >= 0 && lx < tiledFile_->numXLevels() && ly >= 0 && ly < tiledFile_->numYLevels() &&
-                         dx >= 0 && dx < tiledFile_->numXTiles(lx) && dy >= 0 && dy < tiledFile_->numYTiles(ly);
-      if (!valid)
-        fail(file_, "tile " + std::to_string(dx) + ", " + std::to_string(dy) + " is outside the image");
-      checkChunkSize(size, uncompressedBytes(tiledFile_->dataWindowForTile(dx, dy, lx, ly)),
-                     "tile " + std::to_string(dx) + ", " + std::to_string(dy) + " of level " + std::to_string(lx));
     }
   }
 

@@ -293,9 +293,8 @@ void readEnvironment(const ObjectReader& root, const fs::path& folder, Scene& sc
     fail(root.file(), "environment.file: '" + name + "' does not exist");
   scene.environment.rotationDegrees =
       float(environment.number("rotation", 0.0, -kMaxRotationDegrees, kMaxRotationDegrees));
-  // Within float; loadSceneEnvironment checks it against the map's brightest texel.
-  scene.environment.intensity =
-      float(environment.number("intensity", 1.0, 0.0, double(std::numeric_limits<float>::max())));
+  // Beyond float it is inf: checkEnvironmentIntensity (scene_environment.h) names this key then.
+  scene.environment.intensity = float(environment.number("intensity", 1.0, 0.0));
 }
 
 void readCamera(const ObjectReader& root, Scene& scene) {
