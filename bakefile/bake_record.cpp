@@ -5,6 +5,7 @@
 #include "bakefile/bake_layout.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/input_file.h"
 
 namespace iblkit {
 
@@ -31,10 +32,10 @@ void writeBakeRecord(const fs::path& file, const json& record) {
 }
 
 BakeInputs readBakeRecord(const fs::path& file) {
-  std::ifstream stream(requireBakeFile(file));
+  const std::string text = readJsonText(requireBakeFile(file));
   json record;
   try {
-    record = json::parse(stream);
+    record = json::parse(text);
   } catch (const json::exception& e) {
     fail(file, std::string("not valid JSON: ") + e.what());
   }

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/input_file.h"
 
 namespace iblkit {
 namespace {
@@ -54,10 +55,9 @@ void writeSh9Json(const std::filesystem::path& path, const SphericalHarmonics9& 
 
 SphericalHarmonics9 readSh9Json(const std::filesystem::path& path, float* windowCutoff) {
   using nlohmann::json;
-  std::ifstream stream(path);
-  if (!stream) fail(path, "cannot open");
+  const std::string text = readJsonText(path);
   try {
-    const json document = json::parse(stream);
+    const json document = json::parse(text);
     const json& coefficients = document.at("L");
     if (!coefficients.is_array() || coefficients.size() != kShCoefficients)
       fail(path, "\"L\" must hold 9 RGB coefficients");

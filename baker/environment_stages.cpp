@@ -1,12 +1,23 @@
 #include "baker/environment_stages.h"
 
+#include <bit>
+#include <string>
+
 #include "baker/brdf_lut.h"
 #include "baker/irradiance_cube.h"
 #include "baker/specular_prefilter.h"
 #include "core/environment_sh.h"
+#include "core/error.h"
 #include "core/stopwatch.h"
 
 namespace iblkit {
+
+void requireEnvironmentForStages(const EnvironmentMap& environment, const std::filesystem::path& file) {
+  const int width = environment.width();
+  if (width < 8 || width % 4 != 0 || !std::has_single_bit(static_cast<unsigned>(width / 4)))
+    fail(file, "lat-long map is " + std::to_string(width) + "x" + std::to_string(environment.height()) +
+                   "; prefiltering needs a width of at least 8 that is 4 times a power of two");
+}
 
 EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, const EnvironmentStageOptions& options,
                                            const std::function<void(std::size_t, std::size_t)>& progress,

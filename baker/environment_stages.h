@@ -5,6 +5,7 @@
 // function for iblkit-bake and for the viewer, which switches maps at run time with lighter
 // settings.
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <optional>
 
@@ -37,6 +38,11 @@ struct EnvironmentStageTimes {
 // face size of environment.width() / 4, and the DFG table. Parallel (TBB). `progress` (optional)
 // is called with (stages done, 4) before and after each stage; `times` (optional) receives the
 // seconds of each.
+// Throws Error("<file>: ...") unless `environment` can be prefiltered: a lat-long map at least
+// 8 x 4 whose width is 4 times a power of two (the specular cube's base size is width / 4). For
+// the programs, before any work, so the message names the map rather than a stage.
+void requireEnvironmentForStages(const EnvironmentMap& environment, const std::filesystem::path& file);
+
 EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment,
                                            const EnvironmentStageOptions& options,
                                            const std::function<void(std::size_t, std::size_t)>& progress = {},

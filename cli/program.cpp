@@ -1,9 +1,12 @@
 #include "cli/program.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include "core/error.h"
@@ -38,17 +41,46 @@ std::string joined(const std::vector<std::string>& names, const char* separator)
   return text;
 }
 
+// Gives every floating-point option of `app` and its subcommands the finiteNumber check, so that
+// "nan", "inf" and "1e999" are usage errors in every program (CLI11 converts them otherwise).
+void checkFloatOptionsAreFinite(CLI::App& app) {
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finiteNumber());
+  for (CLI::App* subcommand : app.get_subcommands([](CLI::App*) { return true; }))
+    checkFloatOptionsAreFinite(*subcommand);
+}
+
 }  // namespace
+
+CLI::Validator finiteNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        // The text CLI11 converts: std::strtold reads what its lexical_cast reads (nan, inf, hex).
+        char* end = nullptr;
+        const long double value = std::strtold(text.c_str(), &end);
+        if (end == text.c_str()) return {};  // not a number: CLI11's conversion reports it
+        if (!std::isfinite(value) || std::fabs(value) > std::numeric_limits<double>::max())
+          return "must be a finite number, not '" + text + "'";
+        return {};
+      },
+      "", "FINITE");
+}
 
 void printError(const std::string& program, const std::string& message) {
   std::cout.flush();
-  std::cerr << program << ": " << foldedOntoOneLine(message) << '\n';
+  // Control characters left inside a line (a carriage return or an escape sequence in an argument
+  // CLI11 quotes) would split or rewrite the line on a terminal.
+  std::string line = foldedOntoOneLine(message);
+  for (char& c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  std::cerr << program << ": " << line << '\n';
 }
 
 int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run) {
   const std::string program = app.get_name();
   app.footer(kExitStatusHelp);
   installInterruptCleanup();
+  checkFloatOptionsAreFinite(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -25,6 +25,10 @@ enum ExitStatus : int {
   kExitClaimFails = 3,  // iblkit-report --strict: a claim does not hold
 };
 
+// The most worker threads --threads takes (iblkit-bake, iblkit-trace): TBB crashes on an arena of
+// 70,000 threads, and no machine iblkit runs on has more than this many cores.
+inline constexpr int kMaxThreads = 1024;
+
 // The table above as --help prints it (the footer runProgram gives every program).
 extern const char* const kExitStatusHelp;
 
@@ -37,7 +41,12 @@ extern const char* const kExitStatusHelp;
 // run-time failure (kExitFailure), as it depends on what is on disk, not on the command line.
 int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run);
 
-// Prints "PROGRAM: message" on stderr, a multi-line message folded onto the one line.
+// A CLI11 check that refuses NaN and infinite numbers (and those beyond double's range).
+// runProgram gives it to every option whose type is FLOAT, the options of subcommands included.
+CLI::Validator finiteNumber();
+
+// Prints "PROGRAM: message" on stderr, a multi-line message folded onto the one line and any
+// other control character (a carriage return inside a line, an escape) printed as '?'.
 void printError(const std::string& program, const std::string& message);
 
 // A CLI11 check that accepts only `names`: the help lists them as {a,b,c}, anything else fails

@@ -115,6 +115,9 @@ float specularLobeProbability(const Material& material, float cosThetaO);
 struct PhongLobe {
   float exponent = 1.0f;
 };
+// The largest exponent the programs take (--phong): far larger ones overflow the lobe's float
+// normalisation and pdf into Inf and NaN.
+inline constexpr float kMaxPhongExponent = 1e6f;
 float evalPhongLobe(const PhongLobe& lobe, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi);
 BrdfSample samplePhongLobe(const PhongLobe& lobe, const glm::vec3& n, const glm::vec3& wo, glm::vec2 u);
 float pdfPhongLobe(const PhongLobe& lobe, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi);

@@ -1,5 +1,6 @@
 #include "core/environment_map.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -17,7 +18,7 @@ std::string sizeText(const Image& image) {
 
 bool isValidRadiance(const glm::vec4& pixel) {
   for (int c = 0; c < 3; ++c)
-    if (!std::isfinite(pixel[c]) || pixel[c] < 0.0f) return false;
+    if (!(pixel[c] >= 0.0f && pixel[c] <= EnvironmentMap::kMaxRadiance)) return false;
   return true;
 }
 
@@ -36,8 +37,14 @@ EnvironmentMap EnvironmentMap::fromImage(Image latLong, const std::filesystem::p
   for (const glm::vec4& pixel : latLong.pixels()) invalid += isValidRadiance(pixel) ? 0 : 1;
   if (invalid > 0)
     fail(fileForErrors,
-         "lat-long map has " + std::to_string(invalid) + " pixels that are NaN, infinite or negative");
+         "lat-long map has " + std::to_string(invalid) + " pixels that are NaN, infinite, negative or above 1e18");
   return EnvironmentMap(std::move(latLong));
+}
+
+float EnvironmentMap::brightestTexel() const {
+  float brightest = 0.0f;
+  for (const glm::vec4& pixel : image_.pixels()) brightest = std::max({brightest, pixel.r, pixel.g, pixel.b});
+  return brightest;
 }
 
 EnvironmentMap EnvironmentMap::constant(const glm::vec3& radiance, int width) {

@@ -16,10 +16,15 @@ namespace iblkit {
 
 class EnvironmentMap {
  public:
+  // The largest radiance a texel may have: a map's texel sums (importance sampling, SH projection)
+  // stay finite in float even for the largest maps. The sun is about 1e9.
+  static constexpr float kMaxRadiance = 1e18f;
+
   // Takes a lat-long map. Throws Error("<file>: lat-long map is WxH, expected a 2:1 aspect ratio")
   // unless width == 2 * height, Error("<file>: lat-long map is 0x0, expected at least 2x1") for
-  // an empty image, and Error("<file>: lat-long map has N pixels that are NaN, infinite or
-  // negative") for radiance no light can have (loaders repair these before they get here).
+  // an empty image, and Error("<file>: lat-long map has N pixels that are NaN, infinite, negative
+  // or above 1e18") for radiance no light can have (loaders repair NaN and negative pixels before
+  // they get here; kMaxRadiance keeps sums over the map finite in float).
   static EnvironmentMap fromImage(Image latLong, const std::filesystem::path& fileForErrors);
   // The same radiance in every direction, as a width x width/2 map (width even, >= 2).
   static EnvironmentMap constant(const glm::vec3& radiance, int width = 16);
@@ -29,6 +34,8 @@ class EnvironmentMap {
 
   // The lat-long map as loaded (rotation and intensity not applied).
   const Image& image() const { return image_; }
+  // The largest R, G or B of any texel, intensity not applied.
+  float brightestTexel() const;
   int width() const { return image_.width(); }
   int height() const { return image_.height(); }
 

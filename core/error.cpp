@@ -17,6 +17,16 @@ void fail(const std::filesystem::path& file, const std::string& problem) {
   throw Error(file.string() + ": " + problem);
 }
 
+std::string printableExcerpt(std::string_view text, std::size_t maxLength) {
+  std::string excerpt;
+  for (std::size_t i = 0; i < text.size() && i < maxLength; ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    excerpt += c >= 0x20 && c < 0x7f ? static_cast<char>(c) : '?';
+  }
+  if (text.size() > maxLength) excerpt += "...";
+  return excerpt;
+}
+
 void failUsage(const std::string& option, const std::string& problem) {
   throw UsageError(option + ": " + problem);
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace iblkit {
 
@@ -16,6 +17,11 @@ public:
 
 // Throws Error("<file>: <problem>").
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& problem);
+
+// Text from a bad input, fit to quote in a one-line message: control characters (carriage
+// returns, escapes) and bytes outside printable ASCII become '?', and text longer than
+// `maxLength` is cut with "...".
+std::string printableExcerpt(std::string_view text, std::size_t maxLength = 40);
 
 // Throws UsageError("<what>: must be in lo..hi, not value") unless lo <= value <= hi (see
 // usage_error.h). For programs checking an option before reading anything (what: "--width").

@@ -143,11 +143,13 @@ class ExrLevelReader {
     if (!Imf::isOpenExrFile(stream, tiled, deep, multiPart))
       fail(file, "not an OpenEXR file (bad magic number)");
     if (deep) fail(file, "deep OpenEXR images are not supported");
+    if (multiPart) fail(file, "multi-part OpenEXR files are not supported");
     if (tiled) {
       tiledFile_.emplace(stream);
       levels_ = countLevels(*tiledFile_);
     } else {
       scanlineFile_.emplace(stream);
+      checkScanlineChunkSizes();
     }
   }
 
@@ -196,6 +198,69 @@ class ExrLevelReader {
         return in.numLevels();
       default:
         fail(file_, "ripmap levels are not supported");
+    }
+  }
+
+  // The bytes `window` holds uncompressed: every channel's samples (subsampled channels have
+  // fewer) at their type's size, as OpenEXR lays a chunk out.
+  std::uint64_t uncompressedBytes(const Imath::Box2i& window) const {
+    const auto samples = [](int lo, int hi, int sampling) -> std::uint64_t {
+      if (sampling <= 0 || hi < lo) return 0;
+      const auto firstAtOrAbove = [&](std::int64_t v) {
+        const std::int64_t r = ((v % sampling) + sampling) % sampling;
+        return r == 0 ? v : v + (sampling - r);
+      };
+      const std::int64_t first = firstAtOrAbove(lo);
+      return first > hi ? 0 : std::uint64_t((hi - first) / sampling + 1);
+    };
+    std::uint64_t bytes = 0;
+    for (auto c = header().channels().begin(); c != header().channels().end(); ++c) {
+      const std::uint64_t size = c.channel().type == Imf::HALF ? 2 : 4;
+      bytes += size * samples(window.min.x, window.max.x, c.channel().xSampling) *
+               samples(window.min.y, window.max.y, c.channel().ySampling);
+    }
+    return bytes;
+  }
+
+  // Every chunk must hold the bytes its scanlines need: OpenEXR 3.1 copies an uncompressed chunk
+  // (or one stored raw because compression did not help) into the frame buffer without checking
+  // its size, and so reads past the data of a chunk shorter than its lines (a dataWindow wider than
+  // the chunk). A compressed chunk is at most that size; its decompressor checks the rest.
+  void checkScanlineChunkSizes() {
+    const Imath::Box2i window = header().dataWindow();
+    const int lines = linesPerChunk(header().compression());
+    for (std::int64_t y = window.min.y; y <= window.max.y; y += lines) {
+      const char* data = nullptr;
+      int size = 0;
+      scanlineFile_->rawPixelData(int(y), data, size);
+      Imath::Box2i chunk = window;
+      chunk.min.y = int(y);
+      chunk.max.y = int(std::min<std::int64_t>(window.max.y, y + lines - 1));
+      checkChunkSize(size, uncompressedBytes(chunk), "scanline chunk at y " + std::to_string(y));
+    }
+  }
+
+  void checkChunkSize(int size, std::uint64_t expected, const std::string& what) const {
+    const bool raw = header().compression() == Imf::NO_COMPRESSION || std::uint64_t(size) >= expected;
+    if (size < 0 || (raw && std::uint64_t(size) != expected))
+      fail(file_, what + " holds " + std::to_string(size) + " bytes, but its pixels need " +
+                      std::to_string(expected) + " uncompressed (corrupt or truncated file?)");
+  }
+
+  static int linesPerChunk(Imf::Compression compression) {
+    switch (compression) {
+      case Imf::ZIP_COMPRESSION:
+      case Imf::PXR24_COMPRESSION:
+        return 16;
+      case Imf::PIZ_COMPRESSION:
+      case Imf::B44_COMPRESSION:
+      case Imf::B44A_COMPRESSION:
+      case Imf::DWAA_COMPRESSION:
+        return 32;
+      case Imf::DWAB_COMPRESSION:
+        return 256;
+      default:  // NO, RLE, ZIPS
+        return 1;
     }
   }
 

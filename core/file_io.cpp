@@ -10,21 +10,13 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/temporary_files.h"
 
 namespace iblkit {
 
 std::vector<char> readFileBytes(const std::filesystem::path& file) {
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> stream(std::fopen(file.c_str(), "rb"), std::fclose);
-  if (!stream) fail(file, std::string("cannot open: ") + std::strerror(errno));
-  std::vector<char> bytes;
-  char buffer[1 << 16];
-  std::size_t count = 0;
-  while ((count = std::fread(buffer, 1, sizeof(buffer), stream.get())) > 0)
-    bytes.insert(bytes.end(), buffer, buffer + count);
-  if (std::ferror(stream.get())) fail(file, std::string("cannot read: ") + std::strerror(errno));
-  if (bytes.empty()) fail(file, "empty file (0 bytes)");
-  return bytes;
+  return readInputFile(file, kMaxBinaryInputBytes);
 }
 
 void refuseNonRegularOutput(const std::filesystem::path& file) {

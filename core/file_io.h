@@ -11,8 +11,9 @@
 
 namespace iblkit {
 
-// Every byte of `file`. Throws Error for a file that cannot be opened or read, and for an empty
-// (0-byte) file, which no format we read accepts.
+// Every byte of `file`: readInputFile(file, kMaxBinaryInputBytes) (input_file.h), so a file that
+// is not regular (a FIFO, /dev/zero) or is over 4 GiB is refused. Throws Error for a file that
+// cannot be opened or read, and for an empty (0-byte) file, which no format we read accepts.
 std::vector<char> readFileBytes(const std::filesystem::path& file);
 
 // Throws Error("<file>: exists and is not a regular file (not replaced)") or

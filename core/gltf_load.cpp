@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -20,6 +21,12 @@ namespace iblkit {
 namespace fs = std::filesystem;
 
 namespace {
+
+std::string coordinateLimitText() {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", double(kMaxSceneCoordinate));
+  return text;
+}
 
 std::string primitiveName(int mesh, int primitive) {
   return "mesh " + std::to_string(mesh) + " primitive " + std::to_string(primitive);
@@ -253,9 +260,14 @@ class Loader {
       mesh.isGround = isGroundNode(model_.nodes[nodeIndex]);
       const std::string where = primitiveName(mesh.source.mesh, mesh.source.primitive);
       transformMesh(mesh, world);
-      requireFinite(
-          std::span(reinterpret_cast<const float*>(mesh.positions.data()), 3 * mesh.positions.size()),
-          where + ": non-finite vertex position", file_);
+      if (const long long v = firstVertexOutOfRange(mesh); v >= 0) {
+        const glm::vec3& p = mesh.positions[std::size_t(v)];
+        const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        fail(file_, where + ": " +
+                        (finite ? "vertex position beyond " + coordinateLimitText() : "non-finite vertex position") +
+                        " (vertex " + std::to_string(v) + " in node " + std::to_string(nodeIndex) +
+                        ", after its transforms: scale, translation or matrix)");
+      }
       if (const std::size_t dropped = removeZeroAreaTriangles(mesh))
         warn(file_, where + ": dropped " + std::to_string(dropped) + " zero-area triangles");
       if (mesh.indices.empty()) continue;

@@ -7,8 +7,6 @@
 #include <array>
 #include <cctype>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -17,6 +15,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace iblkit::gltf {
 
@@ -29,11 +28,10 @@ constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
 // ---------------------------------------------------------------------------------------------
 // Files and folders
 
-bool readWholeFile(const fs::path& path, std::vector<unsigned char>* out) {
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) return false;
-  out->assign(std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>());
-  return !stream.bad();
+// A model file or one of its buffers: regular files only, at most kMaxBinaryInputBytes.
+std::vector<unsigned char> readModelBytes(const fs::path& path) {
+  const std::vector<char> bytes = readInputFile(path, kMaxBinaryInputBytes);
+  return std::vector<unsigned char>(bytes.begin(), bytes.end());
 }
 
 // True when `path` (resolved, symbolic links followed) lies inside the canonical `folder`.
@@ -81,8 +79,10 @@ bool folderReadWholeFile(std::vector<unsigned char>* out, std::string* err, cons
     *err = "'" + path + "' is outside the scene folder";
     return false;
   }
-  if (!readWholeFile(path, out)) {
-    *err = "cannot read '" + path + "'";
+  try {
+    *out = readModelBytes(path);
+  } catch (const Error& e) {
+    *err = e.what();
     return false;
   }
   return true;
@@ -468,9 +468,7 @@ void decodeDraco(tinygltf::Model& model, const fs::path& file) {
 }
 
 tinygltf::Model parse(const fs::path& file) {
-  std::vector<unsigned char> bytes;
-  if (!readWholeFile(file, &bytes)) fail(file, "cannot read file");
-  if (bytes.empty()) fail(file, "file is empty");
+  std::vector<unsigned char> bytes = readModelBytes(file);
 
   std::error_code error;
   SceneFolder scene{fs::weakly_canonical(fs::absolute(file), error).parent_path()};
@@ -480,6 +478,8 @@ tinygltf::Model parse(const fs::path& file) {
   const std::string_view text =
       binary ? (layout ? layout->json : std::string_view())
              : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  // tinygltf turns JSON into its Values recursively, one call per level (extras, extensions).
+  requireJsonNesting(text, file);
   // A document that does not parse is left to tinygltf, which reports why.
   nlohmann::json document = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
   std::vector<DracoIndices> dracoIndices;

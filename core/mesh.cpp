@@ -97,6 +97,13 @@ std::size_t removeZeroAreaTriangles(Mesh& mesh) {
   return total - kept;
 }
 
+long long firstVertexOutOfRange(const Mesh& mesh) {
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (!(std::abs(mesh.positions[i][c]) <= kMaxSceneCoordinate)) return static_cast<long long>(i);
+  return -1;
+}
+
 void transformMesh(Mesh& mesh, const glm::mat4& transform) {
   for (glm::vec3& p : mesh.positions) p = glm::vec3(transform * glm::vec4(p, 1.0f));
 

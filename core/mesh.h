@@ -82,6 +82,15 @@ std::size_t repairNormals(Mesh& mesh);
 // unchanged. Returns how many triangles were removed.
 std::size_t removeZeroAreaTriangles(Mesh& mesh);
 
+// The largest coordinate (in metres, absolute) a scene's vertices may have: the ray tracer's
+// offsets, distances and Embree's ray checks (origins below ~1.8e18) stay finite and meaningful
+// well inside it. Loaders refuse a vertex beyond it (or NaN) naming the file, model and node.
+inline constexpr float kMaxSceneCoordinate = 1e9f;
+
+// The index of the first position that is NaN, infinite or beyond kMaxSceneCoordinate in any
+// coordinate; -1 when there is none.
+long long firstVertexOutOfRange(const Mesh& mesh);
+
 // Applies an affine transform: positions by the matrix; normals by the cofactor matrix of its
 // upper 3x3 (det(M) M^-T, which is defined even for singular M) times the sign of the
 // determinant, i.e. along M^-T n, then re-normalised (zero normals stay zero for repairNormals to

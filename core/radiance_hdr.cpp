@@ -46,7 +46,7 @@ class HeaderParser {
       if (!line.starts_with(kFormat)) continue;
       const std::string_view format = line.substr(kFormat.size());
       if (format != "32-bit_rle_rgbe")
-        fail(file_, "unsupported FORMAT=" + std::string(format) + " (only 32-bit_rle_rgbe)");
+        fail(file_, "unsupported FORMAT=" + printableExcerpt(format) + " (only 32-bit_rle_rgbe)");
     }
     const Resolution resolution = parseResolution(nextLine());
     position = position_;
@@ -80,7 +80,7 @@ class HeaderParser {
                             tokens[0][1] != tokens[2][1] && parseSize(tokens[1], sizes[0]) &&
                             parseSize(tokens[3], sizes[1]);
     std::string quoted = "\"";  // built in steps: GCC 12 gives a false -Wrestrict on "\"" + string
-    quoted.append(line).push_back('"');
+    quoted.append(printableExcerpt(line)).push_back('"');
     if (!wellFormed) fail(file_, "bad resolution string " + quoted);
     if (tokens[0] != "-Y" || tokens[2] != "+X")
       fail(file_, "unsupported orientation " + quoted + " (only \"-Y H +X W\")");

@@ -33,7 +33,14 @@ EnvironmentSettings overriddenEnvironment(const EnvironmentSettings& scene,
 EnvironmentMap loadEnvironment(const EnvironmentSettings& settings,
                                ProbeFormat format = ProbeFormat::LatLong);
 
-// The map lighting `scene`: loadEnvironment(overriddenEnvironment(...)). When neither the scene
+// Throws unless settings.intensity x the brightest texel of `map` x its texel count stays within
+// float (1e36), so that no sum over the map overflows: a UsageError naming --env-intensity when
+// `override` sets the intensity, else Error("<scene file>: environment.intensity: ...").
+void checkEnvironmentIntensity(const EnvironmentMap& map, const EnvironmentSettings& settings, const Scene& scene,
+                               const EnvironmentOverride& override);
+
+// The map lighting `scene`: loadEnvironment(overriddenEnvironment(...)), checked with
+// checkEnvironmentIntensity. When neither the scene
 // nor the override names a map, throws Error("<scene file>: the scene names no environment map
 // (give --env FILE)").
 EnvironmentMap loadSceneEnvironment(const Scene& scene, const EnvironmentOverride& override = {});

@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <initializer_list>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -16,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/gltf_load.h"
+#include "core/input_file.h"
 #include "core/procedural_mesh.h"
 
 namespace iblkit {
@@ -27,6 +26,9 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kMaxImageSize = 16384;
+// kMaxSceneCoordinate (mesh.h) as the messages print it, and the largest environment rotation.
+constexpr const char* kMaxCoordinateText = "1e+09";
+constexpr double kMaxRotationDegrees = 1e6;
 
 // Reads one JSON object strictly: only the listed keys are allowed, and every error names the
 // key path ("models[0].scale").
@@ -224,6 +226,14 @@ void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene) 
     }
     for (Mesh& mesh : contents.meshes) {
       transformMesh(mesh, transform);
+      if (const long long v = firstVertexOutOfRange(mesh); v >= 0)
+        fail(root.file(), model.path() + ": translation, rotation and scale put vertex " + std::to_string(v) +
+                              " of " + path.string() +
+                              (mesh.source.node >= 0 ? " node " + std::to_string(mesh.source.node) + " (mesh " +
+                                                           std::to_string(mesh.source.mesh) + " primitive " +
+                                                           std::to_string(mesh.source.primitive) + ")"
+                                                     : std::string()) +
+                              " beyond " + kMaxCoordinateText + " or out of float range");
       mesh.material += materialOffset;
       mesh.source.model = int(i);
       scene.meshes.push_back(std::move(mesh));
@@ -254,9 +264,14 @@ void readGround(const ObjectReader& root, Scene& scene) {
   const ObjectReader ground(root.at("ground"), "ground", root.file(),
                             {"enabled", "height", "size", "material"});
   if (!ground.boolean("enabled", true)) return;
-  const float height = float(ground.number("height", scene.bounds.min.y));
-  const float size = float(ground.number("size", 10.0 * scene.bounds.radius(), 0.0));
+  // Within kMaxSceneCoordinate, so that the ground's corners are too (Embree asserts on rays
+  // beyond ~1.8e18; a 1e30 ground aborted the bake).
+  const double limit = kMaxSceneCoordinate;
+  const float height = float(ground.number("height", scene.bounds.min.y, -limit, limit));
+  const double automaticSize = std::min(10.0 * scene.bounds.radius(), limit);
+  const float size = float(ground.number("size", automaticSize, 0.0, limit));
   if (!(size > 0.0f)) ground.wrongValue("size", "a number > 0");
+
   // A neutral grey dielectric unless overridden.
   Material material;
   material.name = "ground";
@@ -276,7 +291,9 @@ void readEnvironment(const ObjectReader& root, const fs::path& folder, Scene& sc
   std::error_code error;
   if (!fs::is_regular_file(scene.environment.file, error))
     fail(root.file(), "environment.file: '" + name + "' does not exist");
-  scene.environment.rotationDegrees = float(environment.number("rotation", 0.0));
+  scene.environment.rotationDegrees =
+      float(environment.number("rotation", 0.0, -kMaxRotationDegrees, kMaxRotationDegrees));
+  // Beyond float it is inf: checkEnvironmentIntensity (scene_environment.h) names this key then.
   scene.environment.intensity = float(environment.number("intensity", 1.0, 0.0));
 }
 
@@ -303,12 +320,11 @@ void readCamera(const ObjectReader& root, Scene& scene) {
 }
 
 json parseDocument(const fs::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) fail(file, "cannot read file");
-  const std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  const std::string text = readJsonText(file);
   try {
     return json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // parse_error, and out_of_range for a number beyond double's range ("1e999").
     fail(file, std::string("invalid JSON: ") + e.what());
   }
 }

@@ -158,6 +158,8 @@ int bake(const Options& options) {
   std::optional<EnvironmentMap> environmentMap;
   if (!environment.file.empty()) {
     environmentMap = loadEnvironment(environment, parseProbeFormat(options.envFormat));
+    checkEnvironmentIntensity(*environmentMap, environment, scene, options.environment);
+    requireEnvironmentForStages(*environmentMap, environment.file);
     timings["load_environment_s"] = stopwatch.lap();
   }
 
@@ -270,7 +272,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(8, 1024))
       ->capture_default_str();
   app.add_option("--threads", options.threads, "worker threads; 0 = every core")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, iblkit::kMaxThreads))
       ->capture_default_str();
   return iblkit::runProgram(app, argc, argv, [&] {
     std::unique_ptr<tbb::global_control> threads;

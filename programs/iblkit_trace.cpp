@@ -69,7 +69,7 @@ int run(const Options& options, const CLI::App& app) {
   requireInRange("--spp", options.samplesPerPixel, 1, kMaxSamplesPerPixel);
   if (app.count("--width")) requireInRange("--width", options.width, 1, kMaxImageSide);
   if (app.count("--height")) requireInRange("--height", options.height, 1, kMaxImageSide);
-  if (options.threads < 0) failUsage("--threads", "must be >= 0 (0: all cores)");
+  requireInRange("--threads", options.threads, 0, kMaxThreads);
   if (options.maxDepth < 1)
     failUsage("--max-depth", "must be at least 1, got " + std::to_string(options.maxDepth));
   if (!(options.aoDistance > 0.0f)) failUsage("--ao-distance", "must be positive");
@@ -83,8 +83,10 @@ int run(const Options& options, const CLI::App& app) {
   integratorSettings.aoDistance = options.aoDistance;
   const PixelFilterKind filter = parsePixelFilter(options.filter);
   if (options.phongExponent) {
-    if (!std::isfinite(*options.phongExponent) || *options.phongExponent < 0.0f)
-      failUsage("--phong", "exponent must be finite and >= 0");
+    // Beyond ~1e6 the lobe's normalisation and pdf overflow float (NaN pixels).
+    if (!std::isfinite(*options.phongExponent) || *options.phongExponent < 0.0f ||
+        *options.phongExponent > kMaxPhongExponent)
+      failUsage("--phong", "exponent must be in [0, 1e6]");
     integratorSettings.phong = PhongLobe{*options.phongExponent};
   }
   if (!options.bentNormal.empty() && integratorSettings.kind != IntegratorKind::AmbientOcclusion)

@@ -32,8 +32,9 @@ void checkSettings(const RenderSettings& settings) {
   if (!inRange(settings.samplesPerPixel, 1, kMaxSamplesPerPixel))
     fail("render", "samples per pixel " + std::to_string(settings.samplesPerPixel) + " is outside 1.." +
                        std::to_string(kMaxSamplesPerPixel));
-  if (settings.threads < 0)
-    fail("render", "thread count " + std::to_string(settings.threads) + " is negative");
+  if (!inRange(settings.threads, 0, kMaxRenderThreads))
+    fail("render", "thread count " + std::to_string(settings.threads) + " is outside 0.." +
+                       std::to_string(kMaxRenderThreads));
 }
 
 glm::vec4 grey(double value) { return glm::vec4(glm::vec3(static_cast<float>(value)), 1.0f); }

@@ -19,6 +19,8 @@ inline constexpr int kTileSize = 16;
 // Largest accepted image side and sample count per pixel (Sobol indices stay exact in floats).
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr int kMaxSamplesPerPixel = 1 << 24;
+// The most threads a render takes (TBB crashes on an arena of 70,000).
+inline constexpr int kMaxRenderThreads = 1024;
 
 struct RenderSettings {
   int width = 0, height = 0;
@@ -27,7 +29,7 @@ struct RenderSettings {
   // > 0: render passes of samplesPerPixel until this many seconds have passed (at least one).
   double timeSeconds = 0.0;
   std::uint32_t seed = 0;
-  int threads = 0;                                // 0: all hardware threads
+  int threads = 0;                                // 0: all hardware threads, at most kMaxRenderThreads
   PixelFilterKind filter = PixelFilterKind::Box;  // pixel_filter.h
 };
 

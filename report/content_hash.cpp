@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace iblkit {
 
@@ -22,6 +23,8 @@ ContentHash& ContentHash::add(std::string_view text) {
 }
 
 ContentHash& ContentHash::addFile(const std::filesystem::path& file) {
+  // A FIFO or /dev/zero named as an input would block or never end.
+  requireRegularInputFile(file, kMaxBinaryInputBytes);
   std::ifstream stream(file, std::ios::binary);
   if (!stream) fail(file, "cannot read file");
   std::array<char, 1 << 16> buffer;

@@ -69,7 +69,7 @@ TEST(Sh9Json, ReadsBackTheCoefficientsAndTheCutoff) {
 
 TEST(Sh9Json, MissingOrMalformedFilesAreErrorsNamingTheFile) {
   const std::filesystem::path missing = test::scratchDir() / "no_sh9.json";
-  EXPECT_EQ(test::errorMessage([&] { readSh9Json(missing); }), missing.string() + ": cannot open");
+  EXPECT_EQ(test::errorMessage([&] { readSh9Json(missing); }), missing.string() + ": cannot open: No such file or directory");
   const std::filesystem::path shortList = test::scratchDir() / "short_sh9.json";
   std::ofstream(shortList) << R"({"L": [[1, 2, 3]], "windowCutoff": 0})";
   EXPECT_EQ(test::errorMessage([&] { readSh9Json(shortList); }),

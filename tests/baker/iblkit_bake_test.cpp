@@ -136,7 +136,9 @@ TEST(IblkitBake, BadScenesGiveOneLineErrorsAndNoOutput) {
     const char* model;
     std::string error;
   } cases[] = {
-      {"nan_position.gltf", "nan_position.gltf: mesh 0 primitive 0: non-finite vertex position"},
+      {"nan_position.gltf",
+       "nan_position.gltf: mesh 0 primitive 0: non-finite vertex position (vertex 1 in node 0, after its "
+       "transforms: scale, translation or matrix)"},
       {"points_only.gltf", "points_only.gltf: no triangle meshes"},
   };
   for (const auto& c : cases) {

@@ -139,7 +139,7 @@ TEST_F(SamplingStudyProgram, BadInputFailsWithOneLineBeforeAnythingIsWritten) {
        "sampling_study: notes.md: has no <!-- other2:begin --> ... <!-- other2:end --> section"},
       {{{"--name", "a/b"}}, 2, "sampling_study: --name: 'a/b' is not a file name"},
       {{{"--out-dir", "missing"}}, 1, "sampling_study: missing: folder does not exist"},
-      {{{"--scene", "missing.json"}}, 1, "sampling_study: missing.json: cannot read file"},
+      {{{"--scene", "missing.json"}}, 1, "sampling_study: missing.json: cannot open: No such file or directory"},
       {{{"--width", "0"}}, 2, "sampling_study: --width: must be in 1..16384, not 0"},
       {{{"--height", "20000"}}, 2, "sampling_study: --height: must be in 1..16384, not 20000"},
       {{{"--max-spp", "99999999"}}, 2, "sampling_study: --max-spp: must be in 1..16777216, not 99999999"},

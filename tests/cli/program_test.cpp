@@ -30,6 +30,10 @@ Outcome runTestProgram(
   CLI::App app{"A program for the test.", "test-program"};
   int count = 1;
   std::string kind = "small";
+  double scale = 1.0;
+  std::vector<double> range;
+  app.add_option("--scale", scale, "a scale");
+  app.add_option("--range", range, "two numbers")->expected(2);
   app.add_option("--count", count, "a count")->check(CLI::Range(1, 9));
   app.add_option("--kind", kind, "a kind")->check(nameChoice(kKinds, "kind"));
   arguments.insert(arguments.begin(), "test-program");
@@ -63,6 +67,13 @@ TEST(Program, AParseErrorIsOneLineWithTheProgramNameAndStatusTwo) {
       {{"--count", "x"}, "test-program: --count: Value x not in range 1 to 9\n"},
       {{"--count", "10"}, "test-program: --count: Value 10 not in range 1 to 9\n"},
       {{"--kind", "medium"}, "test-program: --kind: unknown kind 'medium' (expected one of small, large)\n"},
+      // Every FLOAT option is finite (runProgram adds finiteNumber), vectors of them included.
+      {{"--scale", "nan"}, "test-program: --scale: must be a finite number, not 'nan'\n"},
+      {{"--scale", "-inf"}, "test-program: --scale: must be a finite number, not '-inf'\n"},
+      {{"--scale", "1e999"}, "test-program: --scale: must be a finite number, not '1e999'\n"},
+      {{"--range", "0", "nan"}, "test-program: --range: must be a finite number, not 'nan'\n"},
+      // A carriage return or escape inside an argument cannot split or rewrite the line.
+      {{"--bad\rarg\x1b[2K"}, "test-program: The following argument was not expected: --bad?arg?[2K\n"},
   };
   for (const auto& [arguments, expected] : cases) {
     const Outcome outcome = runTestProgram(arguments);

@@ -41,7 +41,7 @@ TEST(EnvironmentMap, FromImageChecksTheImage) {
   bad.at(3, 0).r = INFINITY;
   bad.at(4, 0).a = NAN;  // alpha is not radiance
   EXPECT_EQ(test::errorMessage([&] { EnvironmentMap::fromImage(bad, "bad.hdr"); }),
-            "bad.hdr: lat-long map has 3 pixels that are NaN, infinite or negative");
+            "bad.hdr: lat-long map has 3 pixels that are NaN, infinite, negative or above 1e18");
   const EnvironmentMap smallest = EnvironmentMap::fromImage(Image(2, 1, glm::vec4(0.5f)), "tiny.exr");
   EXPECT_EQ(smallest.width(), 2);
   EXPECT_EQ(smallest.height(), 1);

@@ -46,7 +46,7 @@ TEST(ReadFileBytes, MissingEmptyAndDirectoryAreErrors) {
   EXPECT_EQ(test::errorMessage([&] { readFileBytes(missing); }),
             missing.string() + ": cannot open: No such file or directory");
   EXPECT_EQ(test::errorMessage([&] { readFileBytes(empty); }), empty.string() + ": empty file (0 bytes)");
-  EXPECT_EQ(test::errorMessage([&] { readFileBytes(dir); }), dir.string() + ": cannot read: Is a directory");
+  EXPECT_EQ(test::errorMessage([&] { readFileBytes(dir); }), dir.string() + ": not a regular file (a folder); only regular files are read");
 }
 
 TEST(WriteAtomically, WritesThroughATemporaryName) {

@@ -251,7 +251,7 @@ TEST_F(SceneFile, BrokenFilesAreErrors) {
     load({{"models", {{{"file", "../models/missing.gltf"}}}}});
     FAIL() << "loaded";
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), (root / "models" / "missing.gltf").string() + ": cannot read file");
+    EXPECT_EQ(std::string(e.what()), (root / "models" / "missing.gltf").string() + ": cannot open: No such file or directory");
   }
 }
 

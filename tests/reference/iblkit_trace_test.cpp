@@ -113,7 +113,8 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
        "iblkit-trace: --spp: must be in 1..16777216, not 16777217\n"},
       {"scene.json -o out.exr --width 20000", 2, "iblkit-trace: --width: must be in 1..16384, not 20000\n"},
       {"scene.json -o out.exr --height -4", 2, "iblkit-trace: --height: must be in 1..16384, not -4\n"},
-      {"scene.json -o out.exr --threads -1", 2, "iblkit-trace: --threads: must be >= 0 (0: all cores)\n"},
+      {"scene.json -o out.exr --threads -1", 2, "iblkit-trace: --threads: must be in 0..1024, not -1\n"},
+      {"scene.json -o out.exr --threads 70000", 2, "iblkit-trace: --threads: must be in 0..1024, not 70000\n"},
       // Checked before anything is read: the range error, not the missing scene.
       {"missing.json -o out.exr --spp 0", 2, "iblkit-trace: --spp: must be in 1..16777216, not 0\n"},
       {"scene.json -o out.exr --integrator bidir", 2,

@@ -77,7 +77,8 @@ TEST(Render, RefusesBadSettings) {
   EXPECT_EQ(message(8, -3, 1, 1), "render: image size 8x-3 is outside 1..16384");
   EXPECT_EQ(message(16385, 8, 1, 1), "render: image size 16385x8 is outside 1..16384");
   EXPECT_EQ(message(8, 8, 0, 1), "render: samples per pixel 0 is outside 1..16777216");
-  EXPECT_EQ(message(8, 8, 1, -1), "render: thread count -1 is negative");
+  EXPECT_EQ(message(8, 8, 1, -1), "render: thread count -1 is outside 0..1024");
+  EXPECT_EQ(message(8, 8, 1, 70000), "render: thread count 70000 is outside 0..1024");
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ TEST(ContentHash, FilesByContent) {
     ContentHash().addFile(folder / "missing.txt");
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), (folder / "missing.txt").string() + ": cannot read file");
+    EXPECT_EQ(std::string(e.what()), (folder / "missing.txt").string() + ": cannot open: No such file or directory");
   }
 }
 

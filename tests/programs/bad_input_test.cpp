@@ -1,0 +1,257 @@
+// End-to-end: the bad inputs of the outside fuzz campaign (issue 13), each generated here, given to
+// the real programs. Each must fail with exactly one line on stderr that names the input at fault
+// (the file, and the key or node where there is one) and the exit status of README.md: no crash,
+// no hang, no message from deep inside a library.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/image_io.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = 0;
+  std::vector<std::string> lines;  // stderr, stdout discarded
+  std::string text;
+};
+
+// Runs `program` with `arguments` under a 60 s timeout (a hang fails rather than blocks).
+Result run(const std::string& program, const std::string& arguments) {
+  Result result;
+  const std::string command =
+      "timeout 60 " + test::shellQuoted(test::binDir() / program) + " " + arguments + " 2>&1 >/dev/null";
+  result.status = test::runCommand(command, &result.text);
+  std::istringstream stream(result.text);
+  for (std::string line; std::getline(stream, line);)
+    if (line.find(": warning: ") == std::string::npos) result.lines.push_back(line);
+  return result;
+}
+
+// One error line, "PROGRAM: " then `expected` somewhere in it, no control characters, `status`.
+void expectOneLine(const Result& result, const std::string& program, int status, const std::string& expected) {
+  EXPECT_EQ(result.status, status) << result.text;
+  ASSERT_EQ(result.lines.size(), 1u) << result.text;
+  const std::string& line = result.lines[0];
+  EXPECT_EQ(line.rfind(program + ": ", 0), 0u) << line;
+  EXPECT_NE(line.find(expected), std::string::npos) << "expected '" << expected << "' in: " << line;
+  for (const char c : line) EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20) << "control character in: " << line;
+}
+
+void writeText(const fs::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary) << text;
+}
+
+std::string q(const fs::path& path) { return test::shellQuoted(path); }
+
+class BadInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::scratchDir();
+    writeExr(dir_ / "map.exr", Image(16, 8, glm::vec4(1.0f)));
+  }
+
+  // A scene of one sphere lit by map.exr, `models` and `environment` replaced when given.
+  fs::path scene(const std::string& name, const std::string& extra, const std::string& models = {},
+                 const std::string& environment = {}) {
+    const fs::path file = dir_ / name;
+    writeText(file, "{\"models\": " + (models.empty() ? std::string("[{\"shape\": \"sphere\"}]") : models) +
+                        ", \"environment\": " +
+                        (environment.empty() ? std::string("{\"file\": \"map.exr\"}") : environment) +
+                        ", \"width\": 8, \"height\": 8" + extra + "}");
+    return file;
+  }
+
+  Result trace(const fs::path& sceneFile, const std::string& more = {}) {
+    return run("iblkit-trace", q(sceneFile) + " -o " + q(dir_ / "out.exr") + " --spp 1 " + more);
+  }
+  Result bake(const fs::path& sceneFile, const std::string& more = {}) {
+    return run("iblkit-bake", q(sceneFile) + " -o " + q(dir_ / "baked") + " --ao-rays 4 --specular-samples 4 " + more);
+  }
+
+  fs::path dir_;
+};
+
+// A JSON value nested `depth` arrays deep.
+std::string deepArray(int depth) { return std::string(depth, '[') + std::string(depth, ']'); }
+
+std::string glbAround(std::string json) {
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  std::string glb = "glTF";
+  const auto u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+  u32(2);
+  u32(std::uint32_t(20 + json.size()));
+  u32(std::uint32_t(json.size()));
+  u32(0x4E4F534Au);
+  return glb + json;
+}
+
+// Crash 1: tinygltf turns extras into Values recursively; 100,000 levels overflowed the stack.
+TEST_F(BadInput, DeeplyNestedGlbIsRefused) {
+  const fs::path glb = dir_ / "deep.glb";
+  writeText(glb, glbAround("{\"asset\": {\"version\": \"2.0\"}, \"extras\": " + deepArray(100000) + "}"));
+  expectOneLine(run("iblkit-info", q(glb)), "iblkit-info", 1, glb.string() + ": JSON nests");
+  expectOneLine(trace(glb), "iblkit-trace", 1, glb.string() + ": JSON nests");
+  const fs::path gltf = dir_ / "deep.gltf";
+  writeText(gltf, "{\"asset\": {\"version\": \"2.0\"}, \"extras\": " + deepArray(100000) + "}");
+  expectOneLine(run("iblkit-info", q(gltf)), "iblkit-info", 1, gltf.string() + ": JSON nests");
+  const fs::path json = scene("deep.json", ", \"camera\": " + deepArray(100000));
+  expectOneLine(trace(json), "iblkit-trace", 1, json.string() + ": JSON nests");
+}
+
+// Crash 2: Embree asserted (ray.valid()) on a ground 1e30 wide or high.
+TEST_F(BadInput, HugeGroundIsRefusedNamingTheKey) {
+  const fs::path size = scene("size.json", ", \"ground\": {\"size\": 1e30}");
+  expectOneLine(bake(size), "iblkit-bake", 1, size.string() + ": ground.size");
+  const fs::path height = scene("height.json", ", \"ground\": {\"height\": 1e30}");
+  expectOneLine(bake(height), "iblkit-bake", 1, height.string() + ": ground.height");
+  expectOneLine(trace(height), "iblkit-trace", 1, height.string() + ": ground.height");
+}
+
+// Crash 3: TBB crashed on an arena of 70,000 threads.
+TEST_F(BadInput, ThreadCountIsCapped) {
+  const fs::path file = scene("scene.json", "");
+  expectOneLine(trace(file, "--threads 70000"), "iblkit-trace", 2, "--threads");
+  expectOneLine(bake(file, "--threads 70000"), "iblkit-bake", 2, "--threads");
+}
+
+// A single-part, uncompressed scanline OpenEXR with one FLOAT channel R, `width` x 1 pixels, whose
+// one chunk holds `storedPixels` pixels.
+void writeShortChunkExr(const fs::path& file, int width, int storedPixels) {
+  std::string exr("\x76\x2f\x31\x01", 4);
+  const auto i32 = [&](std::int32_t v) { exr.append(reinterpret_cast<const char*>(&v), 4); };
+  const auto f32 = [&](float v) { exr.append(reinterpret_cast<const char*>(&v), 4); };
+  const auto attribute = [&](const char* name, const char* type, std::int32_t size) {
+    exr.append(name, std::strlen(name) + 1);
+    exr.append(type, std::strlen(type) + 1);
+    i32(size);
+  };
+  i32(2);
+  attribute("channels", "chlist", 18 + 1);
+  exr.append("R\0", 2);
+  i32(2);  // FLOAT
+  exr.append("\0\0\0\0", 4);
+  i32(1);
+  i32(1);
+  exr.push_back('\0');
+  attribute("compression", "compression", 1);
+  exr.push_back('\0');
+  for (const char* window : {"dataWindow", "displayWindow"}) {
+    attribute(window, "box2i", 16);
+    i32(0), i32(0), i32(width - 1), i32(0);
+  }
+  attribute("lineOrder", "lineOrder", 1);
+  exr.push_back('\0');
+  attribute("pixelAspectRatio", "float", 4);
+  f32(1.0f);
+  attribute("screenWindowCenter", "v2f", 8);
+  f32(0.0f), f32(0.0f);
+  attribute("screenWindowWidth", "float", 4);
+  f32(1.0f);
+  exr.push_back('\0');
+  const std::uint64_t chunk = exr.size() + 8;
+  exr.append(reinterpret_cast<const char*>(&chunk), 8);
+  i32(0);
+  i32(4 * storedPixels);
+  for (int i = 0; i < storedPixels; ++i) f32(0.5f);
+  writeText(file, exr);
+}
+
+// Crash 5: OpenEXR copied a 1-pixel chunk into a 20,001-pixel line (at 1,001 it read garbage).
+TEST_F(BadInput, ExrChunkShorterThanItsLinesIsRefused) {
+  for (const int width : {1001, 20001}) {
+    const fs::path file = dir_ / ("wide" + std::to_string(width) + ".exr");
+    writeShortChunkExr(file, width, 1);
+    expectOneLine(run("iblkit-info", q(file)), "iblkit-info", 1, file.string() + ": scanline chunk at y 0 holds 4 bytes");
+  }
+  const fs::path whole = dir_ / "whole.exr";  // the same layout, complete, reads
+  writeShortChunkExr(whole, 8, 8);
+  EXPECT_EQ(run("iblkit-info", q(whole)).status, 0);
+}
+
+// Hangs: /dev/zero grew memory without end; a FIFO blocked the open.
+TEST_F(BadInput, SpecialFilesAreRefusedWithoutReading) {
+  const fs::path zero = scene("zero.json", "", "[{\"file\": \"/dev/zero\"}]");
+  expectOneLine(trace(zero), "iblkit-trace", 1, "/dev/zero: not a regular file");
+  const fs::path fifo = dir_ / "fifo.glb";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const fs::path viaFifo = scene("fifo.json", "", "[{\"file\": \"fifo.glb\"}]");
+  expectOneLine(trace(viaFifo), "iblkit-trace", 1, "fifo.glb: not a regular file (a FIFO)");
+  expectOneLine(run("iblkit-info", q(fifo)), "iblkit-info", 1, fifo.string() + ": not a regular file (a FIFO)");
+  ASSERT_EQ(::mkfifo((dir_ / "pipe.json").c_str(), 0600), 0);
+  expectOneLine(trace(dir_ / "pipe.json"), "iblkit-trace", 1, "pipe.json: not a regular file (a FIFO)");
+}
+
+// "prefilterSpecular: 1 levels ..." named no file.
+TEST_F(BadInput, MapTooSmallToBakeIsNamed) {
+  writeExr(dir_ / "tiny.exr", Image(2, 1, glm::vec4(1.0f)));
+  const fs::path file = scene("tiny.json", "", {}, "{\"file\": \"tiny.exr\"}");
+  expectOneLine(bake(file), "iblkit-bake", 1, "tiny.exr: lat-long map is 2x1");
+}
+
+// "EnvironmentMap: rotation must be finite", "PiecewiseConstant2D: value ... is inf".
+TEST_F(BadInput, EnvironmentRotationAndIntensityNameTheSceneKey) {
+  const fs::path rotation = scene("rotation.json", "", {}, "{\"file\": \"map.exr\", \"rotation\": 1e300}");
+  expectOneLine(trace(rotation), "iblkit-trace", 1, rotation.string() + ": environment.rotation");
+  const fs::path intensity = scene("intensity.json", "", {}, "{\"file\": \"map.exr\", \"intensity\": 1e38}");
+  expectOneLine(trace(intensity), "iblkit-trace", 1, intensity.string() + ": environment.intensity");
+  expectOneLine(bake(intensity), "iblkit-bake", 1, intensity.string() + ": environment.intensity");
+  expectOneLine(trace(scene("plain.json", ""), "--env-intensity 1e38"), "iblkit-trace", 2, "--env-intensity");
+}
+
+// "ray scene mesh 0: vertex 0 has a non-finite position" (1e200), NaN at write time (1e25).
+TEST_F(BadInput, ModelScaleOverflowNamesTheSceneKeyAndModel) {
+  for (const char* scale : {"1e200", "1e25"}) {
+    const fs::path file = scene(std::string("scale") + scale + ".json", "",
+                                std::string("[{\"shape\": \"sphere\", \"scale\": ") + scale + "}]");
+    expectOneLine(trace(file), "iblkit-trace", 1, file.string() + ": models[0]: translation, rotation and scale");
+    expectOneLine(bake(file), "iblkit-bake", 1, file.string() + ": models[0]: translation, rotation and scale");
+  }
+}
+
+// "[json.exception.out_of_range.406] number overflow parsing '1e999'" named no file.
+TEST_F(BadInput, NumberOverflowInSceneNamesTheScene) {
+  const fs::path file = scene("overflow.json", ", \"ground\": {\"size\": 1e999}");
+  expectOneLine(trace(file), "iblkit-trace", 1, file.string() + ": invalid JSON");
+}
+
+// A Radiance file whose pixels are 255 x 2^119: NaN was caught only when writing the output.
+TEST_F(BadInput, HdrExponent255NamesTheMap) {
+  std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
+  hdr += std::string(4 * 8, '\xff');
+  writeText(dir_ / "bright.hdr", hdr);
+  const fs::path file = scene("bright.json", "", {}, "{\"file\": \"bright.hdr\"}");
+  expectOneLine(trace(file), "iblkit-trace", 1, "bright.hdr: lat-long map has 8 pixels");
+}
+
+// The resolution line was echoed raw, carriage return and all.
+TEST_F(BadInput, HdrResolutionLineIsQuotedPrintable) {
+  const fs::path file = dir_ / "cr.hdr";
+  writeText(file, std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2\r +X 4\x1b[2J\n") + std::string(32, '\x80'));
+  expectOneLine(run("iblkit-info", q(file)), "iblkit-info", 1, file.string() + ": bad resolution string \"-Y 2? +X 4?[2J\"");
+}
+
+// --exposure nan and --exposure-range nan nan were accepted; --phong 1e30 gave NaN pixels.
+TEST_F(BadInput, NonFiniteOptionsAreUsageErrors) {
+  const fs::path file = scene("scene.json", "");
+  expectOneLine(trace(file, "--exposure nan"), "iblkit-trace", 2, "--exposure: must be a finite number, not 'nan'");
+  expectOneLine(trace(file, "--env-rotation inf"), "iblkit-trace", 2, "--env-rotation");
+  expectOneLine(trace(file, "--phong 1e30"), "iblkit-trace", 2, "--phong");
+  expectOneLine(run("iblkit-score", q(dir_ / "map.exr") + " " + q(dir_ / "map.exr") + " --exposure-range nan nan"),
+                "iblkit-score", 2, "--exposure-range: must be a finite number, not 'nan'");
+}
+
+}  // namespace
+}  // namespace iblkit
