@@ -14,9 +14,9 @@ namespace iblkit {
 
 void requireEnvironmentForStages(const EnvironmentMap& environment, const std::filesystem::path& file) {
   const int width = environment.width();
-  if (width < 8 || width % 4 != 0 || !std::has_single_bit(static_cast<unsigned>(width / 4)))
+  if (width < 8)
     fail(file, "lat-long map is " + std::to_string(width) + "x" + std::to_string(environment.height()) +
-                   "; prefiltering needs a width of at least 8 that is 4 times a power of two");
+                   "; prefiltering needs a width of at least 8");
 }
 
 EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, const EnvironmentStageOptions& options,

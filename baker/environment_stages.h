@@ -35,12 +35,11 @@ struct EnvironmentStageTimes {
 
 // Computes the stages of `environment` (its rotation and intensity applied): the SH9 projection,
 // its window (sh9 = the windowed projection), the irradiance cube, the full specular chain with a
-// face size of environment.width() / 4, and the DFG table. Parallel (TBB). `progress` (optional)
-// is called with (stages done, 4) before and after each stage; `times` (optional) receives the
-// seconds of each.
-// Throws Error("<file>: ...") unless `environment` can be prefiltered: a lat-long map at least
-// 8 x 4 whose width is 4 times a power of two (the specular cube's base size is width / 4). For
-// the programs, before any work, so the message names the map rather than a stage.
+// face size of defaultSpecularBaseSize(environment.width()), and the DFG table. Parallel (TBB).
+// `progress` (optional) is called with (stages done, 4) before and after each stage; `times`
+// (optional) receives the seconds of each.
+// Throws Error("<file>: ...") unless `environment` can be prefiltered: a lat-long map at least 8
+// texels wide. For the programs, before any work, so the message names the map rather than a stage.
 void requireEnvironmentForStages(const EnvironmentMap& environment, const std::filesystem::path& file);
 
 EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment,

@@ -228,8 +228,12 @@ CubeMap prefilterSpecularLevel(const CubeMapLevels& source, int size, float roug
   return prefilterLevel(BorderedCubeChain(source), source[0].size, size, roughness, sampleCount);
 }
 
+int defaultSpecularBaseSize(int latLongWidth) {
+  return static_cast<int>(std::bit_floor(static_cast<unsigned>(std::max(1, latLongWidth / 4))));
+}
+
 SpecularCube prefilterSpecular(const EnvironmentMap& environment, const SpecularPrefilterOptions& options) {
-  const int baseSize = options.baseSize > 0 ? options.baseSize : std::max(1, environment.width() / 4);
+  const int baseSize = options.baseSize > 0 ? options.baseSize : defaultSpecularBaseSize(environment.width());
   if (!std::has_single_bit(static_cast<unsigned>(baseSize)))
     throw std::invalid_argument("prefilterSpecular: base size " + std::to_string(baseSize) +
                                 " is not a power of two");

@@ -24,7 +24,7 @@
 namespace iblkit {
 
 struct SpecularPrefilterOptions {
-  // Face size of level 0; 0 picks environment.width() / 4 (128 for a 512 x 256 map).
+  // Face size of level 0; 0 picks defaultSpecularBaseSize(environment.width()).
   int baseSize = 0;
   // Number of levels; 0 picks the full chain down to 1 x 1 (log2(baseSize) + 1 levels).
   int levelCount = 0;
@@ -51,6 +51,11 @@ CubeMapLevels specularSourceChain(const EnvironmentMap& environment, int size);
 // chain is non-empty.
 CubeMap prefilterSpecularLevel(const CubeMapLevels& source, int size, float roughness,
                                std::uint32_t sampleCount);
+
+// The default face size of level 0 for a lat-long map `latLongWidth` texels wide: the largest
+// power of two at most width / 4 (128 for 512 x 256, 512 for a 3000 x 1500 photograph), so any map
+// at least 8 wide prefilters; the source cube samples the map by direction, so no size must divide.
+int defaultSpecularBaseSize(int latLongWidth);
 
 // The whole chain. Throws std::invalid_argument for a base size that is not a power of two, or a
 // level count outside [2, log2(baseSize) + 1].

@@ -128,8 +128,8 @@ TEST_F(BadInput, ThreadCountIsCapped) {
 }
 
 // A single-part, uncompressed scanline OpenEXR with one FLOAT channel R, `width` x 1 pixels, whose
-// one chunk holds `storedPixels` pixels.
-void writeShortChunkExr(const fs::path& file, int width, int storedPixels) {
+// one chunk holds `storedPixels` pixels, followed by `padding` bytes that belong to no chunk.
+void writeShortChunkExr(const fs::path& file, int width, int storedPixels, std::size_t padding = 0) {
   std::string exr("\x76\x2f\x31\x01", 4);
   const auto i32 = [&](std::int32_t v) { exr.append(reinterpret_cast<const char*>(&v), 4); };
   const auto f32 = [&](float v) { exr.append(reinterpret_cast<const char*>(&v), 4); };
@@ -166,6 +166,7 @@ void writeShortChunkExr(const fs::path& file, int width, int storedPixels) {
   i32(0);
   i32(4 * storedPixels);
   for (int i = 0; i < storedPixels; ++i) f32(0.5f);
+  exr.append(padding, '\0');
   writeText(file, exr);
 }
 
@@ -174,7 +175,14 @@ TEST_F(BadInput, ExrChunkShorterThanItsLinesIsRefused) {
   for (const int width : {1001, 20001}) {
     const fs::path file = dir_ / ("wide" + std::to_string(width) + ".exr");
     writeShortChunkExr(file, width, 1);
-    expectOneLine(run("iblkit-info", q(file)), "iblkit-info", 1, file.string() + ": scanline chunk at y 0 holds 4 bytes");
+    // The file is too small for its data window: refused before OpenEXR allocates anything.
+    expectOneLine(run("iblkit-info", q(file)), "iblkit-info", 1,
+                  file.string() + ": data window of " + std::to_string(width) + " x 1 pixels holds more data");
+    // Padded to the size the window needs, the one chunk is still short: refused by the chunk check.
+    const fs::path padded = dir_ / ("padded" + std::to_string(width) + ".exr");
+    writeShortChunkExr(padded, width, 1, 4 * static_cast<std::size_t>(width));
+    expectOneLine(run("iblkit-info", q(padded)), "iblkit-info", 1,
+                  padded.string() + ": scanline chunk at y 0 holds 4 bytes");
   }
   const fs::path whole = dir_ / "whole.exr";  // the same layout, complete, reads
   writeShortChunkExr(whole, 8, 8);
