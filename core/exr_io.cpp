@@ -59,6 +59,7 @@ class MemoryStream final : public Imf::IStream {
   void seekg(uint64_t position) override { position_ = position; }  // checked by the next read
 
   bool readPastEnd() const { return readPastEnd_; }
+  const std::vector<char>& bytes() const { return bytes_; }
 
  private:
   char* take(int n) {
@@ -137,7 +138,9 @@ void checkFileCanHold(const std::filesystem::path& file, std::int64_t width, std
 
 class ExrLevelReader {
  public:
-  ExrLevelReader(const std::filesystem::path& file, MemoryStream& stream, std::size_t fileBytes)
+  // `headerEnd`: where the single-part header ends and the chunk offset table starts (0: unknown).
+  ExrLevelReader(const std::filesystem::path& file, MemoryStream& stream, std::size_t fileBytes,
+                 std::size_t headerEnd)
       : file_(file), fileBytes_(fileBytes) {
     bool tiled = false, deep = false, multiPart = false;
     if (!Imf::isOpenExrFile(stream, tiled, deep, multiPart))
@@ -147,6 +150,7 @@ class ExrLevelReader {
     if (tiled) {
       tiledFile_.emplace(stream);
       levels_ = countLevels(*tiledFile_);
+      if (headerEnd > 0) checkTileSizes(stream.bytes(), headerEnd);
     } else {
       scanlineFile_.emplace(stream);
       checkScanlineChunkSizes();
@@ -237,6 +241,34 @@ class ExrLevelReader {
       chunk.min.y = int(y);
       chunk.max.y = int(std::min<std::int64_t>(window.max.y, y + lines - 1));
       checkChunkSize(size, uncompressedBytes(chunk), "scanline chunk at y " + std::to_string(y));
+    }
+  }
+
+  // The same for a tiled file, walking its offset table ourselves (OpenEXR's rawTileData crashed on
+  // a memory-mapped stream): the table follows the header, one 8-byte offset per tile, level by
+  // level; each tile is tx, ty, level x, level y and a size (4-byte ints) and then its data. An
+  // offset or tile header OpenEXR cannot use is left to it (it reports or rebuilds the table).
+  void checkTileSizes(const std::vector<char>& bytes, std::size_t headerEnd) const {
+    const Imf::TiledInputFile& in = *tiledFile_;
+    std::uint64_t tiles = 0;
+    for (int level = 0; level < levels_; ++level)
+      tiles += std::uint64_t(in.numXTiles(level)) * std::uint64_t(in.numYTiles(level));
+    if (tiles > (bytes.size() - std::min(bytes.size(), headerEnd)) / 8) return;  // OpenEXR reports it
+    for (std::uint64_t i = 0; i < tiles; ++i) {
+      std::uint64_t offset = 0;
+      std::memcpy(&offset, bytes.data() + headerEnd + 8 * i, sizeof offset);
+      if (offset < headerEnd || offset > bytes.size() || bytes.size() - offset < 20) continue;
+      std::int32_t fields[5] = {};  // tx, ty, lx, ly, size
+      std::memcpy(fields, bytes.data() + offset, sizeof fields);
+      const auto [tx, ty, lx, ly, size] = fields;
+      if (lx != ly || lx < 0 || lx >= levels_ || tx < 0 || tx >= in.numXTiles(lx) || ty < 0 ||
+          ty >= in.numYTiles(lx))
+        continue;
+      const std::string what = "tile " + std::to_string(tx) + ", " + std::to_string(ty) + " of level " +
+                               std::to_string(lx);
+      checkChunkSize(size, uncompressedBytes(in.dataWindowForTile(tx, ty, lx)), what);
+      if (std::uint64_t(size) > bytes.size() - offset - 20)
+        fail(file_, what + " runs past the end of the file (truncated file?)");
     }
   }
 
@@ -360,11 +392,12 @@ double channelListBytesPerPixel(const std::vector<char>& bytes, std::size_t at) 
 // fuzz/fuzz_exr). So the header is walked first as OpenEXR reads it (a walk by the declared sizes
 // alone got out of step with OpenEXR's reads through a channel list on a second fuzzed file), and
 // a value running past the end of the file is a truncated file. What the walk cannot follow (a
-// name without its NUL) is left to OpenEXR, which reports it.
-void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vector<char>& bytes) {
+// name without its NUL) is left to OpenEXR, which reports it. Returns where a single-part header
+// ends (its offset table starts), 0 for a multi-part file or a header the walk could not follow.
+std::size_t checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vector<char>& bytes) {
   constexpr std::uint32_t kMultiPartFlag = 0x1000;
   constexpr char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
-  if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 4) != 0) return;  // OpenEXR reports it
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 4) != 0) return 0;  // OpenEXR reports it
   std::uint32_t version = 0;
   std::memcpy(&version, bytes.data() + 4, sizeof version);
   std::size_t at = 8;
@@ -381,7 +414,7 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
     bool compressed = true;      // OpenEXR's default header is ZIP-compressed
     double bytesPerPixel = 0.0;  // a second channel list adds its channels to the first
     for (;;) {
-      if (at >= bytes.size()) return;
+      if (at >= bytes.size()) return 0;
       if (bytes[at] == '\0') {
         ++at;
         // The data window against the file before OpenEXR sizes its line buffers by it.
@@ -393,11 +426,11 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
       }
       empty = false;
       std::string_view name, type;
-      if (!readString(&name) || !readString(&type) || bytes.size() - at < 4) return;
+      if (!readString(&name) || !readString(&type) || bytes.size() - at < 4) return 0;
       std::int32_t size = 0;
       std::memcpy(&size, bytes.data() + at, sizeof size);
       at += 4;
-      if (size < 0) return;  // OpenEXR refuses it before reading
+      if (size < 0) return 0;  // OpenEXR refuses it before reading
       const std::optional<std::uint64_t> value = attributeValueBytes(bytes, at, type, size);
       if (!value || *value > bytes.size() - at) fail(file, "truncated file (unexpected end of data)");
       if (name == "dataWindow" && type == "box2i") {
@@ -410,7 +443,8 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
       }
       at += static_cast<std::size_t>(*value);
     }
-    if (!(version & kMultiPartFlag) || empty) return;
+    if (!(version & kMultiPartFlag)) return at;
+    if (empty) return 0;
   }
 }
 
@@ -418,11 +452,11 @@ void checkHeaderAttributeSizes(const std::filesystem::path& file, const std::vec
 template <class Use>
 auto withExrFile(const std::filesystem::path& file, Use&& use) {
   std::vector<char> bytes = readFileBytes(file);
-  checkHeaderAttributeSizes(file, bytes);
+  const std::size_t headerEnd = checkHeaderAttributeSizes(file, bytes);
   const std::size_t fileBytes = bytes.size();
   MemoryStream stream(file, std::move(bytes));
   return rethrowAsError(file, &stream, [&] {
-    ExrLevelReader reader(file, stream, fileBytes);
+    ExrLevelReader reader(file, stream, fileBytes, headerEnd);
     return use(reader);
   });
 }

@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include <ImfRgbaFile.h>
+#include <ImfTiledRgbaFile.h>
+
 #include "core/image_io.h"
 #include "support/error_capture.h"
 #include "support/test_paths.h"
@@ -258,6 +261,33 @@ TEST(Exr, DataWindowLargerThanTheFileCanHoldIsRefusedBeforeAllocating) {
   std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
   expectRefusedWithinOneGiB(file, file.string() + ": data window of 67108864 x 2 pixels holds more data than the file's " +
                                       std::to_string(bytes.size()) + " bytes can (truncated or corrupt header)");
+}
+
+// A tiled uncompressed file whose one tile declares fewer bytes than its pixels need: OpenEXR 3.1
+// copies an uncompressed tile by its pixels' size and so read past the declared data (issue 13's
+// short scanline chunk, in a tile). Written by OpenEXR, then the tile's size field is cut.
+TEST(Exr, TileShorterThanItsPixelsIsRefused) {
+  const std::filesystem::path file = test::scratchDir() / "short_tile.exr";
+  {
+    std::vector<Imf::Rgba> pixels(16, Imf::Rgba(0.5f, 0.25f, 1.0f, 1.0f));
+    Imf::TiledRgbaOutputFile out(file.c_str(), 4, 4, 8, 8, Imf::ONE_LEVEL, Imf::ROUND_DOWN, Imf::WRITE_RGBA, 1.0f,
+                                 Imath::V2f(0.0f, 0.0f), 1.0f, Imf::INCREASING_Y, Imf::NO_COMPRESSION);
+    out.setFrameBuffer(pixels.data(), 1, 4);
+    out.writeTile(0, 0);
+  }
+  EXPECT_FLOAT_EQ(readExr(file).at(3, 3).g, 0.25f);  // whole, it reads
+  std::vector<char> bytes = fileBytes(file);
+  // One tile at the end: tx, ty, lx, ly, size and 4 x 4 RGBA halves (128 bytes).
+  const std::size_t sizeField = bytes.size() - 128 - 4;
+  std::int32_t size = 0;
+  std::memcpy(&size, &bytes[sizeField], 4);
+  ASSERT_EQ(size, 128);
+  size = 4;
+  std::memcpy(&bytes[sizeField], &size, 4);
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  EXPECT_EQ(test::errorMessage([&] { readExr(file); }),
+            file.string() + ": tile 0, 0 of level 0 holds 4 bytes, but its pixels need 128 uncompressed "
+                            "(corrupt or truncated file?)");
 }
 
 // Layouts our writer never makes are committed files in tests/data/exr, written once with
