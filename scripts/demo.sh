@@ -8,7 +8,7 @@
 set -euo pipefail
 build=${1:-build}
 bin="$build/bin"
-out=out/demo
+out=${IBLKIT_DEMO_OUT:-out/demo}  # tests run it into a scratch folder
 mkdir -p "$out/maps"
 warnings="$out/warnings.log"
 : >"$warnings"
@@ -61,4 +61,5 @@ HTML
 mv "$out/inputs.html.tmp" "$out/inputs.html"
 echo "demo: wrote $out/inputs.html ($(wc -l <"$warnings") loader warnings in $warnings)"
 
-"$bin/iblkit-report" -o "$out" ${IBLKIT_REPORT_OPTIONS:-}
+# --force: the folder already holds this script's own inputs.html and maps/, which the report keeps.
+"$bin/iblkit-report" -o "$out" --force ${IBLKIT_REPORT_OPTIONS:-}
