@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/file_io.h"
 
 namespace iblkit {
 
@@ -57,10 +58,9 @@ std::vector<Input> describeInputs(const std::vector<fs::path>& paths) {
 }
 
 void checkFile(const fs::path& output, const std::vector<Input>& inputs) {
+  refuseNonRegularOutput(output);  // the rule writeAtomically checks again before its rename
   struct stat info {};
   const bool exists = ::stat(output.c_str(), &info) == 0;
-  if (exists && S_ISDIR(info.st_mode)) fail(output, "is a folder");
-  if (exists && !S_ISREG(info.st_mode)) fail(output, "exists and is not a regular file (not replaced)");
   const fs::path where = resolved(output);
   for (const Input& input : inputs) {
     if (exists && input.exists && sameFile(info, input.info))
