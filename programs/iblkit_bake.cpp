@@ -151,9 +151,6 @@ int bake(const Options& options) {
   // bake (or empty) unless --force.
   checkOutputs(sceneInputs(scene, options.environment), {},
                {OutputFolder(options.output, {"iblkit bake folder", {kBakeRecordFile}})}, options.force);
-  std::error_code error;
-  if (!environment.file.empty() && !fs::is_regular_file(environment.file, error))
-    fail(environment.file, "does not exist");
   // Loaded before the long visibility stage, so a bad map fails fast.
   std::optional<EnvironmentMap> environmentMap;
   if (!environment.file.empty()) {

@@ -200,6 +200,11 @@ TEST_F(BadInput, SpecialFilesAreRefusedWithoutReading) {
   expectOneLine(run("iblkit-info", q(fifo)), "iblkit-info", 1, fifo.string() + ": not a regular file (a FIFO)");
   ASSERT_EQ(::mkfifo((dir_ / "pipe.json").c_str(), 0600), 0);
   expectOneLine(trace(dir_ / "pipe.json"), "iblkit-trace", 1, "pipe.json: not a regular file (a FIFO)");
+  // A map given on the command line: the bake's map reader says what the file is, not that it is missing.
+  const fs::path fifoMap = dir_ / "fifo.exr";
+  ASSERT_EQ(::mkfifo(fifoMap.c_str(), 0600), 0);
+  expectOneLine(bake(scene("plain.json", ""), "--env " + q(fifoMap)), "iblkit-bake", 1,
+                fifoMap.string() + ": not a regular file (a FIFO)");
 }
 
 // "prefilterSpecular: 1 levels ..." named no file.
