@@ -38,6 +38,8 @@ namespace iblkit {
 struct GltfContents {
   std::vector<Mesh> meshes;  // world space, one per (node, primitive); source.model = 0
   std::vector<Material> materials;
+  std::vector<Texture> textures;  // Material TextureRef::texture indexes this
+  std::vector<TextureImage> images;
   std::optional<Camera> camera;
 };
 

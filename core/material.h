@@ -1,13 +1,23 @@
 #pragma once
 // The material parameters every program shares: glTF 2.0 metallic-roughness with the
 // KHR_materials_specular factor (0 gives a pure Lambert surface, which the diffuse-only
-// approximations are scored against). Evaluation and sampling live in brdf.h.
+// approximations are scored against), and the glTF texture slots, alpha mode and doubleSided.
+// Evaluation and sampling live in brdf.h; a material with its textures read at one surface point
+// (what brdf.h then evaluates) is surface_material.h.
 
 #include <string>
 
 #include <glm/glm.hpp>
 
+#include "core/texture.h"
+
 namespace iblkit {
+
+// glTF alphaMode. OPAQUE ignores alpha. MASK: a point is there where alpha >= alphaCutoff, in
+// every program and for every ray (camera, shadow, AO). BLEND: alpha is coverage (the fraction
+// of the point's footprint the surface covers), docs/material-model.md "Alpha": the tracer keeps a
+// hit with probability alpha, the raster covers that fraction of the pixel's samples.
+enum class AlphaMode { Opaque, Mask, Blend };
 
 struct Material {
   std::string name;
@@ -16,7 +26,21 @@ struct Material {
   float roughness = 1.0f;     // perceptual roughness r; alpha = r^2 (docs/conventions.md)
   float specular = 1.0f;      // KHR_materials_specular specularFactor (scales the dielectric F0 and Fresnel)
   glm::vec3 specularColor{1.0f};  // KHR_materials_specular specularColorFactor
-  glm::vec3 emissive{0.0f};       // glTF emissiveFactor (linear)
+  glm::vec3 emissive{0.0f};       // glTF emissiveFactor (linear), times KHR_materials_emissive_strength
+  float alpha = 1.0f;             // glTF baseColorFactor.a
+
+  // Texture slots (glTF 2.0 section 5.19-5.22); each multiplies its factors above.
+  TextureRef baseColorTexture;          // sRGB RGB, linear A
+  TextureRef metallicRoughnessTexture;  // linear; G roughness, B metallic
+  TextureRef normalTexture;             // linear tangent-space normal, X and Y scaled by normalScale
+  TextureRef occlusionTexture;          // linear R; 1 + occlusionStrength (R - 1)
+  TextureRef emissiveTexture;           // sRGB RGB
+  float normalScale = 1.0f;
+  float occlusionStrength = 1.0f;
+
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;
+  bool doubleSided = false;
 };
 
 // `material` with its factors clamped to their glTF ranges (docs/material-model.md, "Parameters"):

@@ -29,6 +29,8 @@ struct Scene {
   std::vector<std::filesystem::path> modelFiles;  // glTF files; MeshSource::model indexes this
   std::vector<Mesh> meshes;                       // world space, the ground (if any) included
   std::vector<Material> materials;                // Mesh::material indexes this
+  std::vector<Texture> textures;                  // TextureRef::texture indexes this
+  std::vector<TextureImage> images;               // Texture::image indexes this
   std::optional<Camera> camera;                   // absent: sceneCamera frames the bounds
   EnvironmentSettings environment;
   Bounds bounds;  // of every mesh except the ground

@@ -1,0 +1,52 @@
+#pragma once
+// A material at one surface point: its factors times what its texture slots read there, its
+// alpha, the glTF occlusion, and the shading normal perturbed by its normal texture. The one
+// implementation the reference tracer and the baker use; shaders/material.glsl is its GLSL twin
+// (same names) and the tests compare them. docs/material-model.md "Textures" has the formulas.
+
+#include <glm/glm.hpp>
+
+#include "core/material.h"
+#include "core/texture_sampling.h"
+
+namespace iblkit {
+
+// What a program knows about the point.
+struct SurfaceInputs {
+  glm::vec2 texcoords[2]{glm::vec2(0.0f), glm::vec2(0.0f)};  // TEXCOORD_0 and _1 (0 when absent)
+  // Unit interpolated vertex normal and tangent (xyz unit, w handedness; zero xyz: no tangent,
+  // the normal texture is then ignored), both already turned to the side being shaded (for the
+  // back face of a double-sided material: normal and tangent.xyz negated, w kept, so the
+  // bitangent w cross(n, t) keeps its direction, as the glTF sample viewer does).
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  glm::vec4 tangent{0.0f};
+  // Footprint width in uv units of each texCoord set (0: sharpest level), texture_sampling.h.
+  float footprintUv[2]{0.0f, 0.0f};
+  unsigned slots = kAllTextureSlots;  // slots switched on (TextureSlot bits)
+};
+
+struct SurfaceMaterial {
+  // The factors with the textures applied: baseColor = factor * texture.rgb, metallic = factor *
+  // texture.b, roughness = factor * texture.g, emissive = factor * texture.rgb, alpha = factor *
+  // texture.a; texture refs cleared. Ready for brdfLobes / BrdfAtPoint.
+  Material material;
+  float alpha = 1.0f;
+  float occlusion = 1.0f;  // 1 + strength (R - 1); the reference ignores it (it traces the truth)
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit shading normal: the perturbed normal, or the input's
+};
+
+SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTextures& textures,
+                                        const SurfaceInputs& inputs);
+
+// The base colour alpha only (factor times texture alpha), for alpha tests in ray filters.
+float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs);
+
+// Whether a point of `material` with alpha `alpha` is there: OPAQUE always, MASK alpha >= cutoff,
+// BLEND when `u` (uniform in [0, 1), the caller's random number) < alpha.
+bool surfacePresent(const Material& material, float alpha, float u);
+
+// The normal-texture perturbation: texel rgb in [0, 1] -> tangent-space (2 rgb - 1) with x and y
+// times `scale`, to world space by (t, w cross(n, t), n), normalised. Returns n for a zero tangent.
+glm::vec3 perturbNormal(const glm::vec3& n, const glm::vec4& tangent, const glm::vec3& texel, float scale);
+
+}  // namespace iblkit

@@ -1,0 +1,84 @@
+#pragma once
+// Sampling glTF textures on the CPU, the way OpenGL samples them (OpenGL 4.5 core, section 8.14
+// "Texture Minification" and 8.15 "Texture Magnification"), so that the reference and the baker
+// read the same values the raster does:
+// - Mip chains are built once per (image, colour space) by buildMipChain; the engine uploads these
+//   very levels, so both sides filter the same texels.
+// - sRGB texels are decoded (IEC 61966-2-1) before filtering, as GL does for SRGB8_ALPHA8.
+// - Wrap modes REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT per axis; texel centres at (i + 0.5) / size.
+// - The level of detail is lambda = log2(rho), rho the footprint in texels; magnification
+//   (lambda <= 0) uses magFilter, minification minFilter and, with mipmaps, the mip filter between
+//   floor(lambda) and floor(lambda) + 1 (GL's LINEAR_MIPMAP_LINEAR is trilinear).
+// The footprint rule of the reference (ray cones) is in docs/material-model.md "Texture filtering".
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/material.h"
+#include "core/texture.h"
+
+namespace iblkit {
+
+// IEC 61966-2-1 sRGB decoding of an 8-bit value: 188 -> 0.5029.
+float srgbToLinear(std::uint8_t value);
+// The decoding of every 8-bit value (index 0..255), for per-texel lookups.
+const float* srgbDecodeTable();
+
+// One image in one colour space, level 0 (the image) down to 1 x 1: level i is
+// max(1, floor(size / 2^i)) on each axis (GL's rule for glGenerateMipmap), each texel the box
+// average of the 2 x 2 (or 2 x 1, or 3 x n for odd sizes) texels under it, averaged in linear
+// space for sRGB images (decode, average, encode) and rounded to 8 bits.
+struct MipLevel {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;  // width * height * 4, in the chain's colour space
+};
+struct MipChain {
+  ColorSpace colorSpace = ColorSpace::Linear;
+  std::vector<MipLevel> levels;
+  int width() const { return levels.empty() ? 0 : levels[0].width; }
+  int height() const { return levels.empty() ? 0 : levels[0].height; }
+};
+MipChain buildMipChain(const TextureImage& image, ColorSpace colorSpace);
+
+// The level of detail lambda for an isotropic footprint `footprintUv` wide in uv units (0: the
+// finest level): log2(footprintUv * sqrt(width * height)) of level 0 (Akenine-Möller et al. 2019,
+// "Texture Level of Detail Strategies for Real-Time Ray Tracing", Ray Tracing Gems ch. 20).
+float textureLod(const MipChain& chain, float footprintUv);
+
+// The filtered, decoded (linear RGBA) value of `chain` at `uv` (after KHR_texture_transform) with
+// level of detail `lod`, sampled as `sampler` says.
+glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod);
+
+// The wrapped texel index for integer coordinate i on an axis of `size` texels.
+int wrapTexel(int i, int size, TextureWrap wrap);
+
+// Every texture of a scene, ready to sample: one MipChain per texture in each colour space the
+// scene's materials read it in (a texture used by two slots of different colour spaces gets two).
+class SceneTextures {
+ public:
+  SceneTextures() = default;
+  // Builds the chains for textures[*] over images[*] as materials' slots use them.
+  SceneTextures(const std::vector<Texture>& textures, const std::vector<TextureImage>& images,
+                const std::vector<Material>& materials);
+
+  bool empty() const { return textures_.empty(); }
+  // The chain of texture `texture` in `colorSpace`; nullptr if no slot reads it that way.
+  const MipChain* chain(int texture, ColorSpace colorSpace) const;
+  const TextureSampler& sampler(int texture) const;
+
+  // The slot's filtered value: ref's transform applied to `uv` (the texCoord set ref names),
+  // the footprint converted to a lod for this texture. ref must be present().
+  glm::vec4 sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float footprintUv) const;
+
+ private:
+  struct Entry {
+    TextureSampler sampler;
+    int linear = -1, srgb = -1;  // indices into chains_
+  };
+  std::vector<Entry> textures_;
+  std::vector<MipChain> chains_;
+};
+
+}  // namespace iblkit
