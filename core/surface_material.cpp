@@ -22,10 +22,21 @@ bool readSlot(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, const 
 SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTextures& textures,
                                         const SurfaceInputs& inputs) {
   SurfaceMaterial out;
-  out.material = material;
   Material& m = out.material;
-  m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture = m.occlusionTexture = m.emissiveTexture =
-      TextureRef{};
+  // Every field but the name (copying a std::string could allocate, once per hit) and the texture
+  // refs (left cleared: the result is ready for the BRDF).
+  m.baseColor = material.baseColor;
+  m.metallic = material.metallic;
+  m.roughness = material.roughness;
+  m.specular = material.specular;
+  m.specularColor = material.specularColor;
+  m.emissive = material.emissive;
+  m.alpha = material.alpha;
+  m.normalScale = material.normalScale;
+  m.occlusionStrength = material.occlusionStrength;
+  m.alphaMode = material.alphaMode;
+  m.alphaCutoff = material.alphaCutoff;
+  m.doubleSided = material.doubleSided;
   out.normal = inputs.normal;
   glm::vec4 value;
   // glTF 2.0 section 3.9.2: base colour and its alpha are factor times the (decoded) texel.
