@@ -1,7 +1,7 @@
-// What texture sampling costs per hit point (docs/benchmarks.md, "Textured materials"):
-// evaluateSurfaceMaterial with all five slots textured (five 1024 x 1024 images, trilinear at
-// random footprints, or bilinear at footprint 0) against the same material with every slot
-// switched off, over 4096 precomputed random points (uv, footprint, tangent frame).
+// What texture sampling costs per hit point (docs/benchmarks.md, "Textured materials: one
+// material evaluation"): evaluateSurfaceMaterial with all five slots textured (five 1024 x 1024
+// or 64 x 64 images, trilinear at random footprints, or bilinear at footprint 0) against the same
+// material with every slot switched off, over 4096 precomputed random points.
 #include <benchmark/benchmark.h>
 
 #include <random>
