@@ -27,6 +27,8 @@ Scene sceneFromGltf(const std::filesystem::path& path) {
   scene.modelFiles = {path};
   scene.meshes = std::move(contents.meshes);
   scene.materials = std::move(contents.materials);
+  scene.textures = std::move(contents.textures);
+  scene.images = std::move(contents.images);
   scene.camera = contents.camera;
   scene.bounds = objectBounds(scene.meshes);
   return scene;
