@@ -108,6 +108,33 @@ MaterialTextures::MaterialTextures(const Scene& scene, float anisotropy)
   }
 }
 
+void setMaterialUniforms(const ShaderProgram& program, const Material& material, unsigned boundSlots) {
+  const Material m = clampedToGltfRanges(material);
+  program.set("baseColor", m.baseColor);
+  program.set("metallic", m.metallic);
+  program.set("roughness", m.roughness);
+  program.set("specularWeight", m.specular);
+  program.set("specularColor", m.specularColor);
+  program.set("emissive", m.emissive);
+  program.set("baseAlpha", std::clamp(m.alpha, 0.0f, 1.0f));
+  program.set("normalScale", m.normalScale);
+  program.set("occlusionStrength", std::clamp(m.occlusionStrength, 0.0f, 1.0f));
+  program.set("alphaMode", int(m.alphaMode));
+  program.set("alphaCutoff", m.alphaCutoff);
+  program.set("doubleSided", int(m.doubleSided));
+  program.set("textureSlots", int(boundSlots));
+  if (boundSlots == 0) return;  // the untextured variant reads no slot
+  static const char* const kTexCoord[] = {"slotTexCoord[0]", "slotTexCoord[1]", "slotTexCoord[2]",
+                                          "slotTexCoord[3]", "slotTexCoord[4]"};
+  static const char* const kTransform[] = {"slotTransform[0]", "slotTransform[1]", "slotTransform[2]",
+                                           "slotTransform[3]", "slotTransform[4]"};
+  for (int slot = 0; slot < int(kSlots.size()); ++slot) {
+    const TextureRef& ref = slotRef(m, slot);
+    program.set(kTexCoord[slot], ref.texCoord);
+    program.set(kTransform[slot], ref.transform.matrix());
+  }
+}
+
 unsigned MaterialTextures::bind(const Material& material, unsigned slots) const {
   unsigned bound = 0;
   for (int slot = 0; slot < int(kSlots.size()); ++slot) {

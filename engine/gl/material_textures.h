@@ -11,6 +11,7 @@
 #include "core/scene.h"
 #include "core/texture_sampling.h"
 #include "engine/gl/gpu_textures.h"
+#include "engine/gl/shader_program.h"
 
 namespace iblkit {
 
@@ -66,6 +67,12 @@ class MaterialTextures {
   GlTexture white_;
   float anisotropy_ = 1.0f;
 };
+
+// Sets material.glsl's uniforms (and mesh.frag's specularWeight, specularColor, doubleSided,
+// textureSlots) on `program` for `material`, clamped to the glTF ranges (clampedToGltfRanges;
+// alpha and occlusion strength to [0, 1]), with `boundSlots` the bits MaterialTextures::bind
+// returned.
+void setMaterialUniforms(const ShaderProgram& program, const Material& material, unsigned boundSlots);
 
 // The colour space a slot reads its texture in (core/material.h): sRGB for base colour and
 // emissive, linear for metallic-roughness, normal and occlusion. `slot` is one TextureSlot bit.

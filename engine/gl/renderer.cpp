@@ -149,7 +149,6 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   for (std::size_t i = 0; i < r.meshes.size(); ++i) {
     const Mesh& mesh = r.scene.meshes[i];
     const Material& material = r.scene.materials.at(std::size_t(mesh.material));
-    const Material m = clampedToGltfRanges(material);
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
     const ShaderProgram& program = r.meshProgram(settings.mode, settings.layer, slots != 0);
@@ -162,28 +161,9 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       current = &program;
     }
     program.set("isGround", int(mesh.isGround));
-    program.set("baseColor", m.baseColor);
-    program.set("metallic", m.metallic);
-    program.set("roughness", m.roughness);
-    program.set("specularWeight", m.specular);
-    program.set("specularColor", m.specularColor);
-    program.set("emissive", m.emissive);
-    program.set("baseAlpha", std::clamp(m.alpha, 0.0f, 1.0f));
-    program.set("normalScale", m.normalScale);
-    program.set("occlusionStrength", std::clamp(m.occlusionStrength, 0.0f, 1.0f));
-    program.set("alphaMode", int(m.alphaMode));
-    program.set("alphaCutoff", m.alphaCutoff);
-    program.set("doubleSided", int(m.doubleSided));
-    program.set("textureSlots", int(slots));
-    const TextureRef* refs[] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
-                                &m.occlusionTexture, &m.emissiveTexture};
-    for (int slot = 0; slot < 5; ++slot) {
-      const std::string index = "[" + std::to_string(slot) + "]";
-      program.set(("slotTexCoord" + index).c_str(), refs[slot]->texCoord);
-      program.set(("slotTransform" + index).c_str(), refs[slot]->transform.matrix());
-    }
+    setMaterialUniforms(program, material, slots);
     // glTF 2.0 section 3.9.5 (doubleSided): false culls back faces; true shades both sides.
-    if (m.doubleSided)
+    if (material.doubleSided)
       glDisable(GL_CULL_FACE);
     else
       glEnable(GL_CULL_FACE);
