@@ -44,6 +44,8 @@ uniform vec3 specularColor;
 // double-sided (the back face then shades with the normal and tangent negated).
 uniform int textureSlots;
 uniform bool doubleSided;
+// GL_SAMPLES of the target (renderer.cpp; llvmpipe's gl_NumSamples reads 1 on a multisampled one).
+uniform int framebufferSamples;
 // Environment: SH9 radiance (rotated on the CPU), the lat-long map with its total rotation and
 // intensity, the specular chain with the extra rotation only (the scene's is baked into it).
 uniform vec3 shRadiance[9];
@@ -117,7 +119,7 @@ void main() {
   if (alphaMode == kAlphaModeMask && !surfacePresent(m.alpha, 0.0)) discard;
   // A single-sample target ignores gl_SampleMask (no multisample fragment operations): there the
   // one sample's bit decides through discard.
-  int sampleMask = coverageMask(m.alpha, uvec2(gl_FragCoord.xy), max(gl_NumSamples, 1));
+  int sampleMask = coverageMask(m.alpha, uvec2(gl_FragCoord.xy), max(framebufferSamples, 1));
   if (sampleMask == 0) discard;
   gl_SampleMask[0] = sampleMask;
   float coverage = isGround ? 0.0 : 1.0;

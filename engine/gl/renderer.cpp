@@ -63,10 +63,10 @@ struct Renderer::Impl {
   }
 };
 
-Renderer::Renderer(const BakedScene& bake) : impl_(std::make_unique<Impl>()) {
+Renderer::Renderer(const BakedScene& bake, float textureAnisotropy) : impl_(std::make_unique<Impl>()) {
   impl_->scene = bake.scene;
   for (const Mesh& mesh : bake.scene.meshes) impl_->meshes.emplace_back(mesh);
-  impl_->materialTextures = MaterialTextures(bake.scene, 16.0f);
+  impl_->materialTextures = MaterialTextures(bake.scene, textureAnisotropy);
   glCreateVertexArrays(1, &impl_->emptyVertexArray);
   setEnvironment(bake.env);
 }
@@ -132,7 +132,10 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   // SH9 radiance turned by the extra rotation (the scene's is in the baked coefficients).
   const SphericalHarmonics9 sh =
       settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
+  GLint samples = 1;
+  glGetIntegerv(GL_SAMPLES, &samples);
   auto setFrameUniforms = [&](const ShaderProgram& program) {
+    program.set("framebufferSamples", int(samples));
     program.set("viewProjection", viewProjection);
     program.set("cameraPosition", camera.position);
     program.setArray("shRadiance", sh.coefficients.data(), kShCoefficients);

@@ -42,6 +42,9 @@ struct FrameSettings {
 // `degrees` is unset (the bake's own rotation).
 float envRotationFromBake(const EnvironmentStages& env, std::optional<float> degrees);
 
+// The anisotropy the renderer's trilinear samplers ask for (where the driver offers it).
+inline constexpr float kDefaultTextureAnisotropy = 16.0f;
+
 class Renderer {
  public:
   // Uploads the scene's meshes (with their baked attributes), material textures (their core mip
@@ -49,7 +52,9 @@ class Renderer {
   // it) and environment stages. Needs a
   // current OpenGL 4.5 core context (HeadlessContext or a window's); the Renderer must be
   // destroyed while that context is still current. Throws Error for shader build failures.
-  explicit Renderer(const BakedScene& bake);
+  // `textureAnisotropy` caps the trilinear samplers' anisotropy (1: isotropic, as the reference's
+  // footprint rule is; clamped to the driver's maximum).
+  explicit Renderer(const BakedScene& bake, float textureAnisotropy = kDefaultTextureAnisotropy);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
