@@ -1,6 +1,7 @@
 #include "reference/integrator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/constants.hpp>
 
 #include "core/brdf.h"
@@ -149,8 +150,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, Cam
     const SurfacePoint point = scene_.surfacePoint(hit, wo, cone);
     if (depth == 0) recordFirstHit(point, hit.t, result);
     result.radiance += throughput * point.emissive;
-    // The texture footprint rule after a bounce: the cone keeps the camera's spread and starts
-    // from its width at this vertex (docs/reference-tracer.md "Texture filtering").
+    // The path's next rays (shadow and bounce) start their cone at its width here.
     cone.width = cone.widthAt(hit.t);
     if (depth == maxDepth) return;
 
@@ -188,6 +188,10 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, Cam
     const BrdfSample scattered = sampleReflection(brdf, point.baseColor, n, wo, uBrdf, uLobe);
     if (!scattered.valid()) return;
     throughput *= scattered.weight;
+    // The cone widens by the sampled lobe's angular width, the half-angle of a cone whose solid
+    // angle is 1 / pdf (pi theta^2 = 1 / pdf), at most 1 radian (a Lambert lobe); a mirror keeps
+    // it (docs/reference-tracer.md "Texture filtering").
+    if (!scattered.delta) cone.spread += std::min(1.0f, 1.0f / std::sqrt(glm::pi<float>() * scattered.pdf));
     previousPdf = scattered.pdf;
     previousDelta = scattered.delta;
     // Russian roulette (Arvo and Kirk 1990): continue with probability q, dividing by q.

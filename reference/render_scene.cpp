@@ -84,7 +84,7 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
     point.lobes = lobes_[materialIndex];
   } else {
     SurfaceInputs inputs;
-    inputs.slots = slots_;
+    inputs.slots = slots_ & ~unsigned(kSlotOcclusion);  // not applied: no need to read it
     if (mesh.texcoords.size() == mesh.positions.size()) inputs.texcoords[0] = interpolate(mesh.texcoords, corner, u, v);
     if (mesh.texcoords1.size() == mesh.positions.size())
       inputs.texcoords[1] = interpolate(mesh.texcoords1, corner, u, v);
