@@ -22,10 +22,21 @@ bool readSlot(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, const 
 SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTextures& textures,
                                         const SurfaceInputs& inputs) {
   SurfaceMaterial out;
-  out.material = material;
   Material& m = out.material;
-  m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture = m.occlusionTexture = m.emissiveTexture =
-      TextureRef{};
+  // Every field but the name (copying a std::string could allocate, once per hit) and the texture
+  // refs (left cleared: the result is ready for the BRDF).
+  m.baseColor = material.baseColor;
+  m.metallic = material.metallic;
+  m.roughness = material.roughness;
+  m.specular = material.specular;
+  m.specularColor = material.specularColor;
+  m.emissive = material.emissive;
+  m.alpha = material.alpha;
+  m.normalScale = material.normalScale;
+  m.occlusionStrength = material.occlusionStrength;
+  m.alphaMode = material.alphaMode;
+  m.alphaCutoff = material.alphaCutoff;
+  m.doubleSided = material.doubleSided;
   out.normal = inputs.normal;
   glm::vec4 value;
   // glTF 2.0 section 3.9.2: base colour and its alpha are factor times the (decoded) texel.
@@ -74,12 +85,11 @@ bool surfacePresent(const Material& material, float alpha, float u) {
 glm::vec3 perturbNormal(const glm::vec3& n, const glm::vec4& tangent, const glm::vec3& texel, float scale) {
   // glTF 2.0 section 3.9.3 (normalTexture): scaledNormal = normalize((2 texel - 1) * (scale, scale, 1)),
   // in the tangent frame (t, b, n), b = w cross(n, t) (section 3.7.2.1).
-  glm::vec3 t(tangent);
-  // Interpolated tangents drift off the plane of the interpolated normal: Gram-Schmidt them back.
-  t -= n * glm::dot(n, t);
-  const float tLength = glm::length(t);
-  if (!(tLength > 0.0f)) return n;
-  t /= tLength;
+  // The interpolated frame is used as it is, not re-orthogonalised: the notes of Mikkelsen's
+  // reference implementation (mikktspace.h, on the pixel shader) ask for exactly this, so that the
+  // frame is the one the map was baked against; shaders/material.glsl does the same.
+  const glm::vec3 t(tangent);
+  if (t == glm::vec3(0.0f)) return n;
   const glm::vec3 b = (tangent.w < 0.0f ? -1.0f : 1.0f) * glm::cross(n, t);
   const glm::vec3 m = 2.0f * texel - 1.0f;
   const glm::vec3 world = t * (m.x * scale) + b * (m.y * scale) + n * m.z;

@@ -99,26 +99,41 @@ int floorToInt(float x) {
   return static_cast<int>(std::floor(std::clamp(x, -16777216.0f, 16777216.0f)));
 }
 
-glm::vec4 fetch(const MipLevel& level, const float* rgbTable, int x, int y) {
+// rgbTable decodes R, G and B; alpha is always linear (the table's linear half).
+glm::vec4 fetch(const MipLevel& level, const float* rgbTable, const float* alphaTable, int x, int y) {
   const std::uint8_t* texel = &level.rgba[(static_cast<std::size_t>(y) * level.width + x) * 4];
-  return glm::vec4(rgbTable[texel[0]], rgbTable[texel[1]], rgbTable[texel[2]], tables().linear[texel[3]]);
+  return glm::vec4(rgbTable[texel[0]], rgbTable[texel[1]], rgbTable[texel[2]], alphaTable[texel[3]]);
+}
+
+// The wrapped neighbours i0 = wrap(i), i1 = wrap(i + 1) of a LINEAR lookup; REPEAT (the common
+// case) without a second division.
+void wrapPair(int i, int size, TextureWrap wrap, int& i0, int& i1) {
+  i0 = wrapTexel(i, size, wrap);
+  if (wrap == TextureWrap::Repeat)
+    i1 = i0 + 1 == size ? 0 : i0 + 1;
+  else
+    i1 = wrapTexel(i + 1, size, wrap);
 }
 
 // GL 4.5 section 8.14.2: NEAREST takes the texel containing (u, v); LINEAR the 2 x 2 texels
 // around it, at i0 = wrap(floor(u' - 1/2)), i1 = wrap(i0 + 1), weighted by frac(u' - 1/2).
 glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const TextureSampler& sampler,
                       glm::vec2 uv, TextureFilter filter) {
+  const float* alphaTable = tables().linear.data();
   const float x = uv.x * level.width, y = uv.y * level.height;
   if (filter == TextureFilter::Nearest)
-    return fetch(level, rgbTable, wrapTexel(floorToInt(x), level.width, sampler.wrapS),
+    return fetch(level, rgbTable, alphaTable, wrapTexel(floorToInt(x), level.width, sampler.wrapS),
                  wrapTexel(floorToInt(y), level.height, sampler.wrapT));
-  const int x0 = floorToInt(x - 0.5f), y0 = floorToInt(y - 0.5f);
-  const float fx = std::isfinite(x) ? (x - 0.5f) - std::floor(x - 0.5f) : 0.0f;
-  const float fy = std::isfinite(y) ? (y - 0.5f) - std::floor(y - 0.5f) : 0.0f;
-  const int i0 = wrapTexel(x0, level.width, sampler.wrapS), i1 = wrapTexel(x0 + 1, level.width, sampler.wrapS);
-  const int j0 = wrapTexel(y0, level.height, sampler.wrapT), j1 = wrapTexel(y0 + 1, level.height, sampler.wrapT);
-  const glm::vec4 top = glm::mix(fetch(level, rgbTable, i0, j0), fetch(level, rgbTable, i1, j0), fx);
-  const glm::vec4 bottom = glm::mix(fetch(level, rgbTable, i0, j1), fetch(level, rgbTable, i1, j1), fx);
+  const float xs = std::isfinite(x) ? x - 0.5f : 0.0f, ys = std::isfinite(y) ? y - 0.5f : 0.0f;
+  const float xFloor = std::floor(xs), yFloor = std::floor(ys);
+  const float fx = xs - xFloor, fy = ys - yFloor;
+  int i0, i1, j0, j1;
+  wrapPair(floorToInt(xFloor), level.width, sampler.wrapS, i0, i1);
+  wrapPair(floorToInt(yFloor), level.height, sampler.wrapT, j0, j1);
+  const glm::vec4 top =
+      glm::mix(fetch(level, rgbTable, alphaTable, i0, j0), fetch(level, rgbTable, alphaTable, i1, j0), fx);
+  const glm::vec4 bottom =
+      glm::mix(fetch(level, rgbTable, alphaTable, i0, j1), fetch(level, rgbTable, alphaTable, i1, j1), fx);
   return glm::mix(top, bottom, fy);
 }
 
@@ -165,7 +180,8 @@ int wrapTexel(int i, int size, TextureWrap wrap) {
     case TextureWrap::ClampToEdge:
       return std::clamp(i, 0, size - 1);
     case TextureWrap::MirroredRepeat: {
-      int m = i % (2 * size);
+      // Power-of-two sizes (most textures) wrap by a mask (two's complement), without a division.
+      int m = (size & (size - 1)) == 0 ? i & (2 * size - 1) : i % (2 * size);
       if (m < 0) m += 2 * size;
       const int a = m - size;
       const int mirrored = a >= 0 ? a : -(1 + a);
@@ -173,6 +189,7 @@ int wrapTexel(int i, int size, TextureWrap wrap) {
     }
     case TextureWrap::Repeat:
     default: {
+      if ((size & (size - 1)) == 0) return i & (size - 1);
       const int m = i % size;
       return m < 0 ? m + size : m;
     }
