@@ -91,8 +91,9 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
     inputs.normal = shading;
     if (mesh.tangents.size() == mesh.positions.size()) {
       const glm::vec4 t = interpolate(mesh.tangents, corner, u, v);
-      // Gram-Schmidt against the normal: interpolation leaves the tangent off the plane of n.
-      glm::vec3 tangent = glm::vec3(t) - glm::dot(glm::vec3(t), shading) * shading;
+      // Normalised but not re-orthogonalised: perturbNormal uses the interpolated frame as it
+      // is, as MikkTSpace's notes and shaders/material.glsl do.
+      glm::vec3 tangent(t);
       const float tangentLength = glm::length(tangent);
       if (tangentLength > 0.0f) {
         tangent /= tangentLength;
