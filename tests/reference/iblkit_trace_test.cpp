@@ -101,6 +101,16 @@ TEST_F(IblkitTrace, GaussianFilterSoftensEdges) {
   EXPECT_GT(partial(readExr(dir_ / "gauss_mask.exr")), partial(readExr(dir_ / "box_mask.exr")));
 }
 
+// The texture options on an untextured scene: nothing to switch off, no texture level to pick,
+// so the image is bit for bit the default one.
+TEST_F(IblkitTrace, TextureOptionsLeaveAnUntexturedSceneAlone) {
+  std::string output;
+  ASSERT_EQ(trace("scene.json -o a.exr --spp 2 --threads 2", &output), 0) << output;
+  ASSERT_EQ(trace("scene.json -o b.exr --spp 2 --threads 2 --no-textures --texture-footprint 0", &output), 0)
+      << output;
+  EXPECT_EQ(readExr(dir_ / "a.exr").pixels(), readExr(dir_ / "b.exr").pixels());
+}
+
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
   struct Case {
     std::string arguments;
@@ -129,6 +139,7 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
       {"scene.json -o nowhere/out.exr", 1, "iblkit-trace: nowhere/out.exr: folder does not exist\n"},
       {"scene.json -o out.exr --bent-normal b.exr", 2,
        "iblkit-trace: --bent-normal: needs --integrator ao\n"},
+      {"scene.json -o out.exr --texture-footprint -1", 2, "TBD"},
       {"scene.json", 2, "iblkit-trace: --output is required\n"},
       {"scene.json -o out.exr --no-such-option", 2,
        "iblkit-trace: The following argument was not expected: --no-such-option\n"},
