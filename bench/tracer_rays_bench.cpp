@@ -16,6 +16,13 @@
 // triangles) of the bunny's size and material where it stood: whether the overhead falls as Embree's
 // share of a ray grows with the mesh (barely: docs/benchmarks.md).
 //
+// BM_RenderTextured: the bunny scene made fully textured (every mesh given planar TEXCOORD_0 and
+// a material with all five slots: 1024 x 1024 generated base colour (sRGB, alpha 1), metallic-
+// roughness, normal, occlusion and emissive textures, trilinear, repeat; tangents generated),
+// rendered with the textures read (third argument 1) and with every slot off (0: the same scene,
+// the same mip chains built, the constant factors traced; iblkit-trace --no-textures). Its
+// Mrays/s ratio is the cost of texture sampling (issue 14: at most 15%).
+//
 // Needs the assets: IBLKIT_ASSETS (scripts/bench.sh sets it) or ./assets.
 
 #include <benchmark/benchmark.h>
@@ -24,6 +31,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -68,7 +76,60 @@ struct Tracer {
   }
 };
 
-enum SceneVariant { kBunny = 0, kDenseSphere = 1 };
+enum SceneVariant { kBunny = 0, kDenseSphere = 1, kTexturedBunny = 2 };
+
+// A size x size image of smooth noise-like patterns (sums of sines), channel c's pattern scaled
+// into [lo[c], hi[c]] (8-bit values).
+TextureImage patternImage(int size, glm::vec4 lo, glm::vec4 hi, float frequency) {
+  TextureImage image;
+  image.name = "bench pattern";
+  image.mimeType = "image/png";
+  image.width = image.height = size;
+  image.rgba.resize(std::size_t(size) * std::size_t(size) * 4);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)
+      for (int c = 0; c < 4; ++c) {
+        const float u = float(x) / float(size), v = float(y) / float(size);
+        const float w = 0.5f + 0.25f * std::sin(6.2832f * frequency * (u + 0.3f * c)) +
+                        0.25f * std::sin(6.2832f * frequency * (v * 1.3f + 0.7f * u + 0.2f * c));
+        image.rgba[(std::size_t(y) * std::size_t(size) + std::size_t(x)) * 4 + std::size_t(c)] =
+            static_cast<std::uint8_t>(std::lround(lo[c] + (hi[c] - lo[c]) * w));
+      }
+  return image;
+}
+
+// Every mesh of `scene` textured with all five slots (see BM_RenderTextured).
+void textureEverything(Scene& scene) {
+  constexpr int kTextureSize = 1024;
+  const glm::vec4 lo[5] = {{150, 140, 120, 255}, {0, 120, 0, 255}, {110, 110, 235, 255}, {180, 180, 180, 255},
+                           {0, 0, 0, 255}};
+  const glm::vec4 hi[5] = {{240, 230, 220, 255}, {0, 255, 40, 255}, {146, 146, 255, 255}, {255, 255, 255, 255},
+                           {40, 30, 20, 255}};
+  scene.images.clear();
+  scene.textures.clear();
+  for (int i = 0; i < 5; ++i) {
+    scene.images.push_back(patternImage(kTextureSize, lo[i], hi[i], 8.0f + 3.0f * float(i)));
+    Texture texture;
+    texture.image = i;
+    scene.textures.push_back(texture);
+  }
+  for (Material& material : scene.materials) {
+    material.baseColorTexture.texture = 0;
+    material.metallicRoughnessTexture.texture = 1;
+    material.normalTexture.texture = 2;
+    material.occlusionTexture.texture = 3;
+    material.emissiveTexture.texture = 4;
+    material.emissive = glm::vec3(0.05f);
+  }
+  const Bounds bounds = objectBounds(scene.meshes);
+  const float size = std::max(bounds.max.x - bounds.min.x, bounds.max.z - bounds.min.z);
+  for (Mesh& mesh : scene.meshes) {
+    mesh.texcoords.clear();
+    // Planar uv from x and z: 4 repeats across the object, the ground's repeat of the same scale.
+    for (const glm::vec3& p : mesh.positions) mesh.texcoords.push_back(glm::vec2(p.x, p.z) * (4.0f / size));
+    mesh.tangents.clear();  // RenderScene generates them
+  }
+}
 
 // bunny.json, or (kDenseSphere) with every non-ground mesh replaced by one dense sphere filling
 // the same bounds.
@@ -91,12 +152,14 @@ Scene benchScene(SceneVariant variant) {
     scene.meshes = std::move(meshes);
     scene.bounds = objectBounds(scene.meshes);
   }
+  if (variant == kTexturedBunny) textureEverything(scene);
   return scene;
 }
 
-const Tracer& tracer(SceneVariant variant) {
-  static std::unique_ptr<Tracer> tracers[2];
-  std::unique_ptr<Tracer>& slot = tracers[variant];
+// The tracer of `variant`; `slots` the texture slots read (the textured variant only).
+const Tracer& tracer(SceneVariant variant, unsigned slots = kAllTextureSlots) {
+  static std::unique_ptr<Tracer> tracers[4];
+  std::unique_ptr<Tracer>& slot = tracers[variant == kTexturedBunny && slots == 0 ? 3 : variant];
   if (slot) return *slot;
   slot = std::make_unique<Tracer>();
   Tracer& t = *slot;
@@ -105,7 +168,7 @@ const Tracer& tracer(SceneVariant variant) {
     t.environment = std::make_unique<EnvironmentMap>(loadSceneEnvironment(scene));
     t.sampler = std::make_unique<EnvironmentSampler>(*t.environment);
     t.camera = sceneCamera(scene, static_cast<float>(kWidth) / kHeight);
-    t.scene = std::make_unique<RenderScene>(std::move(scene));
+    t.scene = std::make_unique<RenderScene>(std::move(scene), slots);
     t.integrator = std::make_unique<Integrator>(*t.scene, *t.environment, *t.sampler, IntegratorSettings{});
     RayRecorder recorder;
     t.integrator->recordRays(&recorder);
@@ -178,9 +241,20 @@ void BM_Replay(benchmark::State& state) {
   state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(t.rays.size());
 }
 
+void BM_RenderTextured(benchmark::State& state) {
+  const Tracer& t = tracer(kTexturedBunny, state.range(1) ? kAllTextureSlots : 0u);
+  const RenderSettings settings = t.settings(static_cast<int>(state.range(0)));
+  std::uint64_t rays = 0;
+  for (auto _ : state) rays += render(*t.integrator, t.camera, settings).rays;
+  state.SetItemsProcessed(static_cast<int64_t>(rays));
+  state.counters["rays"] = static_cast<double>(rays) / static_cast<double>(state.iterations());
+}
+
 // Arguments: threads, scene (SceneVariant).
 BENCHMARK(BM_Render)->ArgsProduct({{1, 2}, {kBunny, kDenseSphere}})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Replay)->ArgsProduct({{1, 2}, {kBunny, kDenseSphere}})->Unit(benchmark::kMillisecond)->UseRealTime();
+// Arguments: threads, textures read (1) or every slot off (0).
+BENCHMARK(BM_RenderTextured)->ArgsProduct({{1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace iblkit
