@@ -30,11 +30,11 @@ struct Material {
   float alpha = 1.0f;             // glTF baseColorFactor.a
 
   // Texture slots (glTF 2.0 section 5.19-5.22); each multiplies its factors above.
-  TextureRef baseColorTexture;          // sRGB RGB, linear A
-  TextureRef metallicRoughnessTexture;  // linear; G roughness, B metallic
-  TextureRef normalTexture;             // linear tangent-space normal, X and Y scaled by normalScale
-  TextureRef occlusionTexture;          // linear R; 1 + occlusionStrength (R - 1)
-  TextureRef emissiveTexture;           // sRGB RGB
+  TextureRef baseColorTexture{};          // sRGB RGB, linear A
+  TextureRef metallicRoughnessTexture{};  // linear; G roughness, B metallic
+  TextureRef normalTexture{};             // linear tangent-space normal, X and Y scaled by normalScale
+  TextureRef occlusionTexture{};          // linear R; 1 + occlusionStrength (R - 1)
+  TextureRef emissiveTexture{};           // sRGB RGB
   float normalScale = 1.0f;
   float occlusionStrength = 1.0f;
 

@@ -155,8 +155,11 @@ TEST(Interrupt, TraceLeavesNoPartialImage) {
     if (index % 2)
       for (const fs::path& image : images) fs::remove(image);
     expectEnded(runAndInterrupt("iblkit-trace", arguments, delay, signal, root / "log"), signal, what);
-    for (const fs::path& image : images)
-      if (fs::exists(image)) EXPECT_EQ(image == png ? readImage(image).width() : readExr(image).width(), 800) << image;
+    for (const fs::path& image : images) {
+      if (fs::exists(image)) {
+        EXPECT_EQ(image == png ? readImage(image).width() : readExr(image).width(), 800) << image;
+      }
+    }
     EXPECT_EQ(leftovers(root), std::vector<std::string>());
   }
 }
@@ -196,7 +199,9 @@ TEST(Interrupt, ReportRerunsAfterInterruptsToTheUninterruptedNumbers) {
                 what);
     if (fs::exists(out)) {
       EXPECT_EQ(leftovers(out), std::vector<std::string>());
-      if (fs::exists(out / "report.json")) EXPECT_NO_THROW(readJson(out / "report.json"));
+      if (fs::exists(out / "report.json")) {
+        EXPECT_NO_THROW(readJson(out / "report.json"));
+      }
     }
   }
   const Ended last = runAndInterrupt("iblkit-report", reportArguments(small, out), 1e9, SIGTERM, root / "log");
