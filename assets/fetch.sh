@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Fetches the CC0 assets of @pmndrs/assets (18 HDR environment maps as 512x256 OpenEXR, the
-# Draco-compressed bunny and suzi meshes) with `npm pack`, decodes the base64 data: URIs inside
-# its .js modules into assets/hdri and assets/models, and verifies them against manifest.sha256.
+# Draco-compressed bunny and suzi meshes, the textured pmndrs.glb, 29 tileable normal maps and 4
+# textures as WebP) with `npm pack`, decodes the base64 data: URIs inside its .js modules into
+# assets/hdri, assets/models, assets/normals and assets/textures, and verifies them against
+# manifest.sha256. One download of the package (about 8 MB) holds them all.
 # Quick when the files are already there and verified.
 set -euo pipefail
 
@@ -33,12 +35,11 @@ decode() {
   mv "$dst.tmp" "$dst"
 }
 
-mkdir -p "$here/hdri" "$here/models"
+mkdir -p "$here/hdri" "$here/models" "$here/normals" "$here/textures"
 while read -r _ path; do
-  name=$(basename "$path")
   case "$path" in
-    hdri/*) decode "$work/package/hdri/$name.js" "$here/$path" ;;
-    models/*) decode "$work/package/models/$name.js" "$here/$path" ;;
+    hdri/* | models/* | normals/* | textures/*) decode "$work/package/$path.js" "$here/$path" ;;
+    *) echo "assets: $manifest: unexpected path $path" >&2; exit 1 ;;
   esac
 done <"$manifest"
 
