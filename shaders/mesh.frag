@@ -63,6 +63,8 @@ vec3 shadingNormal(vec3 v) {
   return dot(n, v) > 0.0 ? n : geometric;
 }
 
+// `ao` is the occlusion the heuristics use (the multi-bounce fit and the specular cone of aperture
+// AO about `bent`); `irradiance` the diffuse irradiance with that visibility already in it.
 vec3 fullMaterialModel(vec3 n, vec3 v, vec3 albedo, float ao, vec3 bent, vec3 irradiance) {
   float NoV = clamp(dot(n, v), 1e-4, 1.0);
   vec3 r = reflect(-v, n);
@@ -106,6 +108,8 @@ void main() {
   }
   vec3 albedo = baseColor;
   float ao = clamp(vertexIn.ao, 0.0, 1.0);
+  // The material's glTF occlusion (occlusionTexture R, 1 + strength (R - 1)); 1 without one.
+  float gltfOcclusion = 1.0;
   vec3 radiance;
   if (mode == kShadingModeUnlit) {
     radiance = baseColor;
@@ -118,9 +122,21 @@ void main() {
   } else if (mode == kShadingModeShAoBent) {
     vec3 bent = normalize(vertexIn.bentNormal);
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, bent) * ao;
+  } else if (mode == kShadingModeFullGltfAo) {
+    // The asset's AO in place of the baked visibility: unshadowed SH9 irradiance times it, the
+    // specular cone about n (glTF's occlusion has no direction).
+    vec3 irradiance = sphericalHarmonics9Irradiance(shRadiance, n) * gltfOcclusion;
+    radiance = fullMaterialModel(n, v, albedo, gltfOcclusion, n, irradiance);
   } else {
     vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, shRadiance);
-    radiance = mode == kShadingModePrt ? albedo / kPi * irradiance : fullMaterialModel(n, v, albedo, ao, visibilityConeAxis(n, ao), irradiance);
+    if (mode == kShadingModePrt) {
+      radiance = albedo / kPi * irradiance;
+    } else if (mode == kShadingModeFullBothAo) {
+      // Both: the baked visibility (in the transfer and the cone's axis) times the asset's AO.
+      radiance = fullMaterialModel(n, v, albedo, ao * gltfOcclusion, visibilityConeAxis(n, ao), irradiance * gltfOcclusion);
+    } else {
+      radiance = fullMaterialModel(n, v, albedo, ao, visibilityConeAxis(n, ao), irradiance);
+    }
   }
   if (mode != kShadingModeUnlit) radiance += emissive;
   fragColor = vec4(radiance, coverage);

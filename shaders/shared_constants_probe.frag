@@ -8,7 +8,7 @@ layout(location = 0) out vec4 fragColor;
 
 const float kValues[] = float[](
     kShadingModeUnlit, kShadingModeMirror, kShadingModeSh, kShadingModeShAo, kShadingModeShAoBent, kShadingModePrt,
-    kShadingModeFull, kFrameLayerRadiance, kFrameLayerNormal, kFrameLayerDepth, kToneCurveClamp,
+    kShadingModeFull, kShadingModeFullGltfAo, kShadingModeFullBothAo, kFrameLayerRadiance, kFrameLayerNormal, kFrameLayerDepth, kToneCurveClamp,
     kToneCurveAcesFitted, kToneCurveReinhard, kAttributePosition, kAttributeNormal, kAttributeAo,
     kAttributeBentNormal, kAttributeTransfer012, kAttributeTransfer345, kAttributeTransfer678,
     kTextureUnitLatLong, kTextureUnitSpecular, kTextureUnitBrdfLut, kTextureUnitPresent, kTextureUnitLive,

@@ -70,7 +70,9 @@ std::string sharedConstants() {
                         {"kShadingModeShAo", int(ShadingMode::ShAo)},
                         {"kShadingModeShAoBent", int(ShadingMode::ShAoBent)},
                         {"kShadingModePrt", int(ShadingMode::Prt)},
-                        {"kShadingModeFull", int(ShadingMode::Full)}});
+                        {"kShadingModeFull", int(ShadingMode::Full)},
+                        {"kShadingModeFullGltfAo", int(ShadingMode::FullGltfAo)},
+                        {"kShadingModeFullBothAo", int(ShadingMode::FullBothAo)}});
   text += intConstants("iblkit::FrameLayer (engine/gl/frame_layer.h)",
                        {{"kFrameLayerRadiance", int(FrameLayer::Radiance)},
                         {"kFrameLayerNormal", int(FrameLayer::Normal)},

@@ -23,7 +23,8 @@ namespace {
 const std::vector<float> kCppValues = {
     float(ShadingMode::Unlit),    float(ShadingMode::Mirror),   float(ShadingMode::Sh),
     float(ShadingMode::ShAo),     float(ShadingMode::ShAoBent), float(ShadingMode::Prt),
-    float(ShadingMode::Full),     float(FrameLayer::Radiance),  float(FrameLayer::Normal),
+    float(ShadingMode::Full),     float(ShadingMode::FullGltfAo), float(ShadingMode::FullBothAo),
+    float(FrameLayer::Radiance),  float(FrameLayer::Normal),
     float(FrameLayer::Depth),     float(ToneCurve::Clamp),      float(ToneCurve::AcesFitted),
     float(ToneCurve::Reinhard),   float(kAttributePosition),    float(kAttributeNormal),
     float(kAttributeAo),          float(kAttributeBentNormal),  float(kAttributeTransfer012),
