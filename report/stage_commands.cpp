@@ -1,6 +1,9 @@
 #include "report/stage_commands.h"
 
+#include <algorithm>
+
 #include "core/scene.h"
+#include "report/case_modes.h"
 
 namespace iblkit {
 
@@ -18,13 +21,20 @@ void appendSize(const ReportSettings& settings, std::vector<std::string>& argume
 }  // namespace
 
 CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile) {
-  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}};
+  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}, false};
+  const Scene scene = loadScene(sceneFile);
   // A missing model file is left to the program that reads it, which fails naming it.
-  for (const fs::path& model : loadScene(sceneFile).modelFiles) {
+  const auto add = [&](const fs::path& file) {
     std::error_code error;
-    if (fs::is_regular_file(model, error)) inputs.files.push_back(model);
-  }
+    if (std::find(inputs.files.begin(), inputs.files.end(), file) == inputs.files.end() &&
+        fs::is_regular_file(file, error))
+      inputs.files.push_back(file);
+  };
+  for (const fs::path& model : scene.modelFiles) add(model);
+  // An image embedded in a glTF names that glTF, already in the list.
+  for (const TextureImage& image : scene.images) add(image.file);
   inputs.files.push_back(environmentFile);
+  inputs.occlusionTexture = hasOcclusionTexture(scene);
   return inputs;
 }
 

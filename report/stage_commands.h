@@ -12,10 +12,13 @@
 namespace iblkit {
 
 // What a scene's images depend on besides the arguments: the scene file, every model file it
-// names and the environment map, whose bytes go into the key of each stage that reads them.
+// names, every texture image file its materials read (files beside a glTF, a scene file's
+// texture overrides) and the environment map, whose bytes go into the key of each stage that
+// reads them; and whether some material has a glTF occlusion texture (case_modes.h).
 struct CaseInputs {
   std::filesystem::path sceneFile, environmentFile;
-  std::vector<std::filesystem::path> files;  // the scene, its model files, the environment map
+  std::vector<std::filesystem::path> files;  // the scene, its model and image files, the environment map
+  bool occlusionTexture = false;
 };
 CaseInputs caseInputs(const std::filesystem::path& sceneFile, const std::filesystem::path& environmentFile);
 
