@@ -97,7 +97,8 @@ TEST(StageCommands, TheScenesBytesAreInTheBakeAndTraceKeys) {
 // A texture image in a file beside the glTF goes into the bake's and the trace's keys (editing the
 // image re-runs them), and an occlusion texture makes the case score the glTF occlusion modes.
 TEST(StageCommands, ImageFilesAreInputsAndAnOcclusionTextureIsNoticed) {
-  const fs::path dir = test::scratchDir() / "textured";
+  const Fixture plain;  // its stand-in programs, and a scene without textures (first: it makes the scratch folder)
+  const fs::path dir = plain.settings.binDir.parent_path() / "textured";
   fs::create_directories(dir);
   writePng(dir / "ao.png", Image(4, 4, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
   test::GltfBuilder builder;
@@ -115,7 +116,6 @@ TEST(StageCommands, ImageFilesAreInputsAndAnOcclusionTextureIsNoticed) {
   const CaseInputs inputs = caseInputs(dir / "model.glb", dir / "map.exr");
   EXPECT_TRUE(inputs.occlusionTexture);
   EXPECT_NE(std::find(inputs.files.begin(), inputs.files.end(), dir / "ao.png"), inputs.files.end());
-  Fixture plain;  // its stand-in programs, and a scene without textures
   const ReportSettings& settings = plain.settings;
   const std::string before = stageKey(bakeCommand(settings, inputs));
   writePng(dir / "ao.png", Image(4, 4, glm::vec4(0.25f, 0.25f, 0.25f, 1.0f)));
