@@ -1,6 +1,7 @@
 #include "core/gltf_load.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -13,8 +14,13 @@
 #include <string>
 #include <utility>
 
+#include <tbb/parallel_for.h>
+
+#include <exception>
+
 #include "core/error.h"
 #include "core/gltf_model.h"
+#include "core/texture_image.h"
 
 namespace iblkit {
 
@@ -72,18 +78,67 @@ std::vector<double> extensionNumbers(const tinygltf::Value& extension, const cha
   return numbers;
 }
 
-bool usesTextures(const tinygltf::Material& m) {
-  return m.pbrMetallicRoughness.baseColorTexture.index >= 0 ||
-         m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 || m.normalTexture.index >= 0 ||
-         m.occlusionTexture.index >= 0 || m.emissiveTexture.index >= 0;
+glm::vec2 extensionVec2(const tinygltf::Value& extension, const char* key, glm::vec2 fallback,
+                        const std::string& what, const fs::path& file) {
+  const std::vector<double> v = extensionNumbers(extension, key, {fallback.x, fallback.y}, what, file);
+  if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1]))
+    fail(file, what + "." + key + " must be 2 finite numbers");
+  return glm::vec2(float(v[0]), float(v[1]));
 }
 
-Material convertMaterial(const tinygltf::Material& source, int index, const fs::path& file) {
+// A texCoord set: TEXCOORD_0 or TEXCOORD_1, the two sets glTF 2.0 section 3.7.2.1 requires
+// clients to support; a file naming another set is refused rather than drawn with the wrong uvs.
+int texCoordSet(long long texCoord, const std::string& what, const fs::path& file) {
+  if (texCoord != 0 && texCoord != 1)
+    fail(file, what + ": texCoord " + std::to_string(texCoord) + " is not supported (TEXCOORD_0 and TEXCOORD_1 only)");
+  return int(texCoord);
+}
+
+// A material's textureInfo (glTF 2.0 section 5.22) with its KHR_texture_transform. The texture
+// index stays the file's; Loader::loadTextures renumbers it.
+template <typename Info>
+TextureRef textureRef(const Info& info, const std::string& what, std::size_t textureCount, const fs::path& file) {
+  TextureRef ref;
+  if (info.index < 0) return ref;
+  if (std::size_t(info.index) >= textureCount)
+    fail(file, what + ": texture " + std::to_string(info.index) + " does not exist");
+  ref.texture = info.index;
+  ref.texCoord = texCoordSet(info.texCoord, what, file);
+  const auto found = info.extensions.find("KHR_texture_transform");
+  if (found != info.extensions.end()) {
+    const tinygltf::Value& t = found->second;
+    const std::string ext = what + " KHR_texture_transform";
+    if (!t.IsObject()) fail(file, ext + " must be an object");
+    ref.transform.offset = extensionVec2(t, "offset", glm::vec2(0.0f), ext, file);
+    ref.transform.scale = extensionVec2(t, "scale", glm::vec2(1.0f), ext, file);
+    const double rotation = extensionNumber(t, "rotation", 0.0, ext, file);
+    if (!std::isfinite(rotation)) fail(file, ext + ".rotation must be a finite number");
+    ref.transform.rotation = float(rotation);
+    // The extension's texCoord overrides the textureInfo's (KHR_texture_transform README).
+    if (t.Has("texCoord")) {
+      if (!t.Get("texCoord").IsInt()) fail(file, ext + ".texCoord must be an integer");
+      ref.texCoord = texCoordSet(t.Get("texCoord").GetNumberAsInt(), ext, file);
+    }
+  }
+  return ref;
+}
+
+AlphaMode alphaMode(const std::string& mode, const std::string& what, const fs::path& file) {
+  if (mode == "OPAQUE" || mode.empty()) return AlphaMode::Opaque;
+  if (mode == "MASK") return AlphaMode::Mask;
+  if (mode == "BLEND") return AlphaMode::Blend;
+  fail(file, what + ": unknown alphaMode '" + printableExcerpt(mode) + "' (expected OPAQUE, MASK or BLEND)");
+}
+
+Material convertMaterial(const tinygltf::Material& source, int index, std::size_t textureCount,
+                         const fs::path& file) {
   const std::string what = "material " + std::to_string(index);
   Material material;
   material.name = source.name;
   const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
   material.baseColor = colorFactor(pbr.baseColorFactor, what + " baseColorFactor", file);
+  if (pbr.baseColorFactor.size() >= 4)
+    material.alpha = unitFactor(pbr.baseColorFactor[3], what + " baseColorFactor", file);
   material.metallic = unitFactor(pbr.metallicFactor, what + " metallicFactor", file);
   material.roughness = unitFactor(pbr.roughnessFactor, what + " roughnessFactor", file);
   // emissiveFactor is [0, 1] per the schema; KHR_materials_emissive_strength scales it beyond.
@@ -109,7 +164,94 @@ Material convertMaterial(const tinygltf::Material& source, int index, const fs::
       fail(file, ext + ".specularColorFactor must be 3 numbers >= 0");
     material.specularColor = glm::vec3(float(color[0]), float(color[1]), float(color[2]));
   }
+
+  material.baseColorTexture = textureRef(pbr.baseColorTexture, what + " baseColorTexture", textureCount, file);
+  material.metallicRoughnessTexture =
+      textureRef(pbr.metallicRoughnessTexture, what + " metallicRoughnessTexture", textureCount, file);
+  material.normalTexture = textureRef(source.normalTexture, what + " normalTexture", textureCount, file);
+  material.occlusionTexture = textureRef(source.occlusionTexture, what + " occlusionTexture", textureCount, file);
+  material.emissiveTexture = textureRef(source.emissiveTexture, what + " emissiveTexture", textureCount, file);
+  if (!std::isfinite(source.normalTexture.scale)) fail(file, what + " normalTexture.scale must be finite");
+  material.normalScale = float(source.normalTexture.scale);
+  material.occlusionStrength = unitFactor(source.occlusionTexture.strength, what + " occlusionTexture.strength", file);
+
+  material.alphaMode = alphaMode(source.alphaMode, what, file);
+  if (!(source.alphaCutoff >= 0.0) || !std::isfinite(source.alphaCutoff))
+    fail(file, what + ": alphaCutoff must be a number >= 0");
+  material.alphaCutoff = float(source.alphaCutoff);
+  material.doubleSided = source.doubleSided;
   return material;
+}
+
+// Every TextureRef of a material, for renumbering and for finding the textures in use.
+std::array<TextureRef*, 5> textureRefs(Material& m) {
+  return {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.occlusionTexture,
+          &m.emissiveTexture};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Textures, samplers and images
+
+TextureWrap wrapMode(int value, const std::string& what, const fs::path& file) {
+  switch (value) {
+    case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::Repeat;
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
+    default: fail(file, what + ": unknown wrap mode " + std::to_string(value));
+  }
+}
+
+// glTF 2.0 section 5.26 with the GL enums it uses; absent filters get texture.h's defaults
+// (LINEAR magnification, LINEAR_MIPMAP_LINEAR minification).
+TextureSampler convertSampler(const tinygltf::Sampler& source, int index, const fs::path& file) {
+  const std::string what = "sampler " + std::to_string(index);
+  TextureSampler sampler;
+  sampler.wrapS = wrapMode(source.wrapS, what + " wrapS", file);
+  sampler.wrapT = wrapMode(source.wrapT, what + " wrapT", file);
+  switch (source.magFilter) {
+    case -1: break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST: sampler.magFilter = TextureFilter::Nearest; break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR: sampler.magFilter = TextureFilter::Linear; break;
+    default: fail(file, what + ": unknown magFilter " + std::to_string(source.magFilter));
+  }
+  const auto minification = [&](TextureFilter filter, bool mipmaps, TextureFilter mipFilter) {
+    sampler.minFilter = filter;
+    sampler.mipmaps = mipmaps;
+    sampler.mipFilter = mipFilter;
+  };
+  constexpr TextureFilter N = TextureFilter::Nearest, L = TextureFilter::Linear;
+  switch (source.minFilter) {
+    case -1: break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST: minification(N, false, L); break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR: minification(L, false, L); break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: minification(N, true, N); break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: minification(L, true, N); break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: minification(N, true, L); break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: minification(L, true, L); break;
+    default: fail(file, what + ": unknown minFilter " + std::to_string(source.minFilter));
+  }
+  return sampler;
+}
+
+// An image index inside a texture extension object ("source"), or -1 when there is none.
+int extensionSource(const tinygltf::Texture& texture, const char* extension, const std::string& what,
+                    const fs::path& file) {
+  const auto found = texture.extensions.find(extension);
+  if (found == texture.extensions.end()) return -1;
+  const tinygltf::Value& source = found->second.Get("source");
+  if (!source.IsInt() || source.GetNumberAsInt() < 0)
+    fail(file, what + " " + extension + ".source must be an image index");
+  return source.GetNumberAsInt();
+}
+
+// Where an image came from, for messages: its uri (up to a data URI's comma), or its name.
+std::string imageLabel(const tinygltf::Image& image) {
+  if (!image.uri.empty()) {
+    const std::size_t comma = image.uri.rfind("data:", 0) == 0 ? image.uri.find(',') : std::string::npos;
+    return printableExcerpt(comma == std::string::npos ? image.uri : image.uri.substr(0, comma + 1), 80);
+  }
+  if (image.as_is) return "data:" + image.mimeType;
+  return printableExcerpt(image.name, 80);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -150,12 +292,9 @@ class Loader {
   Loader(const tinygltf::Model& model, const fs::path& file) : model_(model), file_(file) {}
 
   GltfContents load() {
-    bool textures = false;
-    for (std::size_t i = 0; i < model_.materials.size(); ++i) {
-      contents_.materials.push_back(convertMaterial(model_.materials[i], int(i), file_));
-      textures = textures || usesTextures(model_.materials[i]);
-    }
-    if (textures) warn(file_, "textures are ignored; materials use their constant factors");
+    for (std::size_t i = 0; i < model_.materials.size(); ++i)
+      contents_.materials.push_back(convertMaterial(model_.materials[i], int(i), model_.textures.size(), file_));
+    loadTextures();
 
     localMeshes_.resize(model_.meshes.size());
     traverse(rootNodes());
@@ -303,8 +442,9 @@ class Loader {
 
     for (const auto& [semantic, accessor] : primitive.attributes) {
       const bool custom = semantic.size() > 1 && semantic[0] == '_';
-      if (semantic != "NORMAL" && semantic != "TEXCOORD_0" && !custom) continue;
-      int components = semantic == "NORMAL" ? 3 : semantic == "TEXCOORD_0" ? 2 : 0;
+      const bool texcoord = semantic == "TEXCOORD_0" || semantic == "TEXCOORD_1";
+      if (semantic != "NORMAL" && semantic != "TANGENT" && !texcoord && !custom) continue;
+      int components = semantic == "NORMAL" ? 3 : semantic == "TANGENT" ? 4 : texcoord ? 2 : 0;
       if (custom) {
         components = accessor >= 0 && std::size_t(accessor) < model_.accessors.size()
                          ? gltf::componentCount(model_.accessors[accessor].type)
@@ -320,12 +460,16 @@ class Loader {
                         " elements but POSITION has " + std::to_string(vertexCount));
       if (semantic == "NORMAL") {
         mesh.normals = toVectors<glm::vec3>(values);
+      } else if (semantic == "TANGENT") {
+        mesh.tangents = readTangents(values, where);
       } else {
         requireFinite(values, where + ": non-finite " + semantic + " value", file_);
         if (custom)
           mesh.attributes[semantic] = VertexAttribute{components, std::move(values)};
-        else
+        else if (semantic == "TEXCOORD_0")
           mesh.texcoords = toVectors<glm::vec2>(values);
+        else
+          mesh.texcoords1 = toVectors<glm::vec2>(values);
       }
     }
 
@@ -341,6 +485,23 @@ class Loader {
     mesh.indices = triangleList(std::move(vertices), primitive.mode, where, file_);
     mesh.material = materialIndex(primitive.material, where);
     return mesh;
+  }
+
+  // TANGENT (glTF 2.0 section 3.7.2.1): xyz a unit vector, w +1 or -1 the handedness. w is
+  // snapped to its sign. A tangent that is not finite or has zero xyz makes the file's tangents
+  // unusable as a frame: they are dropped with a warning, and loadScene generates them instead.
+  std::vector<glm::vec4> readTangents(const std::vector<float>& values, const std::string& where) const {
+    std::vector<glm::vec4> tangents = toVectors<glm::vec4>(values);
+    std::size_t bad = 0;
+    for (glm::vec4& t : tangents) {
+      const float length = glm::length(glm::vec3(t));
+      if (!std::isfinite(t.w) || !std::isfinite(length) || length == 0.0f) ++bad;
+      t.w = t.w < 0.0f ? -1.0f : 1.0f;
+    }
+    if (bad == 0) return tangents;
+    warn(file_, where + ": TANGENT has " + std::to_string(bad) +
+                    " zero-length or non-finite tangents; ignored (tangents are generated)");
+    return {};
   }
 
   int materialIndex(int material, const std::string& where) {
@@ -379,6 +540,114 @@ class Loader {
     cameraZfarMissing_ = p.zfar == 0.0;
     contents_.camera = Camera::lookAt(position, position + forward, up, float(p.yfov), float(p.znear),
                                       cameraZfarMissing_ ? float(p.znear) : float(p.zfar));
+  }
+
+  // The image a texture shows: EXT_texture_webp's source (WebP is read), else its plain source.
+  // KHR_texture_basisu (KTX2) is not read: its fallback source is used with a warning, and a
+  // texture with no other source is an error.
+  int textureImage(int index) const {
+    const tinygltf::Texture& texture = model_.textures[index];
+    const std::string what = "texture " + std::to_string(index);
+    const int webp = extensionSource(texture, "EXT_texture_webp", what, file_);
+    const int basisu = extensionSource(texture, "KHR_texture_basisu", what, file_);
+    int image = webp >= 0 ? webp : texture.source;
+    if (webp < 0 && basisu >= 0) {
+      if (texture.source < 0)
+        fail(file_, what + " has only a KHR_texture_basisu (KTX2) image, which is not supported; "
+                           "give it a PNG, JPEG or WebP source");
+      warn(file_, what + ": KHR_texture_basisu (KTX2) is not supported; using its fallback source, image " +
+                      std::to_string(texture.source));
+    }
+    if (image < 0) fail(file_, what + " has no image source");
+    if (std::size_t(image) >= model_.images.size())
+      fail(file_, what + ": image " + std::to_string(image) + " does not exist");
+    return image;
+  }
+
+  // The textures the materials use, and their images, renumbered in the file's order (textures
+  // and images no material reaches are not loaded); every index is checked, used or not.
+  void loadTextures() {
+    for (std::size_t t = 0; t < model_.textures.size(); ++t) {
+      const tinygltf::Texture& texture = model_.textures[t];
+      const std::string what = "texture " + std::to_string(t);
+      if (texture.source >= int(model_.images.size()))
+        fail(file_, what + ": image " + std::to_string(texture.source) + " does not exist");
+      if (texture.sampler >= int(model_.samplers.size()))
+        fail(file_, what + ": sampler " + std::to_string(texture.sampler) + " does not exist");
+    }
+    std::vector<int> textureIndex(model_.textures.size(), -1), imageIndex(model_.images.size(), -1);
+    for (Material& material : contents_.materials)
+      for (TextureRef* ref : textureRefs(material))
+        if (ref->present()) textureIndex[ref->texture] = 0;
+    std::vector<int> firstTexture(model_.images.size(), -1);  // for messages
+    std::vector<int> textureSources;
+    for (std::size_t t = 0; t < model_.textures.size(); ++t) {
+      if (textureIndex[t] < 0) continue;
+      textureIndex[t] = int(contents_.textures.size());
+      const tinygltf::Texture& source = model_.textures[t];
+      Texture texture;
+      texture.name = source.name;
+      const int image = textureImage(int(t));
+      textureSources.push_back(image);
+      if (firstTexture[image] < 0) firstTexture[image] = int(t);
+      if (source.sampler >= 0) texture.sampler = convertSampler(model_.samplers[source.sampler], source.sampler, file_);
+      contents_.textures.push_back(texture);
+    }
+    std::vector<int> images;  // file indices of the images in use, in order
+    for (std::size_t i = 0; i < model_.images.size(); ++i)
+      if (firstTexture[i] >= 0) {
+        imageIndex[i] = int(images.size());
+        images.push_back(int(i));
+      }
+    for (std::size_t t = 0; t < contents_.textures.size(); ++t)
+      contents_.textures[t].image = imageIndex[textureSources[t]];
+    for (Material& material : contents_.materials)
+      for (TextureRef* ref : textureRefs(material))
+        if (ref->present()) ref->texture = textureIndex[ref->texture];
+
+    // Decoding dominates the load time of textured files (a 4k PNG takes ~0.1 s), so images decode
+    // in parallel. Failures are collected and the first by image index is thrown, so the message
+    // does not depend on thread timing.
+    contents_.images.resize(images.size());
+    std::vector<std::string> declared(images.size());
+    std::vector<std::exception_ptr> errors(images.size());
+    tbb::parallel_for(std::size_t(0), images.size(), [&](std::size_t k) {
+      try {
+        loadImage(images[k], firstTexture[images[k]], contents_.images[k], declared[k]);
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    });
+    for (const std::exception_ptr& error : errors)
+      if (error) std::rethrow_exception(error);
+    for (std::size_t k = 0; k < images.size(); ++k)
+      if (!declared[k].empty() && declared[k] != contents_.images[k].mimeType)
+        warn(file_, imageWhat(images[k], firstTexture[images[k]]) + ": declared " + printableExcerpt(declared[k]) +
+                        " but holds " + contents_.images[k].mimeType + "; read as " + contents_.images[k].mimeType);
+  }
+
+  std::string imageWhat(int image, int texture) const {
+    const std::string label = imageLabel(model_.images[image]);
+    return "texture " + std::to_string(texture) + " image " + std::to_string(image) +
+           (label.empty() ? std::string() : " '" + label + "'");
+  }
+
+  // Reads and decodes one image; runs on TBB's threads, so it only throws (no warnings).
+  void loadImage(int index, int texture, TextureImage& image, std::string& declared) const {
+    const std::string what = imageWhat(index, texture);
+    const tinygltf::Image& source = model_.images[index];
+    fs::path origin;
+    std::vector<std::uint8_t> bytes = gltf::imageBytes(model_, index, file_, what, &declared, &origin);
+    // glTF 2.0 section 5.17: image/png and image/jpeg; EXT_texture_webp adds image/webp.
+    if (!declared.empty() && !isDecodableImageMimeType(declared))
+      fail(file_, what + ": mime type " + printableExcerpt(declared) +
+                      " is not supported (image/png, image/jpeg and image/webp are)");
+    image.name = source.name;
+    image.file = origin;
+    image.uri = source.uri.rfind("data:", 0) == 0 ? source.uri.substr(0, source.uri.find(',') + 1)
+                : source.as_is                    ? "data:" + source.mimeType + ";base64,"
+                                                  : source.uri;
+    decodeTextureImage(image, std::move(bytes), file_, what);
   }
 
   const tinygltf::Model& model_;

@@ -207,14 +207,18 @@ std::vector<std::string> messageLines(const std::string& text) {
   return lines;
 }
 
-// Extensions a file may require: those iblkit decodes, and the material and texture extensions
-// whose data it ignores anyway (textures are not used, see gltf_load.h).
+// Extensions a file may require: those iblkit decodes (gltf_load.h), and the material extensions
+// whose data it ignores. Texture extensions other than KHR_texture_transform and EXT_texture_webp
+// (KHR_texture_basisu's KTX2, EXT_texture_avif, ...) would leave textures unread, so requiring
+// them is an error; merely using them is handled per texture (gltf_load.cpp).
 void checkRequiredExtensions(const tinygltf::Model& model, const fs::path& file) {
   for (const std::string& name : model.extensionsRequired) {
     const bool known = name == kDracoExtension || name == "KHR_mesh_quantization" ||
-                       name.rfind("KHR_materials_", 0) == 0 || name.rfind("KHR_texture_", 0) == 0 ||
-                       name.rfind("EXT_texture_", 0) == 0;
-    if (!known) fail(file, "requires unsupported extension " + name);
+                       name.rfind("KHR_materials_", 0) == 0 || name == "KHR_texture_transform" ||
+                       name == "EXT_texture_webp";
+    if (!known)
+      fail(file, "requires unsupported extension " + name +
+                     (name == "KHR_texture_basisu" ? " (KTX2 textures; PNG, JPEG and WebP are read)" : ""));
   }
 }
 
@@ -516,6 +520,73 @@ tinygltf::Model parse(const fs::path& file) {
   return model;
 }
 
+// RFC 4648 section 4 base64, as data URIs carry it (RFC 2397); padding optional, nothing else
+// tolerated. nullopt for a character outside the alphabet.
+std::optional<std::vector<std::uint8_t>> base64Decode(std::string_view text) {
+  while (!text.empty() && text.back() == '=') text.remove_suffix(1);
+  std::vector<std::uint8_t> out;
+  out.reserve(text.size() / 4 * 3 + 3);
+  std::uint32_t bits = 0;
+  int count = 0;
+  for (const char c : text) {
+    int value;
+    if (c >= 'A' && c <= 'Z') value = c - 'A';
+    else if (c >= 'a' && c <= 'z') value = c - 'a' + 26;
+    else if (c >= '0' && c <= '9') value = c - '0' + 52;
+    else if (c == '+') value = 62;
+    else if (c == '/') value = 63;
+    else return std::nullopt;
+    bits = bits << 6 | std::uint32_t(value);
+    if (++count == 4) {
+      out.push_back(std::uint8_t(bits >> 16));
+      out.push_back(std::uint8_t(bits >> 8));
+      out.push_back(std::uint8_t(bits));
+      bits = 0;
+      count = 0;
+    }
+  }
+  if (count == 1) return std::nullopt;  // 6 bits cannot end a byte
+  if (count == 2) out.push_back(std::uint8_t(bits >> 4));
+  if (count == 3) {
+    out.push_back(std::uint8_t(bits >> 10));
+    out.push_back(std::uint8_t(bits >> 2));
+  }
+  return out;
+}
+
+// A data: URI (RFC 2397, "data:[<mediatype>][;base64],<data>") that tinygltf left alone.
+std::vector<std::uint8_t> dataUriBytes(const std::string& uri, const fs::path& file, const std::string& what,
+                                       std::string* mediaType) {
+  const std::size_t comma = uri.find(',');
+  if (comma == std::string::npos) fail(file, what + ": data URI has no ',' before its data");
+  std::string header = uri.substr(5, comma - 5);
+  const bool base64 = header.size() >= 7 && header.compare(header.size() - 7, 7, ";base64") == 0;
+  if (base64) header.resize(header.size() - 7);
+  *mediaType = header.substr(0, header.find(';'));
+  std::vector<std::uint8_t> bytes;
+  if (base64) {
+    std::optional<std::vector<std::uint8_t>> decoded = base64Decode(std::string_view(uri).substr(comma + 1));
+    if (!decoded) fail(file, what + ": data URI is not valid base64");
+    bytes = std::move(*decoded);
+  } else {
+    const std::string text = percentDecode(uri.substr(comma + 1));
+    bytes.assign(text.begin(), text.end());
+  }
+  if (bytes.empty()) fail(file, what + ": data URI holds no data");
+  return bytes;
+}
+
+// True for a URI with a scheme (RFC 3986 section 3.1: a letter, then letters, digits, '+', '-' or
+// '.', then ':'), which is not a relative file reference.
+bool hasUriScheme(const std::string& uri) {
+  if (uri.empty() || !std::isalpha(static_cast<unsigned char>(uri[0]))) return false;
+  for (const char c : uri) {
+    if (c == ':') return true;
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.') return false;
+  }
+  return false;
+}
+
 }  // namespace
 
 tinygltf::Model readModel(const fs::path& file) {
@@ -528,6 +599,40 @@ tinygltf::Model readModel(const fs::path& file) {
     throw;
   } catch (const std::exception& e) {
     fail(file, std::string("cannot load glTF: ") + e.what());
+  }
+}
+
+std::vector<std::uint8_t> imageBytes(const tinygltf::Model& model, int index, const fs::path& file,
+                                     const std::string& what, std::string* declaredMimeType, fs::path* source) {
+  if (index < 0 || std::size_t(index) >= model.images.size()) fail(file, what + " does not exist");
+  const tinygltf::Image& image = model.images[index];
+  *source = file;
+  if (image.bufferView >= 0) {
+    *declaredMimeType = image.mimeType;
+    const std::span<const unsigned char> view = bufferViewBytes(model, image.bufferView, file);
+    if (view.empty()) fail(file, what + ": buffer view " + std::to_string(image.bufferView) + " is empty");
+    return std::vector<std::uint8_t>(view.begin(), view.end());
+  }
+  if (image.as_is) {  // a data URI tinygltf decoded (keepImageBytes); it set the media type
+    *declaredMimeType = image.mimeType;
+    return std::vector<std::uint8_t>(image.image.begin(), image.image.end());
+  }
+  const std::string& uri = image.uri;
+  if (uri.rfind("data:", 0) == 0) return dataUriBytes(uri, file, what, declaredMimeType);
+  declaredMimeType->clear();
+  if (uri.empty()) fail(file, what + " has neither a uri nor a buffer view");
+  const fs::path relative = percentDecode(uri);
+  std::error_code error;
+  const fs::path folder = fs::weakly_canonical(fs::absolute(file), error).parent_path();
+  if (error) fail(file, "cannot resolve path: " + error.message());
+  if (hasUriScheme(uri) || relative.is_absolute() || !isInsideFolder(folder, folder / relative))
+    fail(file, what + ": uri '" + printableExcerpt(uri, 80) + "' points outside the scene folder");
+  *source = (file.parent_path() / relative).lexically_normal();
+  try {
+    const std::vector<char> bytes = readInputFile(*source, kMaxBinaryInputBytes);
+    return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
+  } catch (const Error& e) {
+    fail(file, what + ": " + e.what());
   }
 }
 

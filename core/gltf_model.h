@@ -27,6 +27,17 @@ tinygltf::Model readModel(const std::filesystem::path& file);
 std::span<const unsigned char> bufferViewBytes(const tinygltf::Model& model, int index,
                                                const std::filesystem::path& file);
 
+// The encoded bytes of image `index` (glTF 2.0 section 5.17): its buffer view, its data: URI
+// (base64 or percent-encoded; media types tinygltf does not know, image/webp among them, are
+// decoded here), or the file its uri names. A file uri is percent-decoded and must stay inside the
+// glTF file's folder, as buffer URIs must (no '..' leaving it, no absolute paths, no other URI
+// schemes); the file is read through readInputFile. *declaredMimeType gets the image's mimeType
+// (buffer view) or the data URI's media type, "" when the file declares none; *source gets the
+// file the bytes came from (the image file, or `file` itself). `what` names the image in messages.
+std::vector<std::uint8_t> imageBytes(const tinygltf::Model& model, int index, const std::filesystem::path& file,
+                                     const std::string& what, std::string* declaredMimeType,
+                                     std::filesystem::path* source);
+
 // Components per element of a SCALAR, VEC2, VEC3 or VEC4 accessor; 0 for matrices.
 int componentCount(int accessorType);
 

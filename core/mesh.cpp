@@ -119,6 +119,19 @@ void transformMesh(Mesh& mesh, const glm::mat4& transform) {
     if (length > 0.0f) n /= length;
   }
 
+  // Tangents are directions in the surface (dp/du), so they move by M itself, not the normal
+  // matrix; re-orthogonalised to the new normal (a non-uniform scale shears them off its plane).
+  // A mirror reverses cross(n, t), so w changes sign with det(M) to keep the bitangent w cross(n, t)
+  // pointing along the same uv direction.
+  const float handedness = determinant < 0.0f ? -1.0f : 1.0f;
+  for (std::size_t i = 0; i < mesh.tangents.size(); ++i) {
+    glm::vec3 t = linear * glm::vec3(mesh.tangents[i]);
+    if (i < mesh.normals.size()) t -= mesh.normals[i] * glm::dot(mesh.normals[i], t);
+    const float length = glm::length(t);
+    if (length > 0.0f) t /= length;
+    mesh.tangents[i] = glm::vec4(t, mesh.tangents[i].w * handedness);
+  }
+
   if (determinant < 0.0f)
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
       std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);

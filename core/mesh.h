@@ -101,7 +101,8 @@ long long firstVertexOutOfRange(const Mesh& mesh);
 // upper 3x3 (det(M) M^-T, which is defined even for singular M) times the sign of the
 // determinant, i.e. along M^-T n, then re-normalised (zero normals stay zero for repairNormals to
 // catch). A negative determinant mirrors the mesh, so the winding is flipped to keep
-// counter-clockwise front faces.
+// counter-clockwise front faces. Tangents (xyz) by the upper 3x3, re-orthogonalised to the
+// transformed normal and re-normalised, w times the sign of the determinant; texcoords unchanged.
 void transformMesh(Mesh& mesh, const glm::mat4& transform);
 
 }  // namespace iblkit

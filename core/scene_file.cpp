@@ -219,8 +219,19 @@ void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene) 
     }
     const glm::mat4 transform = modelTransform(model);
 
+    // The model's textures and images follow those of the models before it.
     const int materialOffset = int(scene.materials.size());
+    const int textureOffset = int(scene.textures.size());
+    const int imageOffset = int(scene.images.size());
+    for (Texture& texture : contents.textures) {
+      texture.image += imageOffset;
+      scene.textures.push_back(std::move(texture));
+    }
+    for (TextureImage& image : contents.images) scene.images.push_back(std::move(image));
     for (Material& material : contents.materials) {
+      for (TextureRef* ref : {&material.baseColorTexture, &material.metallicRoughnessTexture,
+                              &material.normalTexture, &material.occlusionTexture, &material.emissiveTexture})
+        if (ref->present()) ref->texture += textureOffset;
       applyMaterialOverrides(model, material);
       scene.materials.push_back(material);
     }

@@ -8,6 +8,9 @@
 // primitive's vertex order, mesh.h), so where one vertex joins triangles of both handednesses
 // (mirrored uv seams that share vertices) it takes the handedness of the larger summed angle;
 // docs/material-model.md "Tangents" names this difference from MikkTSpace.
+// Handedness is glTF's: w cross(n, t) points up the image (-v, glTF uv (0, 0) being the image's
+// top-left), the +Y of normal textures; MikkTSpace's sign assumes v up, so it is negated.
+// An upright image on a counter-clockwise quad gets t = +u, w = +1.
 
 #include <cstddef>
 

@@ -43,7 +43,8 @@ struct TextureImage {
   // Where it came from, for messages and for iblkit-info: the image file, or the glTF file for an
   // image embedded in a buffer view or a data: URI.
   std::filesystem::path file;
-  std::string uri;  // the glTF image's uri as written (empty for a buffer view)
+  std::string uri;  // the glTF image's uri as written (empty for a buffer view; a data: URI only up
+                    // to its comma, "data:image/png;base64,")
   int width = 0, height = 0;
   int channels = 4;                // channels the encoded file has (1 grey .. 4 RGBA), for info
   std::vector<std::uint8_t> rgba;  // width * height * 4 bytes, row 0 at the top (glTF uv (0, 0))

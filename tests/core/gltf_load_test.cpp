@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
+#include <numbers>
 
 #include "core/error.h"
 #include "support/gltf_builder.h"
+#include "support/texture_files.h"
 #include "support/test_paths.h"
 #include "support/warning_capture.h"
 
@@ -25,10 +28,24 @@ void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolera
   EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
+// The test's scratch folder, emptied once per test (test::scratchDir empties it on every call), so
+// that image files a test writes stay beside the model it loads.
+std::filesystem::path testDir() {
+  static std::string test;
+  static std::filesystem::path dir;
+  const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
+  const std::string name = std::string(info->test_suite_name()) + "." + info->name();
+  if (name != test) {
+    dir = test::scratchDir();
+    test = name;
+  }
+  return dir;
+}
+
 // Writes the builder's document to the test's scratch folder and loads it.
 GltfContents load(const GltfBuilder& builder, GltfBuilder::Storage storage = GltfBuilder::Storage::BinFile) {
   const std::filesystem::path path =
-      test::scratchDir() / (storage == GltfBuilder::Storage::Glb ? "model.glb" : "model.gltf");
+      testDir() / (storage == GltfBuilder::Storage::Glb ? "model.glb" : "model.gltf");
   builder.write(path, storage);
   return loadGltf(path);
 }
@@ -245,7 +262,7 @@ TEST_F(GltfLoad, ReadsCustomAttributesInVertexOrder) {
   EXPECT_EQ(m.attributes.at("_BENT").data, (std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
 }
 
-TEST_F(GltfLoad, ConvertsMaterialsAndWarnsOnceAboutTextures) {
+TEST_F(GltfLoad, ConvertsMaterials) {
   GltfBuilder builder;
   json& materials = builder.document()["materials"];
   materials.push_back(
@@ -253,15 +270,12 @@ TEST_F(GltfLoad, ConvertsMaterialsAndWarnsOnceAboutTextures) {
        {"pbrMetallicRoughness",
         {{"baseColorFactor", {0.9, 0.6, 0.2, 1.0}},
          {"metallicFactor", 1.0},
-         {"roughnessFactor", 0.3},
-         {"baseColorTexture", {{"index", 0}}}}},
+         {"roughnessFactor", 0.3}}},
        {"emissiveFactor", {0.5, 0.25, 0.0}},
        {"extensions",
         {{"KHR_materials_specular", {{"specularFactor", 0.4}, {"specularColorFactor", {1.0, 0.5, 0.25}}}},
          {"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}});
-  materials.push_back({{"name", "plastic"},
-                       {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
-                       {"normalTexture", {{"index", 0}}}});
+  materials.push_back({{"name", "plastic"}, {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}});
   const int positions = builder.addFloats(kTriangle);
   builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}, {"material", 0}});
   builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}, {"material", 1}});
@@ -286,9 +300,9 @@ TEST_F(GltfLoad, ConvertsMaterialsAndWarnsOnceAboutTextures) {
   EXPECT_EQ(contents.meshes[0].material, 0);
   EXPECT_EQ(contents.meshes[1].material, 1);
   EXPECT_EQ(contents.meshes[2].material, 2);
-  ASSERT_EQ(warnings.lines().size(), 4u);  // textures once, normals generated for 3 meshes
-  EXPECT_TRUE(
-      warnings.contains("model.gltf: warning: textures are ignored; materials use their constant factors"));
+  ASSERT_EQ(warnings.lines().size(), 3u);  // normals generated for 3 meshes
+  EXPECT_TRUE(contents.textures.empty());
+  EXPECT_TRUE(contents.images.empty());
 }
 
 TEST_F(GltfLoad, FirstPerspectiveCameraWithItsNodeTransform) {
@@ -523,6 +537,409 @@ TEST_F(GltfLoad, RealDracoAssets) {
   // The accessor min/max of the file bound the decoded positions.
   expectNear(bunny.meshes[0].bounds().min, glm::vec3(-0.9137708f, -0.8910416f, -0.6963724f), 1e-4f);
   expectNear(bunny.meshes[0].bounds().max, glm::vec3(0.9172143f, 0.9398829f, 0.6988643f), 1e-4f);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Textures
+
+const std::vector<glm::vec2> kTriangleUvs = {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1)};
+
+// A triangle with TEXCOORD_0 whose material 0 has baseColorTexture texture 0 (source image 0);
+// the test adds the image.
+GltfBuilder texturedTriangle() {
+  GltfBuilder builder;
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(kTriangle)}, {"TEXCOORD_0", builder.addFloats(kTriangleUvs)}}},
+                            {"material", 0}});
+  builder.document()["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  builder.document()["textures"] = {{{"source", 0}}};
+  return builder;
+}
+
+void expectQuadImage(const TextureImage& image) {
+  EXPECT_EQ(image.width, 2);
+  EXPECT_EQ(image.height, 2);
+  EXPECT_EQ(image.channels, 4);
+  EXPECT_EQ(image.rgba, test::quadPixels());
+}
+
+TEST_F(GltfLoad, ImagesFromBufferViewDataUriAndFile) {
+  const std::vector<std::uint8_t> png = test::encodePng(2, 2, test::quadPixels());
+  {
+    GltfBuilder builder = texturedTriangle();
+    builder.addImage(png, "image/png");
+    builder.document()["images"][0]["name"] = "albedo";
+    const GltfContents contents = load(builder, GltfBuilder::Storage::Glb);
+    ASSERT_EQ(contents.textures.size(), 1u);
+    ASSERT_EQ(contents.images.size(), 1u);
+    EXPECT_EQ(contents.textures[0].image, 0);
+    EXPECT_EQ(contents.materials[0].baseColorTexture.texture, 0);
+    EXPECT_EQ(contents.materials[0].baseColorTexture.texCoord, 0);
+    EXPECT_TRUE(contents.materials[0].baseColorTexture.transform.identity());
+    const TextureImage& image = contents.images[0];
+    expectQuadImage(image);
+    EXPECT_EQ(image.name, "albedo");
+    EXPECT_EQ(image.mimeType, "image/png");
+    EXPECT_EQ(image.encoded, png);  // the bytes as stored, for the baker to copy
+    EXPECT_EQ(image.file, testDir() / "model.glb");
+    EXPECT_EQ(image.uri, "");
+  }
+  {
+    GltfBuilder builder = texturedTriangle();
+    builder.document()["images"] = {{{"uri", "data:image/png;base64," + test::base64(png)}}};
+    const GltfContents contents = load(builder);
+    ASSERT_EQ(contents.images.size(), 1u);
+    expectQuadImage(contents.images[0]);
+    EXPECT_EQ(contents.images[0].encoded, png);
+    EXPECT_EQ(contents.images[0].uri, "data:image/png;base64,");
+  }
+  {
+    // A file in a subfolder, its name percent-encoded as URIs are.
+    std::filesystem::create_directories(testDir() / "maps");
+    test::writeFileBytes(testDir() / "maps" / "my albedo.png", png);
+    GltfBuilder builder = texturedTriangle();
+    builder.document()["images"] = {{{"uri", "maps/my%20albedo.png"}}};
+    const GltfContents contents = load(builder);
+    ASSERT_EQ(contents.images.size(), 1u);
+    expectQuadImage(contents.images[0]);
+    EXPECT_EQ(contents.images[0].file, testDir() / "maps" / "my albedo.png");
+    EXPECT_EQ(contents.images[0].uri, "maps/my%20albedo.png");
+  }
+  for (const std::string& line : warnings.lines())  // the triangle has no normals; nothing else
+    EXPECT_NE(line.find("generated angle-weighted normals"), std::string::npos) << line;
+}
+
+TEST_F(GltfLoad, WebpThroughExtTextureWebpAndJpeg) {
+  const std::vector<std::uint8_t> webp = test::encodeWebp(2, 2, test::quadPixels());
+  {
+    // EXT_texture_webp's source wins over the PNG fallback, which no texture then uses: only the
+    // WebP is loaded, renumbered as image 0.
+    GltfBuilder builder = texturedTriangle();
+    builder.addImage(test::encodePng(2, 2, std::vector<std::uint8_t>(16, 7)), "image/png");
+    builder.addImage(webp, "image/webp");
+    builder.document()["textures"][0]["extensions"] = {{"EXT_texture_webp", {{"source", 1}}}};
+    builder.document()["extensionsUsed"] = {"EXT_texture_webp"};
+    builder.document()["extensionsRequired"] = {"EXT_texture_webp"};
+    const GltfContents contents = load(builder, GltfBuilder::Storage::Glb);
+    ASSERT_EQ(contents.images.size(), 1u);
+    EXPECT_EQ(contents.textures[0].image, 0);
+    expectQuadImage(contents.images[0]);  // lossless: exact, alpha too
+    EXPECT_EQ(contents.images[0].mimeType, "image/webp");
+  }
+  {
+    // A WebP data URI, whose media type tinygltf does not know.
+    GltfBuilder builder = texturedTriangle();
+    builder.document()["images"] = {{{"uri", "data:image/webp;base64," + test::base64(webp)}}};
+    builder.document()["textures"][0] = {{"extensions", {{"EXT_texture_webp", {{"source", 0}}}}}};
+    const GltfContents contents = load(builder);
+    ASSERT_EQ(contents.images.size(), 1u);
+    expectQuadImage(contents.images[0]);
+  }
+  {
+    std::vector<std::uint8_t> grey(8 * 8 * 4, 200);
+    GltfBuilder builder = texturedTriangle();
+    builder.addImage(test::encodeJpeg(8, 8, grey), "image/jpeg");
+    const GltfContents contents = load(builder);
+    ASSERT_EQ(contents.images.size(), 1u);
+    EXPECT_EQ(contents.images[0].mimeType, "image/jpeg");
+    EXPECT_EQ(contents.images[0].channels, 3);
+    ASSERT_EQ(contents.images[0].rgba.size(), 8u * 8u * 4u);
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(int(contents.images[0].rgba[i]), i == 3 ? 255 : 200, 2);
+  }
+}
+
+TEST_F(GltfLoad, SamplersMapToTextureSampler) {
+  GltfBuilder builder = texturedTriangle();
+  builder.addImage(test::encodePng(2, 2, test::quadPixels()), "image/png");
+  // NEAREST 9728, LINEAR 9729, *_MIPMAP_* 9984..9987; REPEAT 10497, CLAMP 33071, MIRRORED 33648.
+  builder.document()["samplers"] = {
+      {{"magFilter", 9728}, {"minFilter", 9984}, {"wrapS", 33071}, {"wrapT", 33648}},
+      {{"magFilter", 9729}, {"minFilter", 9729}},
+      {{"minFilter", 9985}, {"wrapS", 33648}},
+      {{"minFilter", 9986}},
+      {{"minFilter", 9728}},
+      json::object()};
+  json& textures = builder.document()["textures"];
+  textures = json::array();
+  for (int i = 0; i < 6; ++i) textures.push_back({{"source", 0}, {"sampler", i}});
+  textures.push_back({{"source", 0}});  // no sampler: the defaults
+  json& materials = builder.document()["materials"];
+  materials = json::array();
+  for (int i = 0; i < 7; ++i) materials.push_back({{"emissiveTexture", {{"index", i}}}});
+
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.textures.size(), 7u);
+  ASSERT_EQ(contents.images.size(), 1u);  // seven textures share the image
+  using F = TextureFilter;
+  using W = TextureWrap;
+  struct Expected {
+    W s, t;
+    F mag, min;
+    bool mipmaps;
+    F mip;
+  };
+  const Expected expected[] = {{W::ClampToEdge, W::MirroredRepeat, F::Nearest, F::Nearest, true, F::Nearest},
+                               {W::Repeat, W::Repeat, F::Linear, F::Linear, false, F::Linear},
+                               {W::MirroredRepeat, W::Repeat, F::Linear, F::Linear, true, F::Nearest},
+                               {W::Repeat, W::Repeat, F::Linear, F::Nearest, true, F::Linear},
+                               {W::Repeat, W::Repeat, F::Linear, F::Nearest, false, F::Linear},
+                               {W::Repeat, W::Repeat, F::Linear, F::Linear, true, F::Linear},
+                               {W::Repeat, W::Repeat, F::Linear, F::Linear, true, F::Linear}};
+  for (int i = 0; i < 7; ++i) {
+    const TextureSampler& sampler = contents.textures[i].sampler;
+    EXPECT_EQ(sampler.wrapS, expected[i].s) << i;
+    EXPECT_EQ(sampler.wrapT, expected[i].t) << i;
+    EXPECT_EQ(sampler.magFilter, expected[i].mag) << i;
+    EXPECT_EQ(sampler.minFilter, expected[i].min) << i;
+    EXPECT_EQ(sampler.mipmaps, expected[i].mipmaps) << i;
+    EXPECT_EQ(sampler.mipFilter, expected[i].mip) << i;
+    EXPECT_EQ(contents.textures[i].image, 0);
+    EXPECT_EQ(contents.materials[i].emissiveTexture.texture, i);
+  }
+  // 9987 is LINEAR_MIPMAP_LINEAR: trilinear, the default.
+  builder.document()["samplers"][5] = {{"minFilter", 9987}};
+  EXPECT_EQ(load(builder).textures[5].sampler.mipmaps, true);
+
+  builder.document()["samplers"][2]["wrapT"] = 12345;
+  EXPECT_NE(loadError(builder).find("model.gltf: sampler 2 wrapT: unknown wrap mode 12345"), std::string::npos)
+      << loadError(builder);
+  builder.document()["samplers"][2] = {{"magFilter", 9984}};  // a mipmap filter is no magFilter
+  EXPECT_NE(loadError(builder).find("model.gltf: sampler 2: unknown magFilter 9984"), std::string::npos);
+  builder.document()["samplers"][2] = {{"minFilter", 1}};
+  EXPECT_NE(loadError(builder).find("model.gltf: sampler 2: unknown minFilter 1"), std::string::npos);
+}
+
+TEST_F(GltfLoad, SlotsTexCoordsAndKhrTextureTransform) {
+  GltfBuilder builder;
+  const std::vector<glm::vec2> uvs1 = {glm::vec2(0.5f, 0.5f), glm::vec2(1, 0.5f), glm::vec2(0.5f, 1)};
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(kTriangle)},
+                              {"TEXCOORD_0", builder.addFloats(kTriangleUvs)},
+                              {"TEXCOORD_1", builder.addFloats(uvs1)}}},
+                            {"material", 0}});
+  builder.addImage(test::encodePng(2, 2, test::quadPixels()), "image/png");
+  builder.addImage(test::encodePng(2, 2, std::vector<std::uint8_t>(16, 9)), "image/png");
+  builder.document()["textures"] = {{{"source", 0}}, {{"source", 1}}, {{"source", 0}}};
+  builder.document()["extensionsUsed"] = {"KHR_texture_transform"};
+  builder.document()["extensionsRequired"] = {"KHR_texture_transform"};
+  const json baseTransform = {
+      {"offset", {0.5, -0.25}}, {"rotation", 1.5707963}, {"scale", {2.0, 3.0}}, {"texCoord", 1}};
+  json material;
+  material["pbrMetallicRoughness"]["baseColorFactor"] = {1.0, 1.0, 1.0, 0.25};
+  material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 2}};
+  material["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = baseTransform;
+  material["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 1}, {"texCoord", 1}};
+  material["normalTexture"] = {{"index", 0}, {"scale", 0.75}};
+  material["occlusionTexture"] = {{"index", 1}, {"strength", 0.5}};
+  material["emissiveTexture"] = {{"index", 0}};
+  material["emissiveTexture"]["extensions"]["KHR_texture_transform"]["scale"] = {4.0, 4.0};
+  builder.document()["materials"] = json::array({material});
+  const GltfContents contents = load(builder);
+
+  ASSERT_EQ(contents.meshes.size(), 1u);
+  EXPECT_EQ(contents.meshes[0].texcoords, kTriangleUvs);
+  EXPECT_EQ(contents.meshes[0].texcoords1, uvs1);
+  ASSERT_EQ(contents.textures.size(), 3u);
+  EXPECT_EQ(contents.textures[2].image, 0);
+  const Material& m = contents.materials[0];
+  EXPECT_EQ(m.alpha, 0.25f);
+  const TextureRef& base = m.baseColorTexture;
+  EXPECT_EQ(base.texture, 2);
+  EXPECT_EQ(base.texCoord, 1);  // the extension's texCoord overrides the textureInfo's 0
+  EXPECT_EQ(base.transform.offset, glm::vec2(0.5f, -0.25f));
+  EXPECT_EQ(base.transform.rotation, 1.5707963f);
+  EXPECT_EQ(base.transform.scale, glm::vec2(2.0f, 3.0f));
+  // Hand-computed with the extension's matrices: scale (2, 3) gives (2, 0) for uv (1, 0); the
+  // rotation by pi/2 maps (x, y) to (cos x + sin y, -sin x + cos y) = (0, -2); the offset adds (0.5, -0.25).
+  const glm::vec2 transformed = base.transform.apply(glm::vec2(1.0f, 0.0f));
+  EXPECT_NEAR(transformed.x, 0.5f, 1e-5f);
+  EXPECT_NEAR(transformed.y, -2.25f, 1e-5f);
+  EXPECT_EQ(m.metallicRoughnessTexture.texture, 1);
+  EXPECT_EQ(m.metallicRoughnessTexture.texCoord, 1);
+  EXPECT_TRUE(m.metallicRoughnessTexture.transform.identity());
+  EXPECT_EQ(m.normalTexture.texture, 0);
+  EXPECT_EQ(m.normalScale, 0.75f);
+  EXPECT_EQ(m.occlusionTexture.texture, 1);
+  EXPECT_EQ(m.occlusionStrength, 0.5f);
+  EXPECT_EQ(m.emissiveTexture.transform.scale, glm::vec2(4.0f));
+  EXPECT_EQ(m.emissiveTexture.texCoord, 0);
+
+  json& edited = builder.document()["materials"][0];
+  edited["occlusionTexture"]["texCoord"] = 2;
+  EXPECT_NE(loadError(builder).find(
+                "model.gltf: material 0 occlusionTexture: texCoord 2 is not supported (TEXCOORD_0 and TEXCOORD_1 only)"),
+            std::string::npos)
+      << loadError(builder);
+  edited["occlusionTexture"]["texCoord"] = 0;
+  edited["emissiveTexture"]["extensions"]["KHR_texture_transform"]["offset"] = {1.0};
+  EXPECT_NE(loadError(builder).find(
+                "model.gltf: material 0 emissiveTexture KHR_texture_transform.offset must be 2 finite numbers"),
+            std::string::npos)
+      << loadError(builder);
+}
+
+TEST_F(GltfLoad, AlphaModesAndDoubleSided) {
+  GltfBuilder builder;
+  const int positions = builder.addFloats(kTriangle);
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}, {"material", 0}});
+  builder.document()["materials"] = {
+      {{"alphaMode", "MASK"}, {"alphaCutoff", 0.3}, {"doubleSided", true}},
+      {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.5}}}}},
+      {{"alphaMode", "OPAQUE"}},
+      json::object()};
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.materials.size(), 4u);
+  EXPECT_EQ(contents.materials[0].alphaMode, AlphaMode::Mask);
+  EXPECT_EQ(contents.materials[0].alphaCutoff, 0.3f);
+  EXPECT_TRUE(contents.materials[0].doubleSided);
+  EXPECT_EQ(contents.materials[1].alphaMode, AlphaMode::Blend);
+  EXPECT_EQ(contents.materials[1].alpha, 0.5f);
+  EXPECT_FALSE(contents.materials[1].doubleSided);
+  EXPECT_EQ(contents.materials[2].alphaMode, AlphaMode::Opaque);
+  EXPECT_EQ(contents.materials[3].alphaMode, AlphaMode::Opaque);
+  EXPECT_EQ(contents.materials[3].alphaCutoff, 0.5f);
+  EXPECT_EQ(contents.materials[3].alpha, 1.0f);
+
+  builder.document()["materials"][2]["alphaMode"] = "CLIP";
+  EXPECT_NE(loadError(builder).find(
+                "model.gltf: material 2: unknown alphaMode 'CLIP' (expected OPAQUE, MASK or BLEND)"),
+            std::string::npos);
+  builder.document()["materials"][2] = {{"alphaCutoff", -1}};
+  EXPECT_NE(loadError(builder).find("model.gltf: material 2: alphaCutoff must be a number >= 0"),
+            std::string::npos);
+}
+
+TEST_F(GltfLoad, ReadsTangents) {
+  GltfBuilder builder;
+  const std::vector<glm::vec4> tangents = {glm::vec4(1, 0, 0, 1), glm::vec4(1, 0, 0, -1), glm::vec4(0, 1, 0, -0.5f)};
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(kTriangle)},
+                              {"NORMAL", builder.addFloats(std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)))},
+                              {"TANGENT", builder.addFloats(tangents)}}}});
+  GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 1u);
+  // w snapped to +-1 (the spec's values).
+  EXPECT_EQ(contents.meshes[0].tangents,
+            (std::vector<glm::vec4>{glm::vec4(1, 0, 0, 1), glm::vec4(1, 0, 0, -1), glm::vec4(0, 1, 0, -1)}));
+
+  // A zero tangent cannot make a frame: the file's tangents are dropped with a warning.
+  builder.document()["accessors"][2]["byteOffset"] = 0;
+  const std::vector<glm::vec4> broken = {glm::vec4(1, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 1, 0, 1)};
+  GltfBuilder second;
+  second.addPrimitiveNode({{"attributes",
+                            {{"POSITION", second.addFloats(kTriangle)},
+                             {"NORMAL", second.addFloats(std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)))},
+                             {"TANGENT", second.addFloats(broken)}}}});
+  contents = load(second);
+  EXPECT_TRUE(contents.meshes[0].tangents.empty());
+  EXPECT_TRUE(warnings.contains(
+      "model.gltf: warning: mesh 0 primitive 0: TANGENT has 1 zero-length or non-finite tangents; ignored"));
+
+  GltfBuilder wrong;
+  const int positions = wrong.addFloats(kTriangle);
+  wrong.addPrimitiveNode({{"attributes", {{"POSITION", positions}, {"TANGENT", positions}}}});
+  EXPECT_NE(loadError(wrong).find("model.gltf: accessor 0 (TANGENT) has 3 components per element, expected 4"),
+            std::string::npos);
+}
+
+TEST_F(GltfLoad, TexturesNoMaterialUsesAreNotLoaded) {
+  GltfBuilder builder = texturedTriangle();
+  builder.document()["materials"][0] = json::object();
+  builder.document()["images"] = {{{"uri", "missing.png"}}};
+  const GltfContents contents = load(builder);
+  EXPECT_TRUE(contents.textures.empty());
+  EXPECT_TRUE(contents.images.empty());
+}
+
+// Each bad texture reference or image: one line naming the file, the texture and the image.
+TEST_F(GltfLoad, BadTexturesAndImagesAreNamed) {
+  const std::vector<std::uint8_t> png = test::encodePng(2, 2, test::quadPixels());
+  const auto error = [&](const std::function<void(GltfBuilder&)>& edit) {
+    GltfBuilder builder = texturedTriangle();
+    edit(builder);
+    const std::string message = loadError(builder);
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    return message;
+  };
+  const auto expectError = [&](const std::function<void(GltfBuilder&)>& edit, const std::string& expected) {
+    const std::string message = error(edit);
+    EXPECT_NE(message.find(expected), std::string::npos) << "expected '" << expected << "' in: " << message;
+  };
+  const std::string prefix = (testDir() / "model.gltf").string() + ": ";
+
+  expectError([](GltfBuilder& b) { b.document()["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 4; },
+              prefix + "material 0 baseColorTexture: texture 4 does not exist");
+  expectError([](GltfBuilder& b) { b.document()["textures"][0]["source"] = 3; },
+              prefix + "texture 0: image 3 does not exist");
+  expectError([&](GltfBuilder& b) {
+    b.addImage(png, "image/png");
+    b.document()["textures"][0]["sampler"] = 1;
+  }, prefix + "texture 0: sampler 1 does not exist");
+  expectError([&](GltfBuilder& b) {
+    b.addImage(png, "image/png");
+    b.document()["textures"][0]["extensions"] = {{"EXT_texture_webp", {{"source", 5}}}};
+  }, prefix + "texture 0: image 5 does not exist");
+  expectError([](GltfBuilder& b) { b.document()["images"] = {{{"uri", "missing.png"}}}; },
+              prefix + "texture 0 image 0 'missing.png': " + (testDir() / "missing.png").string() +
+                  ": cannot open: No such file or directory");
+  for (const std::string uri : {"../outside.png", "/etc/passwd", "file:///etc/passwd", "maps/../../outside.png"})
+    expectError([&](GltfBuilder& b) { b.document()["images"] = {{{"uri", uri}}}; },
+                prefix + "texture 0 image 0 '" + uri + "': uri '" + uri + "' points outside the scene folder");
+  expectError([](GltfBuilder& b) {
+    b.addImage({0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n', 0, 0, 0, 0}, "image/ktx2");
+  }, prefix + "texture 0 image 0: mime type image/ktx2 is not supported (image/png, image/jpeg and image/webp are)");
+  expectError([](GltfBuilder& b) {
+    test::writeFileBytes(testDir() / "basis.ktx2",
+                         {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n', 0, 0, 0, 0});
+    b.document()["images"] = {{{"uri", "basis.ktx2"}}};
+  }, prefix + "texture 0 image 0 'basis.ktx2': KTX2 images (KHR_texture_basisu) are not supported");
+  expectError([](GltfBuilder& b) {
+    b.document()["textures"][0] = {{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}};
+    b.document()["images"] = {{{"uri", "basis.ktx2"}}};
+  }, prefix + "texture 0 has only a KHR_texture_basisu (KTX2) image, which is not supported");
+  expectError([](GltfBuilder& b) { b.document()["extensionsRequired"] = {"KHR_texture_basisu"}; },
+              prefix + "requires unsupported extension KHR_texture_basisu (KTX2 textures");
+  expectError([](GltfBuilder& b) { b.addImage({'G', 'I', 'F', '8', '9', 'a', 0, 0}, "image/gif"); },
+              prefix + "texture 0 image 0: mime type image/gif is not supported");
+  expectError([](GltfBuilder& b) { b.addImage({'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'a', 'g', 'e'}, ""); },
+              prefix + "texture 0 image 0: not a PNG, JPEG or WebP image (unknown signature)");
+  expectError([&](GltfBuilder& b) {
+    std::vector<std::uint8_t> cut(png.begin(), png.begin() + std::ptrdiff_t(png.size() / 2));
+    b.addImage(cut, "image/png");
+  }, prefix + "texture 0 image 0: PNG does not decode (");
+  expectError([](GltfBuilder& b) { b.addImage(test::pngHeaderClaiming(0, 0), "image/png"); },
+              prefix + "texture 0 image 0: image is 0 x 0 pixels");
+  expectError([](GltfBuilder& b) { b.addImage(test::pngHeaderClaiming(65536, 65536), "image/png"); },
+              prefix + "texture 0 image 0: image is 65536 x 65536 pixels, beyond the limit of 16384 on a side");
+  expectError([](GltfBuilder& b) { b.addImage(test::webpHeaderClaiming(40000, 40000), "image/webp"); },
+              prefix + "texture 0 image 0: image is 40000 x 40000 pixels, beyond the limit of 16384 on a side");
+  expectError([](GltfBuilder& b) { b.document()["images"] = {{{"uri", "data:image/png;base64,!!!!"}}}; },
+              prefix + "Failed to decode 'uri' for image[0]");
+  expectError([](GltfBuilder& b) { b.document()["images"] = {{{"uri", "data:image/webp;base64,@@"}}}; },
+              prefix + "texture 0 image 0 'data:image/webp;base64,': data URI is not valid base64");
+  expectError([](GltfBuilder& b) { b.document()["textures"][0] = json::object(); },
+              prefix + "texture 0 has no image source");
+}
+
+TEST_F(GltfLoad, KtxTextureWithAFallbackUsesItWithAWarning) {
+  GltfBuilder builder = texturedTriangle();
+  builder.addImage(test::encodePng(2, 2, test::quadPixels()), "image/png");
+  builder.document()["images"].push_back({{"uri", "never-read.ktx2"}});
+  builder.document()["textures"][0]["extensions"] = {{"KHR_texture_basisu", {{"source", 1}}}};
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.images.size(), 1u);
+  expectQuadImage(contents.images[0]);
+  EXPECT_TRUE(warnings.contains("model.gltf: warning: texture 0: KHR_texture_basisu (KTX2) is not supported; using "
+                                "its fallback source, image 0"));
+}
+
+TEST_F(GltfLoad, MismatchedMimeTypeIsReadAsWhatTheBytesAre) {
+  GltfBuilder builder = texturedTriangle();
+  builder.addImage(test::encodePng(2, 2, test::quadPixels()), "image/jpeg");
+  const GltfContents contents = load(builder);
+  expectQuadImage(contents.images.at(0));
+  EXPECT_TRUE(warnings.contains(
+      "model.gltf: warning: texture 0 image 0: declared image/jpeg but holds image/png; read as image/png"));
 }
 
 }  // namespace

@@ -137,5 +137,49 @@ TEST(TransformMesh, MirrorFlipsWindingAndKeepsNormalsOutward) {
   EXPECT_GT(glm::dot(geometric, mesh.normals[0]), 0.0f);
 }
 
+// A triangle in z = 0 with tangents along +x and w = +1 (bitangent +y), and a second uv set.
+Mesh tangentTriangle() {
+  Mesh mesh;
+  mesh.positions = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+  mesh.normals.assign(3, glm::vec3(0, 0, 1));
+  mesh.tangents.assign(3, glm::vec4(1, 0, 0, 1));
+  mesh.texcoords = {glm::vec2(0, 1), glm::vec2(1, 1), glm::vec2(0, 0)};
+  mesh.texcoords1 = {glm::vec2(0.1f, 0.2f), glm::vec2(0.3f, 0.4f), glm::vec2(0.5f, 0.6f)};
+  mesh.indices = {0, 1, 2};
+  return mesh;
+}
+
+TEST(TransformMesh, TangentsFollowTheSurfaceAndStayOrthogonal) {
+  Mesh mesh = tangentTriangle();
+  mesh.normals.assign(3, glm::normalize(glm::vec3(0, 1, 1)));  // a tangent frame that a shear moves
+  mesh.tangents.assign(3, glm::vec4(1, 0, 0, 1));
+  glm::mat4 m = glm::rotate(glm::mat4(1.0f), glm::radians(40.0f), glm::vec3(0, 0, 1));
+  m = glm::scale(m, glm::vec3(1.0f, 3.0f, 0.5f));
+  const Mesh original = mesh;
+  transformMesh(mesh, m);
+  ASSERT_EQ(mesh.tangents.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const glm::vec3 t(mesh.tangents[i]);
+    EXPECT_NEAR(glm::length(t), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(t, mesh.normals[i]), 0.0f, 1e-5f);
+    EXPECT_GT(glm::dot(t, glm::normalize(glm::mat3(m) * glm::vec3(original.tangents[i]))), 0.99f);
+    EXPECT_EQ(mesh.tangents[i].w, 1.0f);
+  }
+  EXPECT_EQ(mesh.texcoords1, original.texcoords1);
+  EXPECT_EQ(mesh.texcoords, original.texcoords);
+}
+
+TEST(TransformMesh, MirrorFlipsTangentHandednessSoTheBitangentFollows) {
+  Mesh mesh = tangentTriangle();
+  const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f));
+  const glm::vec3 bitangentBefore = mesh.tangents[0].w * glm::cross(mesh.normals[0], glm::vec3(mesh.tangents[0]));
+  transformMesh(mesh, mirror);
+  expectNear(glm::vec3(mesh.tangents[0]), glm::vec3(-1, 0, 0));
+  EXPECT_EQ(mesh.tangents[0].w, -1.0f);
+  // The bitangent (the uv set's "up the image") is the mirrored bitangent.
+  const glm::vec3 bitangentAfter = mesh.tangents[0].w * glm::cross(mesh.normals[0], glm::vec3(mesh.tangents[0]));
+  expectNear(bitangentAfter, glm::mat3(mirror) * bitangentBefore);
+}
+
 }  // namespace
 }  // namespace iblkit

@@ -7,8 +7,6 @@
 
 namespace iblkit::test {
 
-namespace {
-
 std::string base64(const std::vector<unsigned char>& bytes) {
   static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string text;
@@ -24,6 +22,8 @@ std::string base64(const std::vector<unsigned char>& bytes) {
   }
   return text;
 }
+
+namespace {
 
 void writeBytes(const std::filesystem::path& path, const void* data, std::size_t size) {
   std::ofstream stream(path, std::ios::binary);
@@ -82,6 +82,15 @@ int GltfBuilder::addFloats(const std::vector<glm::vec2>& values) {
 
 int GltfBuilder::addFloats(const std::vector<float>& values) {
   return addAccessor(values.data(), values.size() * sizeof(float), kFloat, values.size(), "SCALAR");
+}
+
+int GltfBuilder::addFloats(const std::vector<glm::vec4>& values) {
+  return addAccessor(values.data(), values.size() * sizeof(glm::vec4), kFloat, values.size(), "VEC4");
+}
+
+int GltfBuilder::addImage(const std::vector<std::uint8_t>& bytes, const std::string& mimeType) {
+  document_["images"].push_back({{"bufferView", addBufferView(bytes.data(), bytes.size())}, {"mimeType", mimeType}});
+  return int(document_["images"].size()) - 1;
 }
 
 int GltfBuilder::addIndices(const std::vector<std::uint32_t>& indices, int componentType) {

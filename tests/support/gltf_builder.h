@@ -33,8 +33,13 @@ class GltfBuilder {
   int addFloats(const std::vector<glm::vec3>& values);  // VEC3 float, with min and max
   int addFloats(const std::vector<glm::vec2>& values);  // VEC2 float
   int addFloats(const std::vector<float>& values);      // SCALAR float
+  int addFloats(const std::vector<glm::vec4>& values);  // VEC4 float (TANGENT)
   // Indices stored with the given component type (unsigned byte, short or int).
   int addIndices(const std::vector<std::uint32_t>& indices, int componentType = kUnsignedInt);
+
+  // An image stored in a new buffer view with its mimeType (glTF 2.0 section 5.17); returns the
+  // image's index. Textures, samplers and materials are left to the document.
+  int addImage(const std::vector<std::uint8_t>& bytes, const std::string& mimeType);
 
   // A mesh of the given primitives; returns its index.
   int addMesh(const nlohmann::json& primitives);
@@ -50,6 +55,9 @@ class GltfBuilder {
   nlohmann::json document_;
   std::vector<unsigned char> buffer_;
 };
+
+// RFC 4648 base64 with padding, for data: URIs.
+std::string base64(const std::vector<unsigned char>& bytes);
 
 // A unit cube, [0, 1]^3, 8 shared vertices and 12 counter-clockwise triangles, no normals.
 struct CubeGeometry {

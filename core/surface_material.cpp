@@ -1,0 +1,101 @@
+#include "core/surface_material.h"
+
+#include <cmath>
+
+namespace iblkit {
+
+namespace {
+
+// The slot's texture value, or nullptr-like `false` when the slot is off, empty, or names a
+// texture without a chain in that colour space (an image that did not load): then its factors
+// stand alone, as for a slot without a texture.
+bool readSlot(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, const SceneTextures& textures,
+              const SurfaceInputs& inputs, glm::vec4& value) {
+  if (!(inputs.slots & bit) || !ref.present() || textures.chain(ref.texture, colorSpace) == nullptr) return false;
+  const int set = ref.texCoord == 1 ? 1 : 0;
+  value = textures.sample(ref, colorSpace, inputs.texcoords[set], inputs.footprintUv[set]);
+  return true;
+}
+
+}  // namespace
+
+SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTextures& textures,
+                                        const SurfaceInputs& inputs) {
+  SurfaceMaterial out;
+  Material& m = out.material;
+  // Every field but the name (copying a std::string could allocate, once per hit) and the texture
+  // refs (left cleared: the result is ready for the BRDF).
+  m.baseColor = material.baseColor;
+  m.metallic = material.metallic;
+  m.roughness = material.roughness;
+  m.specular = material.specular;
+  m.specularColor = material.specularColor;
+  m.emissive = material.emissive;
+  m.alpha = material.alpha;
+  m.normalScale = material.normalScale;
+  m.occlusionStrength = material.occlusionStrength;
+  m.alphaMode = material.alphaMode;
+  m.alphaCutoff = material.alphaCutoff;
+  m.doubleSided = material.doubleSided;
+  out.normal = inputs.normal;
+  glm::vec4 value;
+  // glTF 2.0 section 3.9.2: base colour and its alpha are factor times the (decoded) texel.
+  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, value)) {
+    m.baseColor *= glm::vec3(value);
+    m.alpha *= value.a;
+  }
+  out.alpha = m.alpha;
+  // Section 3.9.2: roughness in G, metallic in B.
+  if (readSlot(material.metallicRoughnessTexture, kSlotMetallicRoughness, ColorSpace::Linear, textures, inputs,
+               value)) {
+    m.roughness *= value.g;
+    m.metallic *= value.b;
+  }
+  // Section 3.9.3: occlusion = 1 + strength (R - 1).
+  if (readSlot(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, textures, inputs, value))
+    out.occlusion = 1.0f + material.occlusionStrength * (value.r - 1.0f);
+  // Section 3.9.3: emissive = factor times the sRGB-decoded texel.
+  if (readSlot(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, textures, inputs, value))
+    m.emissive *= glm::vec3(value);
+  if (inputs.tangent.x != 0.0f || inputs.tangent.y != 0.0f || inputs.tangent.z != 0.0f)
+    if (readSlot(material.normalTexture, kSlotNormal, ColorSpace::Linear, textures, inputs, value))
+      out.normal = perturbNormal(inputs.normal, inputs.tangent, glm::vec3(value), material.normalScale);
+  return out;
+}
+
+float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs) {
+  glm::vec4 value;
+  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, value))
+    return material.alpha * value.a;
+  return material.alpha;
+}
+
+bool surfacePresent(const Material& material, float alpha, float u) {
+  switch (material.alphaMode) {
+    case AlphaMode::Mask:
+      return alpha >= material.alphaCutoff;
+    case AlphaMode::Blend:
+      return u < alpha;
+    case AlphaMode::Opaque:
+    default:
+      return true;
+  }
+}
+
+glm::vec3 perturbNormal(const glm::vec3& n, const glm::vec4& tangent, const glm::vec3& texel, float scale) {
+  // glTF 2.0 section 3.9.3 (normalTexture): scaledNormal = normalize((2 texel - 1) * (scale, scale, 1)),
+  // in the tangent frame (t, b, n), b = w cross(n, t) (section 3.7.2.1).
+  // The interpolated frame is used as it is, not re-orthogonalised: the notes of Mikkelsen's
+  // reference implementation (mikktspace.h, on the pixel shader) ask for exactly this, so that the
+  // frame is the one the map was baked against; shaders/material.glsl does the same.
+  const glm::vec3 t(tangent);
+  if (t == glm::vec3(0.0f)) return n;
+  const glm::vec3 b = (tangent.w < 0.0f ? -1.0f : 1.0f) * glm::cross(n, t);
+  const glm::vec3 m = 2.0f * texel - 1.0f;
+  const glm::vec3 world = t * (m.x * scale) + b * (m.y * scale) + n * m.z;
+  const float length = glm::length(world);
+  if (!(length > 0.0f) || !std::isfinite(length)) return n;
+  return world / length;
+}
+
+}  // namespace iblkit

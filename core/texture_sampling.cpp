@@ -1,0 +1,273 @@
+#include "core/texture_sampling.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace iblkit {
+
+namespace {
+
+// IEC 61966-2-1:1999, section 5.2 (the inverse of its encoding, 5.3).
+double srgbDecode(double encoded) {
+  return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+struct DecodeTables {
+  std::array<float, 256> srgb{};
+  std::array<float, 256> linear{};
+  // The encoded 8-bit value is the one whose decoding is nearest: encode through the midpoints
+  // between neighbouring decodings (monotone), so decode(encode(x)) is as close to x as 8 bits allow.
+  std::array<float, 255> srgbMidpoints{};
+  DecodeTables() {
+    for (int i = 0; i < 256; ++i) {
+      srgb[i] = static_cast<float>(srgbDecode(i / 255.0));
+      linear[i] = static_cast<float>(i / 255.0);
+    }
+    for (int i = 0; i < 255; ++i) srgbMidpoints[i] = 0.5f * (srgb[i] + srgb[i + 1]);
+  }
+};
+
+const DecodeTables& tables() {
+  static const DecodeTables instance;
+  return instance;
+}
+
+std::uint8_t encodeLinear(float value) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
+}
+
+std::uint8_t encodeSrgb(float value) {
+  const auto& midpoints = tables().srgbMidpoints;
+  return static_cast<std::uint8_t>(std::upper_bound(midpoints.begin(), midpoints.end(), value) - midpoints.begin());
+}
+
+// The box filter of one axis from `size` texels to `reduced`: output texel i covers the source
+// interval [i size / reduced, (i + 1) size / reduced), each source texel weighted by its overlap
+// (2 texels for even sizes; for odd sizes 3, the outer two partly), so that every source texel
+// counts equally and the level keeps the image's mean.
+struct Tap {
+  int index;
+  float weight;
+};
+std::vector<std::vector<Tap>> boxTaps(int size, int reduced) {
+  std::vector<std::vector<Tap>> taps(reduced);
+  const double step = static_cast<double>(size) / reduced;
+  for (int i = 0; i < reduced; ++i) {
+    const double begin = i * step, end = (i + 1) * step;
+    for (int s = static_cast<int>(std::floor(begin)); s < size && s < end; ++s) {
+      const double overlap = std::min<double>(s + 1, end) - std::max<double>(s, begin);
+      if (overlap > 1e-9) taps[i].push_back({s, static_cast<float>(overlap / step)});
+    }
+  }
+  return taps;
+}
+
+// Level `level` of the chain, down-sampled by the box filter in linear values.
+MipLevel reduce(const MipLevel& source, ColorSpace colorSpace) {
+  MipLevel out;
+  out.width = std::max(1, source.width / 2);
+  out.height = std::max(1, source.height / 2);
+  out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
+  const auto tapsX = boxTaps(source.width, out.width);
+  const auto tapsY = boxTaps(source.height, out.height);
+  const float* rgbTable = colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
+  const float* alphaTable = tables().linear.data();
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      for (const Tap& ty : tapsY[y])
+        for (const Tap& tx : tapsX[x]) {
+          const std::uint8_t* texel =
+              &source.rgba[(static_cast<std::size_t>(ty.index) * source.width + tx.index) * 4];
+          const float weight = ty.weight * tx.weight;
+          for (int c = 0; c < 3; ++c) sum[c] += weight * rgbTable[texel[c]];
+          sum[3] += weight * alphaTable[texel[3]];
+        }
+      std::uint8_t* texel = &out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4];
+      for (int c = 0; c < 3; ++c) texel[c] = colorSpace == ColorSpace::Srgb ? encodeSrgb(sum[c]) : encodeLinear(sum[c]);
+      texel[3] = encodeLinear(sum[3]);
+    }
+  return out;
+}
+
+// Texel coordinate before wrapping: floor(x), with x held in a range where the int conversion
+// is defined (a texture coordinate beyond 2^24 texels has no fractional precision left anyway).
+int floorToInt(float x) {
+  if (!(x == x)) return 0;  // NaN
+  return static_cast<int>(std::floor(std::clamp(x, -16777216.0f, 16777216.0f)));
+}
+
+// rgbTable decodes R, G and B; alpha is always linear (the table's linear half).
+glm::vec4 fetch(const MipLevel& level, const float* rgbTable, const float* alphaTable, int x, int y) {
+  const std::uint8_t* texel = &level.rgba[(static_cast<std::size_t>(y) * level.width + x) * 4];
+  return glm::vec4(rgbTable[texel[0]], rgbTable[texel[1]], rgbTable[texel[2]], alphaTable[texel[3]]);
+}
+
+// The wrapped neighbours i0 = wrap(i), i1 = wrap(i + 1) of a LINEAR lookup; REPEAT (the common
+// case) without a second division.
+void wrapPair(int i, int size, TextureWrap wrap, int& i0, int& i1) {
+  i0 = wrapTexel(i, size, wrap);
+  if (wrap == TextureWrap::Repeat)
+    i1 = i0 + 1 == size ? 0 : i0 + 1;
+  else
+    i1 = wrapTexel(i + 1, size, wrap);
+}
+
+// GL 4.5 section 8.14.2: NEAREST takes the texel containing (u, v); LINEAR the 2 x 2 texels
+// around it, at i0 = wrap(floor(u' - 1/2)), i1 = wrap(i0 + 1), weighted by frac(u' - 1/2).
+glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const TextureSampler& sampler,
+                      glm::vec2 uv, TextureFilter filter) {
+  const float* alphaTable = tables().linear.data();
+  const float x = uv.x * level.width, y = uv.y * level.height;
+  if (filter == TextureFilter::Nearest)
+    return fetch(level, rgbTable, alphaTable, wrapTexel(floorToInt(x), level.width, sampler.wrapS),
+                 wrapTexel(floorToInt(y), level.height, sampler.wrapT));
+  const float xs = std::isfinite(x) ? x - 0.5f : 0.0f, ys = std::isfinite(y) ? y - 0.5f : 0.0f;
+  const float xFloor = std::floor(xs), yFloor = std::floor(ys);
+  const float fx = xs - xFloor, fy = ys - yFloor;
+  int i0, i1, j0, j1;
+  wrapPair(floorToInt(xFloor), level.width, sampler.wrapS, i0, i1);
+  wrapPair(floorToInt(yFloor), level.height, sampler.wrapT, j0, j1);
+  const glm::vec4 top =
+      glm::mix(fetch(level, rgbTable, alphaTable, i0, j0), fetch(level, rgbTable, alphaTable, i1, j0), fx);
+  const glm::vec4 bottom =
+      glm::mix(fetch(level, rgbTable, alphaTable, i0, j1), fetch(level, rgbTable, alphaTable, i1, j1), fx);
+  return glm::mix(top, bottom, fy);
+}
+
+// KHR_texture_transform without building the matrix (no trigonometry for the common unrotated
+// case); the same arithmetic as TextureTransform::matrix().
+glm::vec2 applyTransform(const TextureTransform& transform, glm::vec2 uv) {
+  const glm::vec2 scaled = uv * transform.scale;
+  if (transform.rotation == 0.0f) return scaled + transform.offset;
+  const float c = std::cos(transform.rotation), s = std::sin(transform.rotation);
+  return glm::vec2(c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y) + transform.offset;
+}
+
+}  // namespace
+
+float srgbToLinear(std::uint8_t value) { return tables().srgb[value]; }
+
+const float* srgbDecodeTable() { return tables().srgb.data(); }
+
+MipChain buildMipChain(const TextureImage& image, ColorSpace colorSpace) {
+  MipChain chain;
+  chain.colorSpace = colorSpace;
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4)
+    return chain;
+  MipLevel base;
+  base.width = image.width;
+  base.height = image.height;
+  base.rgba = image.rgba;
+  chain.levels.push_back(std::move(base));
+  while (chain.levels.back().width > 1 || chain.levels.back().height > 1)
+    chain.levels.push_back(reduce(chain.levels.back(), colorSpace));
+  return chain;
+}
+
+float textureLod(const MipChain& chain, float footprintUv) {
+  if (!(footprintUv > 0.0f) || chain.levels.empty()) return -std::numeric_limits<float>::infinity();
+  const float texels = footprintUv * std::sqrt(static_cast<float>(chain.width()) * static_cast<float>(chain.height()));
+  return std::log2(texels);
+}
+
+int wrapTexel(int i, int size, TextureWrap wrap) {
+  // GL 4.5 table 8.20.
+  switch (wrap) {
+    case TextureWrap::ClampToEdge:
+      return std::clamp(i, 0, size - 1);
+    case TextureWrap::MirroredRepeat: {
+      // Power-of-two sizes (most textures) wrap by a mask (two's complement), without a division.
+      int m = (size & (size - 1)) == 0 ? i & (2 * size - 1) : i % (2 * size);
+      if (m < 0) m += 2 * size;
+      const int a = m - size;
+      const int mirrored = a >= 0 ? a : -(1 + a);
+      return (size - 1) - mirrored;
+    }
+    case TextureWrap::Repeat:
+    default: {
+      if ((size & (size - 1)) == 0) return i & (size - 1);
+      const int m = i % size;
+      return m < 0 ? m + size : m;
+    }
+  }
+}
+
+glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod) {
+  if (chain.levels.empty()) return glm::vec4(1.0f);
+  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
+  if (lod != lod) lod = 0.0f;
+  // GL 4.5 section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter
+  // pair; GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
+  if (lod <= 0.0f) return sampleLevel(chain.levels[0], rgbTable, sampler, uv, sampler.magFilter);
+  if (!sampler.mipmaps) return sampleLevel(chain.levels[0], rgbTable, sampler, uv, sampler.minFilter);
+  const int q = static_cast<int>(chain.levels.size()) - 1;
+  if (sampler.mipFilter == TextureFilter::Nearest) {
+    // Section 8.14.3: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
+    const int d = lod <= 0.5f ? 0 : std::min(q, static_cast<int>(std::ceil(std::min(lod, 1e6f) + 0.5f)) - 1);
+    return sampleLevel(chain.levels[d], rgbTable, sampler, uv, sampler.minFilter);
+  }
+  if (lod >= static_cast<float>(q)) return sampleLevel(chain.levels[q], rgbTable, sampler, uv, sampler.minFilter);
+  const int d1 = static_cast<int>(std::floor(lod));
+  const float fraction = lod - static_cast<float>(d1);
+  const glm::vec4 a = sampleLevel(chain.levels[d1], rgbTable, sampler, uv, sampler.minFilter);
+  if (fraction == 0.0f) return a;
+  const glm::vec4 b = sampleLevel(chain.levels[d1 + 1], rgbTable, sampler, uv, sampler.minFilter);
+  return glm::mix(a, b, fraction);
+}
+
+SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::vector<TextureImage>& images,
+                             const std::vector<Material>& materials) {
+  textures_.resize(textures.size());
+  for (std::size_t t = 0; t < textures.size(); ++t) textures_[t].sampler = textures[t].sampler;
+  // Chains are per (image, colour space): two textures over one image share them.
+  std::vector<int> linearChainOfImage(images.size(), -1), srgbChainOfImage(images.size(), -1);
+  auto use = [&](const TextureRef& ref, ColorSpace colorSpace) {
+    if (!ref.present() || ref.texture >= static_cast<int>(textures.size())) return;
+    const int image = textures[ref.texture].image;
+    if (image < 0 || image >= static_cast<int>(images.size())) return;
+    std::vector<int>& chainOfImage = colorSpace == ColorSpace::Srgb ? srgbChainOfImage : linearChainOfImage;
+    if (chainOfImage[image] < 0) {
+      MipChain chain = buildMipChain(images[image], colorSpace);
+      if (chain.levels.empty()) return;
+      chainOfImage[image] = static_cast<int>(chains_.size());
+      chains_.push_back(std::move(chain));
+    }
+    Entry& entry = textures_[ref.texture];
+    (colorSpace == ColorSpace::Srgb ? entry.srgb : entry.linear) = chainOfImage[image];
+  };
+  for (const Material& material : materials) {
+    use(material.baseColorTexture, ColorSpace::Srgb);
+    use(material.metallicRoughnessTexture, ColorSpace::Linear);
+    use(material.normalTexture, ColorSpace::Linear);
+    use(material.occlusionTexture, ColorSpace::Linear);
+    use(material.emissiveTexture, ColorSpace::Srgb);
+  }
+}
+
+const MipChain* SceneTextures::chain(int texture, ColorSpace colorSpace) const {
+  if (texture < 0 || texture >= static_cast<int>(textures_.size())) return nullptr;
+  const int index = colorSpace == ColorSpace::Srgb ? textures_[texture].srgb : textures_[texture].linear;
+  return index < 0 ? nullptr : &chains_[index];
+}
+
+const TextureSampler& SceneTextures::sampler(int texture) const {
+  static const TextureSampler defaults;
+  if (texture < 0 || texture >= static_cast<int>(textures_.size())) return defaults;
+  return textures_[texture].sampler;
+}
+
+glm::vec4 SceneTextures::sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float footprintUv) const {
+  const MipChain* mipChain = chain(ref.texture, colorSpace);
+  if (mipChain == nullptr) return glm::vec4(1.0f);
+  // The transform scales the footprint as it scales uv (isotropically: the geometric mean).
+  const float footprint =
+      footprintUv * std::sqrt(std::abs(ref.transform.scale.x * ref.transform.scale.y));
+  return sampleMipChain(*mipChain, textures_[ref.texture].sampler, applyTransform(ref.transform, uv),
+                        textureLod(*mipChain, footprint));
+}
+
+}  // namespace iblkit
