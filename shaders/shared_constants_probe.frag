@@ -12,7 +12,10 @@ const float kValues[] = float[](
     kToneCurveAcesFitted, kToneCurveReinhard, kAttributePosition, kAttributeNormal, kAttributeAo,
     kAttributeBentNormal, kAttributeTransfer012, kAttributeTransfer345, kAttributeTransfer678,
     kTextureUnitLatLong, kTextureUnitSpecular, kTextureUnitBrdfLut, kTextureUnitPresent, kTextureUnitLive,
-    kTextureUnitReference, kTextureUnitColorMap, kRelMseEpsilon);
+    kTextureUnitReference, kTextureUnitColorMap, kRelMseEpsilon, kAttributeTexcoord0, kAttributeTexcoord1,
+    kAttributeTangent, kTextureUnitBaseColor, kTextureUnitMetallicRoughness, kTextureUnitNormal,
+    kTextureUnitOcclusion, kTextureUnitEmissive, kSlotBaseColor, kSlotMetallicRoughness, kSlotNormal, kSlotOcclusion,
+    kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend);
 
 void main() {
   int i = int(gl_FragCoord.x);
