@@ -19,6 +19,7 @@ BakedScene bakeInMemory(const fs::path& sceneFile, const InMemoryBakeOptions& op
             << " visibility rays per vertex)\n";
   VisibilitySettings settings;
   settings.rayCount = options.aoRays;
+  useSceneMaterials(settings, bake.scene);  // AO rays pass through masked texels
   attachVisibilityAttributes(bake.scene.meshes, bakeVertexVisibility(bake.scene.meshes, settings));
   bake.env = computeEnvironmentStages(environment, options.stages);
   return bake;

@@ -15,6 +15,7 @@
 #include "core/frame.h"
 #include "core/low_discrepancy.h"
 #include "core/sampling.h"
+#include "raytrace/alpha_filter.h"
 #include "raytrace/ray_offset.h"
 #include "raytrace/ray_scene.h"
 
@@ -294,6 +295,15 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
   VisibilityStatistics counts;
   RayScene scene;
   for (const Mesh& mesh : meshes) scene.addTriangleMesh(mesh.positions, mesh.indices);
+  if (!settings.materials.empty()) {
+    std::vector<const Mesh*> geometryMeshes;
+    for (const Mesh& mesh : meshes) geometryMeshes.push_back(&mesh);
+    auto filter = std::make_shared<AlphaFilter>(std::move(geometryMeshes), settings.materials, settings.textures,
+                                                kAllTextureSlots, /*cameraRays=*/false);
+    bool anyTest = false;
+    for (unsigned g = 0; g < filter->geometryCount(); ++g) anyTest = anyTest || filter->needs(g) != 0;
+    if (anyTest) scene.setAlphaFilter(std::move(filter));
+  }
   scene.commit();
   counts.buildSeconds = secondsSince(clock);
 
@@ -372,6 +382,11 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
   counts.bounceRays = bounceRays.load();
   if (statistics) *statistics = counts;
   return results;
+}
+
+void useSceneMaterials(VisibilitySettings& settings, const Scene& scene) {
+  settings.materials = scene.materials;
+  settings.textures = std::make_shared<SceneTextures>(scene.textures, scene.images, scene.materials);
 }
 
 std::vector<Ray> vertexVisibilityRays(const std::vector<Mesh>& meshes, const VisibilitySettings& settings) {

@@ -25,11 +25,15 @@
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
+#include <memory>
 #include <vector>
 
+#include "core/material.h"
 #include "core/mesh.h"
 #include "core/ray.h"
+#include "core/scene.h"
 #include "core/spherical_harmonics.h"
+#include "core/texture_sampling.h"
 
 namespace iblkit {
 
@@ -61,6 +65,13 @@ struct VisibilitySettings {
   // Diffuse albedo of each mesh, in [0, 1] (one grey value per mesh: the transfer vector is one
   // scalar per SH coefficient). Required (one per mesh) when bounces > 0.
   std::vector<float> albedo;
+  // The meshes' materials (Mesh::material indexes them) and the scene's textures, for alpha: the
+  // rays (visibility and bounces) pass through what a MASK or BLEND material says is not there,
+  // through the very AlphaFilter the tracer's shadow rays use (raytrace/alpha_filter.h, finest
+  // texture level; the baker traces no camera rays, so doubleSided changes nothing). Empty
+  // materials: every mesh is opaque. useSceneMaterials fills both from a scene.
+  std::vector<Material> materials;
+  std::shared_ptr<const SceneTextures> textures;
   // Called with (vertices done, total) from the worker threads while the bake runs, possibly
   // concurrently: it must be thread-safe. May be empty. Each bounce pass visits every vertex
   // again, so total = vertices * (1 + bounces).
@@ -106,6 +117,10 @@ struct VisibilityStatistics {
 std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes,
                                                  const VisibilitySettings& settings,
                                                  VisibilityStatistics* statistics = nullptr);
+
+// Sets settings.materials and settings.textures to the scene's (its materials, SceneTextures of
+// its textures), so masked texels let the bake's rays through.
+void useSceneMaterials(VisibilitySettings& settings, const Scene& scene);
 
 // The visibility rays bakeVertexVisibility traces (after one-ring rejection: the directions
 // dropped after kMaxRedraws are left out), vertex by vertex in the bake's order, for benchmarks

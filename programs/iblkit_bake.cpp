@@ -169,6 +169,7 @@ int bake(const Options& options) {
   settings.bounces = options.bounces;
   if (options.bounces > 0)
     for (const Mesh& mesh : scene.meshes) settings.albedo.push_back(diffuseAlbedo(scene, mesh));
+  useSceneMaterials(settings, scene);  // AO rays pass through masked texels
   settings.progress = progressBar("visibility");
   VisibilityStatistics statistics;
   const std::vector<MeshVisibility> visibility = bakeVertexVisibility(scene.meshes, settings, &statistics);

@@ -40,6 +40,8 @@ struct Options {
   int threads = 0;
   float exposure = 0.0f;
   std::optional<float> phongExponent;
+  bool noTextures = false;
+  float textureFootprint = kDefaultTextureFootprint;
 };
 
 // Fails early, before a long render, when an output cannot be written.
@@ -108,6 +110,7 @@ int run(const Options& options, const CLI::App& app) {
   settings.seed = options.seed;
   settings.threads = options.threads;
   settings.filter = filter;
+  settings.textureFootprint = options.textureFootprint;
 
   const EnvironmentMap environment = loadSceneEnvironment(scene, options.environment);
   const EnvironmentSampler environmentSampler(environment, options.misCompensation);
@@ -117,7 +120,7 @@ int run(const Options& options, const CLI::App& app) {
 
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
   const Camera camera = sceneCamera(scene, aspect);
-  const RenderScene renderScene(std::move(scene));
+  const RenderScene renderScene(std::move(scene), options.noTextures ? 0u : kAllTextureSlots);
   const Integrator integrator(renderScene, environment, environmentSampler, integratorSettings);
 
   const bool terminal = isatty(STDERR_FILENO) != 0;
@@ -170,6 +173,12 @@ int main(int argc, char** argv) {
   app.add_option("--height", options.height, "image height (default: the scene's)");
   app.add_option("--seed", options.seed, "random seed");
   app.add_option("--threads", options.threads, "worker threads (0: all)");
+  app.add_flag("--no-textures", options.noTextures,
+               "trace the materials' constant factors (every texture slot off; alpha from the factor)");
+  app.add_option("--texture-footprint", options.textureFootprint,
+                 "camera ray cone spread in pixels (texture level of detail; 0.5 = the report's 2x2 "
+                 "supersampled engine frame, 0 = finest level)")
+      ->check(CLI::NonNegativeNumber);
   addEnvironmentOptions(app, options.environment);
   addNameOption(app, "--integrator", options.integrator, kIntegratorNames, "integrator");
   addNameOption(app, "--env-sampling", options.envSampling, kEnvSamplingNames, "strategy");

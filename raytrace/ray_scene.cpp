@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "core/error.h"
 #include "raytrace/ray_offset.h"
@@ -49,6 +50,35 @@ void checkEmbree() {
   const std::string message = std::move(tEmbreeError);
   tEmbreeError.clear();
   fail("Embree", message);
+}
+
+// Embree's intersect context extended by the query (Embree 3 passes the context pointer to filter
+// callbacks unchanged, and documents embedding it first in a larger struct for this purpose).
+struct QueryContext {
+  RTCIntersectContext context;
+  const RayQuery* query;
+};
+static_assert(offsetof(QueryContext, context) == 0);
+
+// The filter callback of intersect and occluded queries alike: reject (valid = 0) the candidates
+// the AlphaFilter says are not there. Embree passes N candidates (1 for rtcIntersect1).
+void filterCandidates(const RTCFilterFunctionNArguments* args) {
+  const auto* filter = static_cast<const AlphaFilter*>(args->geometryUserPtr);
+  const RayQuery& query = *reinterpret_cast<const QueryContext*>(args->context)->query;
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    RTCRayN* ray = args->ray;
+    RTCHitN* hit = args->hit;
+    const unsigned n = args->N;
+    const glm::vec3 origin(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
+    const glm::vec3 direction(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
+    const glm::vec3 ng(RTCHitN_Ng_x(hit, n, i), RTCHitN_Ng_y(hit, n, i), RTCHitN_Ng_z(hit, n, i));
+    // During a filter call the ray's tfar holds the candidate's distance.
+    if (!filter->accept(RTCHitN_geomID(hit, n, i), RTCHitN_primID(hit, n, i),
+                        glm::vec2(RTCHitN_u(hit, n, i), RTCHitN_v(hit, n, i)), RTCRayN_tfar(ray, n, i), origin,
+                        direction, ng, query))
+      args->valid[i] = 0;
+  }
 }
 
 struct GeometryRelease {
@@ -115,6 +145,25 @@ unsigned RayScene::addTriangleMesh(std::span<const glm::vec3> positions, std::sp
   return id;
 }
 
+void RayScene::setAlphaFilter(std::shared_ptr<const AlphaFilter> filter) {
+  if (filter && filter->geometryCount() != meshes_.size())
+    fail("ray scene", "the alpha filter has " + std::to_string(filter->geometryCount()) + " geometries, the scene " +
+                          std::to_string(meshes_.size()));
+  clearEmbreeError();
+  for (unsigned id = 0; id < meshes_.size(); ++id) {
+    RTCGeometry geometry = rtcGetGeometry(scene_.get(), id);
+    const unsigned needs = filter ? filter->needs(id) : 0u;
+    rtcSetGeometryUserData(geometry, needs ? const_cast<AlphaFilter*>(filter.get()) : nullptr);
+    rtcSetGeometryIntersectFilterFunction(geometry, needs ? filterCandidates : nullptr);
+    rtcSetGeometryOccludedFilterFunction(geometry,
+                                         needs & AlphaFilter::kAlphaTest ? filterCandidates : nullptr);
+    rtcCommitGeometry(geometry);
+  }
+  checkEmbree();
+  filter_ = std::move(filter);
+  committed_ = false;
+}
+
 void RayScene::commit() {
   clearEmbreeError();
   rtcCommitScene(scene_.get());
@@ -126,11 +175,11 @@ void RayScene::requireCommitted(const char* query) const {
   if (!committed_) fail("ray scene", std::string(query) + " called before commit()");
 }
 
-Hit RayScene::intersect(const Ray& ray, float tmin, float tmax) const {
+Hit RayScene::intersect(const Ray& ray, float tmin, float tmax, const RayQuery& rayQuery) const {
   requireCommitted("intersect");
   // A context per call: it carries no shared state, which is what makes concurrent queries safe.
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  QueryContext context{{}, &rayQuery};
+  rtcInitIntersectContext(&context.context);
   RTCRayHit query{};
   query.ray.org_x = ray.origin.x;
   query.ray.org_y = ray.origin.y;
@@ -143,7 +192,7 @@ Hit RayScene::intersect(const Ray& ray, float tmin, float tmax) const {
   query.ray.mask = ~0u;
   query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_.get(), &context, &query);
+  rtcIntersect1(scene_.get(), &context.context, &query);
 
   Hit hit;
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
@@ -161,10 +210,11 @@ Hit RayScene::intersect(const Ray& ray, float tmin, float tmax) const {
   return hit;
 }
 
-bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float tmax) const {
+bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float tmax,
+                        const RayQuery& rayQuery) const {
   requireCommitted("occluded");
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  QueryContext context{{}, &rayQuery};
+  rtcInitIntersectContext(&context.context);
   RTCRay query{};
   query.org_x = origin.x;
   query.org_y = origin.y;
@@ -175,7 +225,7 @@ bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float
   query.tnear = tmin;
   query.tfar = tmax;
   query.mask = ~0u;
-  rtcOccluded1(scene_.get(), &context, &query);
+  rtcOccluded1(scene_.get(), &context.context, &query);
   // Embree marks an occluded ray by setting tfar to -infinity.
   return query.tfar == -std::numeric_limits<float>::infinity();
 }

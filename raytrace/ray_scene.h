@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/ray.h"
+#include "raytrace/alpha_filter.h"
 
 namespace iblkit {
 
@@ -59,6 +60,14 @@ class RayScene {
   // committed again before the next query.
   unsigned addTriangleMesh(std::span<const glm::vec3> positions, std::span<const uint32_t> indices);
 
+  // Attaches `filter` (alpha_filter.h) to the geometries whose material needs a test (its
+  // needs() bits): an intersect filter callback for alpha or back-face culling, an occluded one
+  // for alpha, on the geometries added so far, whose ids the filter's geometry table must follow.
+  // Others stay without callbacks. The scene keeps the filter alive; commit() again before the
+  // next query. Throws Error("ray scene: ...") when the filter's table does not have one entry
+  // per geometry.
+  void setAlphaFilter(std::shared_ptr<const AlphaFilter> filter);
+
   // Builds the acceleration structure. Build quality HIGH (Embree's SAH builder with spatial
   // splits: slower to build, faster to trace, right for scenes built once and traced millions of
   // times). The scene is built with RTC_SCENE_FLAG_ROBUST: Embree then uses robust traversal and
@@ -70,12 +79,14 @@ class RayScene {
 
   // Closest hit along the ray with tmin <= t <= tmax (rtcIntersect1). Thread-safe after commit();
   // throws Error if the scene was changed and not committed.
-  Hit intersect(const Ray& ray, float tmin, float tmax) const;
+  // `query` tells the alpha filter the ray's kind and cone (a default query: a secondary ray, the
+  // finest texture level); without a filter it changes nothing.
+  Hit intersect(const Ray& ray, float tmin, float tmax, const RayQuery& query = {}) const;
 
   // True if anything lies along origin + t * direction, tmin <= t <= tmax (rtcOccluded1, which
   // stops at the first hit found: cheaper than intersect for shadow and ambient-occlusion rays).
   // Thread-safe after commit(); throws Error if the scene was changed and not committed.
-  bool occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float tmax) const;
+  bool occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float tmax, const RayQuery& query = {}) const;
 
   // The hit point recomputed from the triangle's corners and the barycentrics, which is more
   // accurate than origin + t * direction (Wächter and Binder, Ray Tracing Gems chapter 6): the
@@ -112,6 +123,7 @@ class RayScene {
   std::unique_ptr<RTCDeviceTy, DeviceRelease> device_;
   std::unique_ptr<RTCSceneTy, SceneRelease> scene_;
   std::vector<MeshBuffers> meshes_;
+  std::shared_ptr<const AlphaFilter> filter_;
   Bounds bounds_;
   bool committed_ = false;
 };

@@ -31,7 +31,7 @@ glm::vec3 sideFacing(const glm::vec3& geometricNormal, const glm::vec3& directio
 }
 
 void recordFirstHit(const SurfacePoint& point, float distance, CameraSample& result) {
-  result.albedo = point.material->baseColor;
+  result.albedo = point.baseColor;
   result.normal = point.shadingNormal;
   result.distance = distance;
   result.objectCoverage = point.isGround ? 0.0f : 1.0f;
@@ -54,10 +54,10 @@ Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environme
       environmentSampler_(environmentSampler),
       settings_(settings) {}
 
-glm::vec3 Integrator::evalReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+glm::vec3 Integrator::evalReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
                                      const glm::vec3& wo, const glm::vec3& wi) const {
   if (brdf) return brdf->eval(wi);
-  return material.baseColor * evalPhongLobe(*settings_.phong, n, wo, wi);
+  return baseColor * evalPhongLobe(*settings_.phong, n, wo, wi);
 }
 
 float Integrator::pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, const glm::vec3& wo,
@@ -65,32 +65,33 @@ float Integrator::pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, con
   return brdf ? brdf->pdf(wi) : pdfPhongLobe(*settings_.phong, n, wo, wi);
 }
 
-BrdfSample Integrator::sampleReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+BrdfSample Integrator::sampleReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
                                         const glm::vec3& wo, glm::vec2 u, float uLobe) const {
   if (brdf) return brdf->sample(u, uLobe);
   BrdfSample sample = samplePhongLobe(*settings_.phong, n, wo, u);
-  sample.weight *= material.baseColor;
+  sample.weight *= baseColor;
   return sample;
 }
 
-Hit Integrator::intersect(const Ray& ray) const {
+Hit Integrator::intersect(const Ray& ray, const RayQuery& query) const {
   if (recorder_) [[unlikely]]
     recorder_->record({ray.origin, 0.0f, ray.direction, kInfinity, false});
-  return scene_.rays().intersect(ray, 0.0f, kInfinity);
+  return scene_.rays().intersect(ray, 0.0f, kInfinity, query);
 }
 
-bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax) const {
+bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax,
+                          const RayQuery& query) const {
   if (recorder_) [[unlikely]]
     recorder_->record({origin, 0.0f, direction, tmax, true});
-  return scene_.rays().occluded(origin, direction, 0.0f, tmax);
+  return scene_.rays().occluded(origin, direction, 0.0f, tmax, query);
 }
 
-CameraSample Integrator::trace(const Ray& cameraRay, PixelSampler& sampler) const {
+CameraSample Integrator::trace(const Ray& cameraRay, PixelSampler& sampler, const RayCone& cone) const {
   CameraSample result;
   if (settings_.kind == IntegratorKind::AmbientOcclusion)
-    traceOcclusion(cameraRay, sampler, result);
+    traceOcclusion(cameraRay, sampler, cone, result);
   else
-    traceRadiance(cameraRay, sampler, result);
+    traceRadiance(cameraRay, sampler, cone, result);
   return result;
 }
 
@@ -119,7 +120,7 @@ Integrator::LightSample Integrator::sampleLight(const glm::vec3& n, glm::vec2 u)
   return sample;
 }
 
-void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& result) const {
+void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, CameraSample& result) const {
   const EnvSampling strategy = settings_.envSampling;
   const bool sampleLights = strategy != EnvSampling::Brdf;
   const bool combine = strategy == EnvSampling::Mis;
@@ -129,7 +130,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
   float previousPdf = 0.0f;   // BRDF pdf of the ray being traced
   bool previousDelta = true;  // the camera ray, like a mirror ray, sees the environment directly
   for (int depth = 0;; ++depth) {
-    const Hit hit = intersect(ray);
+    const Hit hit = intersect(ray, RayQuery{depth == 0 ? RayKind::Camera : RayKind::Secondary, cone});
     ++result.rays;
     if (!hit.hit) {
       // The environment seen by a BRDF-sampled ray counts when BRDF sampling is a strategy of
@@ -145,10 +146,12 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
     }
 
     const glm::vec3 wo = -ray.direction;
-    const SurfacePoint point = scene_.surfacePoint(hit, wo);
-    const Material& material = *point.material;
+    const SurfacePoint point = scene_.surfacePoint(hit, wo, cone);
     if (depth == 0) recordFirstHit(point, hit.t, result);
-    result.radiance += throughput * material.emissive;
+    result.radiance += throughput * point.emissive;
+    // The texture footprint rule after a bounce: the cone keeps the camera's spread and starts
+    // from its width at this vertex (docs/reference-tracer.md "Texture filtering").
+    cone.width = cone.widthAt(hit.t);
     if (depth == maxDepth) return;
 
     // Every vertex draws the same numbers in the same order, used or not, so the dimensions of
@@ -160,7 +163,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
     const glm::vec3 n = point.shadingNormal, ng = point.geometricNormal;
     // The glTF BRDF at this vertex, prepared once for its eval, pdf and sample calls (none with --phong).
     std::optional<BrdfAtPoint> gltfBrdf;
-    if (!settings_.phong) gltfBrdf.emplace(*point.lobes, n, wo);
+    if (!settings_.phong) gltfBrdf.emplace(point.lobes, n, wo);
     const BrdfAtPoint* brdf = gltfBrdf ? &*gltfBrdf : nullptr;
 
     if (sampleLights) {
@@ -169,10 +172,11 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
       // Directions below the triangle's plane are blocked by the surface itself.
       if (light.pdf > 0.0f && cosTheta > 0.0f && glm::dot(light.direction, ng) > 0.0f &&
           maxComponent(light.radiance) > 0.0f) {
-        const glm::vec3 f = evalReflection(brdf, material, n, wo, light.direction);
+        const glm::vec3 f = evalReflection(brdf, point.baseColor, n, wo, light.direction);
         if (maxComponent(f) > 0.0f) {
           ++result.rays;
-          if (!occluded(offsetRayOrigin(point.position, ng), light.direction, kInfinity)) {
+          if (!occluded(offsetRayOrigin(point.position, ng), light.direction, kInfinity,
+                        RayQuery{RayKind::Secondary, cone})) {
             const float weight =
                 combine ? powerHeuristic(light.pdf, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
             result.radiance += throughput * f * light.radiance * (cosTheta * weight / light.pdf);
@@ -181,7 +185,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
       }
     }
 
-    const BrdfSample scattered = sampleReflection(brdf, material, n, wo, uBrdf, uLobe);
+    const BrdfSample scattered = sampleReflection(brdf, point.baseColor, n, wo, uBrdf, uLobe);
     if (!scattered.valid()) return;
     throughput *= scattered.weight;
     previousPdf = scattered.pdf;
@@ -196,14 +200,15 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& res
   }
 }
 
-void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSample& result) const {
-  const Hit hit = intersect(ray);
+void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, const RayCone& cone,
+                                CameraSample& result) const {
+  const Hit hit = intersect(ray, RayQuery{RayKind::Camera, cone});
   ++result.rays;
   if (!hit.hit) {
     result.radiance = glm::vec3(1.0f);
     return;
   }
-  const SurfacePoint point = scene_.surfacePoint(hit, -ray.direction);
+  const SurfacePoint point = scene_.surfacePoint(hit, -ray.direction, cone);
   recordFirstHit(point, hit.t, result);
   ++result.rays;
   const OcclusionSample sample =

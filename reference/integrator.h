@@ -93,8 +93,12 @@ class Integrator {
   // must outlive the integrator's use of it. For the ray-replay benchmark only.
   void recordRays(RayRecorder* recorder) { recorder_ = recorder; }
 
-  // What the camera ray (unit direction) sees, with random numbers from `sampler`.
-  CameraSample trace(const Ray& cameraRay, PixelSampler& sampler) const;
+  // What the camera ray (unit direction) sees, with random numbers from `sampler`. `cone` is the
+  // camera ray's footprint (texture levels; the renderer's is a fraction of the pixel, zero reads
+  // the finest level); the path's later rays continue it (docs/reference-tracer.md "Texture
+  // filtering"). The camera ray is a RayKind::Camera query: it passes through the back faces of
+  // single-sided materials.
+  CameraSample trace(const Ray& cameraRay, PixelSampler& sampler, const RayCone& cone = {}) const;
 
  private:
   struct LightSample {
@@ -106,17 +110,17 @@ class Integrator {
   LightSample sampleLight(const glm::vec3& n, glm::vec2 u) const;
   // The surface reflection model: the glTF BRDF prepared at the vertex (`brdf`), or, when it is
   // null (settings_.phong set), the Phong lobe.
-  glm::vec3 evalReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+  glm::vec3 evalReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
                            const glm::vec3& wo, const glm::vec3& wi) const;
   float pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, const glm::vec3& wo,
                       const glm::vec3& wi) const;
-  BrdfSample sampleReflection(const BrdfAtPoint* brdf, const Material& material, const glm::vec3& n,
+  BrdfSample sampleReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
                               const glm::vec3& wo, glm::vec2 u, float uLobe) const;
   // RayScene::intersect / occluded, logged when a recorder is set.
-  Hit intersect(const Ray& ray) const;
-  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax) const;
-  void traceRadiance(Ray ray, PixelSampler& sampler, CameraSample& result) const;
-  void traceOcclusion(const Ray& ray, PixelSampler& sampler, CameraSample& result) const;
+  Hit intersect(const Ray& ray, const RayQuery& query) const;
+  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax, const RayQuery& query) const;
+  void traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, CameraSample& result) const;
+  void traceOcclusion(const Ray& ray, PixelSampler& sampler, const RayCone& cone, CameraSample& result) const;
 
   const RenderScene& scene_;
   const EnvironmentMap& environment_;

@@ -3,10 +3,31 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/surface_material.h"
+#include "core/tangent_frames.h"
+#include "raytrace/alpha_filter.h"
 
 namespace iblkit {
 
-RenderScene::RenderScene(Scene scene) : scene_(std::move(scene)) {
+namespace {
+
+// Whether a slot that shades (occlusion does not, in the tracer) reads a texture.
+bool shadesWithTextures(const Material& m, unsigned slots) {
+  return ((slots & kSlotBaseColor) && m.baseColorTexture.present()) ||
+         ((slots & kSlotMetallicRoughness) && m.metallicRoughnessTexture.present()) ||
+         ((slots & kSlotNormal) && m.normalTexture.present()) ||
+         ((slots & kSlotEmissive) && m.emissiveTexture.present());
+}
+
+template <class T>
+T interpolate(const std::vector<T>& values, const std::uint32_t* corner, float u, float v) {
+  return (1.0f - u - v) * values[corner[0]] + u * values[corner[1]] + v * values[corner[2]];
+}
+
+}  // namespace
+
+RenderScene::RenderScene(Scene scene, unsigned textureSlots) : scene_(std::move(scene)), slots_(textureSlots) {
+  std::vector<const Mesh*> geometryMeshes;
   for (unsigned i = 0; i < scene_.meshes.size(); ++i) {
     Mesh& mesh = scene_.meshes[i];
     if (mesh.material < 0 || static_cast<std::size_t>(mesh.material) >= scene_.materials.size())
@@ -14,22 +35,35 @@ RenderScene::RenderScene(Scene scene) : scene_(std::move(scene)) {
                             ", but the scene has " + std::to_string(scene_.materials.size()));
     if (mesh.triangleCount() == 0) continue;
     repairNormals(mesh);
+    const Material& material = scene_.materials[static_cast<std::size_t>(mesh.material)];
+    // The loaders generate tangents; a scene made in code may not have them.
+    if (material.normalTexture.present() && mesh.tangents.size() != mesh.positions.size())
+      generateTangents(mesh, material.normalTexture.texCoord);
     const unsigned geometry = rays_.addTriangleMesh(mesh.positions, mesh.indices);
     meshOfGeometry_.resize(geometry + 1);
     meshOfGeometry_[geometry] = i;
   }
+  textures_ = scene_.textures.empty()
+                  ? std::make_shared<SceneTextures>()
+                  : std::make_shared<SceneTextures>(scene_.textures, scene_.images, scene_.materials);
+  for (unsigned g = 0; g < meshOfGeometry_.size(); ++g) geometryMeshes.push_back(&scene_.meshes[meshOfGeometry_[g]]);
+  auto filter = std::make_shared<AlphaFilter>(std::move(geometryMeshes), scene_.materials, textures_, slots_);
+  bool anyTest = false;
+  for (unsigned g = 0; g < filter->geometryCount(); ++g) anyTest = anyTest || filter->needs(g) != 0;
+  if (anyTest) rays_.setAlphaFilter(std::move(filter));
   rays_.commit();
   lobes_.reserve(scene_.materials.size());
-  for (const Material& material : scene_.materials) lobes_.push_back(brdfLobes(material));
+  for (const Material& material : scene_.materials) {
+    lobes_.push_back(brdfLobes(material));
+    textured_.push_back(shadesWithTextures(material, slots_));
+  }
 }
 
-SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo) const {
+SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, const RayCone& cone) const {
   const Mesh& mesh = scene_.meshes[meshOfGeometry_[hit.geomId]];
-  const std::size_t corner = 3 * static_cast<std::size_t>(hit.primId);
+  const std::uint32_t* corner = &mesh.indices[3 * static_cast<std::size_t>(hit.primId)];
   const float u = hit.barycentrics.x, v = hit.barycentrics.y;
-  const glm::vec3 interpolated = (1.0f - u - v) * mesh.normals[mesh.indices[corner]] +
-                                 u * mesh.normals[mesh.indices[corner + 1]] +
-                                 v * mesh.normals[mesh.indices[corner + 2]];
+  const glm::vec3 interpolated = interpolate(mesh.normals, corner, u, v);
 
   SurfacePoint point;
   point.position = rays_.surfacePoint(hit);
@@ -37,11 +71,50 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo) cons
       glm::dot(hit.geometricNormal, wo) < 0.0f ? -hit.geometricNormal : hit.geometricNormal;
   const float length = glm::length(interpolated);
   glm::vec3 shading = length > 0.0f ? interpolated / length : point.geometricNormal;
-  if (glm::dot(shading, point.geometricNormal) < 0.0f) shading = -shading;
-  point.shadingNormal = glm::dot(shading, wo) > 0.0f ? shading : point.geometricNormal;
-  point.material = &scene_.materials[static_cast<std::size_t>(mesh.material)];
-  point.lobes = &lobes_[static_cast<std::size_t>(mesh.material)];
+  const bool backSide = glm::dot(shading, point.geometricNormal) < 0.0f;
+  if (backSide) shading = -shading;
+  const auto materialIndex = static_cast<std::size_t>(mesh.material);
+  const Material& material = scene_.materials[materialIndex];
+  point.material = &material;
   point.isGround = mesh.isGround;
+
+  if (!textured_[materialIndex]) {
+    point.baseColor = material.baseColor;
+    point.emissive = material.emissive;
+    point.lobes = lobes_[materialIndex];
+  } else {
+    SurfaceInputs inputs;
+    inputs.slots = slots_;
+    if (mesh.texcoords.size() == mesh.positions.size()) inputs.texcoords[0] = interpolate(mesh.texcoords, corner, u, v);
+    if (mesh.texcoords1.size() == mesh.positions.size())
+      inputs.texcoords[1] = interpolate(mesh.texcoords1, corner, u, v);
+    inputs.normal = shading;
+    if (mesh.tangents.size() == mesh.positions.size()) {
+      const glm::vec4 t = interpolate(mesh.tangents, corner, u, v);
+      // Gram-Schmidt against the normal: interpolation leaves the tangent off the plane of n.
+      glm::vec3 tangent = glm::vec3(t) - glm::dot(glm::vec3(t), shading) * shading;
+      const float tangentLength = glm::length(tangent);
+      if (tangentLength > 0.0f) {
+        tangent /= tangentLength;
+        // The back face of a double-sided surface: the tangent turns with the normal and w stays,
+        // so the bitangent w cross(n, t) keeps its direction (SurfaceInputs).
+        if (backSide) tangent = -tangent;
+        inputs.tangent = glm::vec4(tangent, mesh.tangents[corner[0]].w < 0.0f ? -1.0f : 1.0f);
+      }
+    }
+    const float width = cone.widthAt(hit.t);
+    if (width > 0.0f) {
+      const float cosine = glm::dot(wo, point.geometricNormal);
+      for (int set = 0; set < 2; ++set)
+        inputs.footprintUv[set] = textureFootprint(width, uvPerWorldArea(mesh, hit.primId, set), cosine);
+    }
+    const SurfaceMaterial surface = evaluateSurfaceMaterial(material, *textures_, inputs);
+    point.baseColor = surface.material.baseColor;
+    point.emissive = surface.material.emissive;
+    point.lobes = brdfLobes(surface.material);
+    shading = surface.normal;
+  }
+  point.shadingNormal = glm::dot(shading, wo) > 0.0f ? shading : point.geometricNormal;
   return point;
 }
 

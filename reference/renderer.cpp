@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@ void checkSettings(const RenderSettings& settings) {
   if (!inRange(settings.samplesPerPixel, 1, kMaxSamplesPerPixel))
     fail("render", "samples per pixel " + std::to_string(settings.samplesPerPixel) + " is outside 1.." +
                        std::to_string(kMaxSamplesPerPixel));
+  if (!(settings.textureFootprint >= 0.0f) || !std::isfinite(settings.textureFootprint))
+    fail("render", "texture footprint " + std::to_string(settings.textureFootprint) + " is not finite and >= 0");
   if (!inRange(settings.threads, 0, kMaxRenderThreads))
     fail("render", "thread count " + std::to_string(settings.threads) + " is outside 0.." +
                        std::to_string(kMaxRenderThreads));
@@ -72,6 +75,10 @@ RenderResult resolve(const std::vector<PixelSums>& sums, const RenderSettings& s
 
 }  // namespace
 
+RayCone cameraRayCone(const Camera& camera, int height, float footprint) {
+  return RayCone{0.0f, footprint * 2.0f * std::tan(0.5f * camera.yfovRadians) / float(std::max(height, 1))};
+}
+
 RenderResult render(const Integrator& integrator, const Camera& camera, const RenderSettings& settings,
                     const RenderProgress& progress) {
   checkSettings(settings);
@@ -88,6 +95,7 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
 
   const PixelFilter filter(settings.filter);
   const PrimaryRays primaryRays(camera, w, h);
+  const RayCone cone = cameraRayCone(camera, h, settings.textureFootprint);
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   int samples = 0;
   do {
@@ -107,7 +115,7 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
                     for (int i = first; i < last; ++i) {
                       PixelSampler sampler(seeds, static_cast<std::uint32_t>(i));
                       const glm::vec2 raster = glm::vec2(x, y) + filter.sample(sampler.next2D());
-                      const CameraSample c = integrator.trace(primaryRays(raster), sampler);
+                      const CameraSample c = integrator.trace(primaryRays(raster), sampler, cone);
                       const glm::dvec3 radiance(c.radiance);
                       s.radiance += radiance;
                       s.radianceSquared += radiance * radiance;

@@ -22,6 +22,12 @@ inline constexpr int kMaxSamplesPerPixel = 1 << 24;
 // The most threads a render takes (TBB crashes on an arena of 70,000).
 inline constexpr int kMaxRenderThreads = 1024;
 
+inline constexpr float kDefaultTextureFootprint = 0.5f;
+
+// The camera ray cone of a width x height image through `camera`: width 0 at the eye, spread
+// `footprint` pixels' angular size (Akenine-Möller et al. 2019, eq. 30, small-angle form).
+RayCone cameraRayCone(const Camera& camera, int height, float footprint);
+
 struct RenderSettings {
   int width = 0, height = 0;
   // Samples per pixel; with timeSeconds > 0, the size of each pass.
@@ -31,6 +37,12 @@ struct RenderSettings {
   std::uint32_t seed = 0;
   int threads = 0;                                // 0: all hardware threads, at most kMaxRenderThreads
   PixelFilterKind filter = PixelFilterKind::Box;  // pixel_filter.h
+  // The camera ray cone's spread as a fraction of the pixel's angular size at the image centre
+  // (2 tan(fov / 2) / height): the texture footprint (docs/reference-tracer.md "Texture
+  // filtering"). The default, half a pixel, is the report's engine frame: 2 x 2 supersampled, so
+  // its derivatives, and so its texture levels, are those of half an output pixel. 0 reads the
+  // finest level everywhere.
+  float textureFootprint = kDefaultTextureFootprint;
 };
 
 struct RenderResult {

@@ -1,0 +1,108 @@
+#include "raytrace/alpha_filter.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "core/surface_material.h"
+
+namespace iblkit {
+
+namespace {
+
+// SplitMix64's finaliser (Steele, Lea and Flood 2014): every input bit affects every output bit.
+std::uint64_t mixBits(std::uint64_t x) {
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+std::uint64_t mixIn(std::uint64_t h, float value) { return mixBits(h ^ std::bit_cast<std::uint32_t>(value)); }
+
+}  // namespace
+
+float textureFootprint(float width, float uvPerWorldArea, float cosine) {
+  const float c = std::max(std::abs(cosine), 1.0f / kMaxTextureAnisotropy);
+  return width * std::sqrt(uvPerWorldArea) / c;
+}
+
+float uvPerWorldArea(const Mesh& mesh, std::size_t triangle, int set) {
+  const std::vector<glm::vec2>& uvs = set == 0 ? mesh.texcoords : mesh.texcoords1;
+  if (uvs.size() != mesh.positions.size()) return 0.0f;
+  const std::uint32_t* corner = &mesh.indices[3 * triangle];
+  const glm::vec3 p0 = mesh.positions[corner[0]];
+  const float world = glm::length(glm::cross(mesh.positions[corner[1]] - p0, mesh.positions[corner[2]] - p0));
+  const glm::vec2 a = uvs[corner[1]] - uvs[corner[0]], b = uvs[corner[2]] - uvs[corner[0]];
+  const float uv = std::abs(a.x * b.y - a.y * b.x);
+  return world > 0.0f && std::isfinite(uv / world) ? uv / world : 0.0f;
+}
+
+AlphaFilter::AlphaFilter(std::vector<const Mesh*> geometryMeshes, const std::vector<Material>& materials,
+                         std::shared_ptr<const SceneTextures> textures, unsigned slots, bool cameraRays)
+    : textures_(std::move(textures)), slots_(slots) {
+  if (!textures_) textures_ = std::make_shared<SceneTextures>();
+  geometries_.resize(geometryMeshes.size());
+  for (std::size_t g = 0; g < geometryMeshes.size(); ++g) {
+    Geometry& geometry = geometries_[g];
+    geometry.mesh = geometryMeshes[g];
+    if (!geometry.mesh || geometry.mesh->material < 0 ||
+        static_cast<std::size_t>(geometry.mesh->material) >= materials.size())
+      continue;
+    geometry.material = materials[static_cast<std::size_t>(geometry.mesh->material)];
+    const Material& material = geometry.material;
+    const TextureRef& base = material.baseColorTexture;
+    geometry.alphaFromTexture = (slots & kSlotBaseColor) && base.present() && !textures_->empty() &&
+                                textures_->chain(base.texture, ColorSpace::Srgb) != nullptr;
+    // A constant alpha decides once for the whole geometry: present everywhere needs no test.
+    bool partial = geometry.alphaFromTexture;
+    if (material.alphaMode == AlphaMode::Mask) partial = partial || !(material.alpha >= material.alphaCutoff);
+    if (material.alphaMode == AlphaMode::Blend) partial = partial || material.alpha < 1.0f;
+    if (material.alphaMode != AlphaMode::Opaque && partial) geometry.needs |= kAlphaTest;
+    if (!material.doubleSided && cameraRays) geometry.needs |= kCullCameraBackFaces;
+  }
+}
+
+float AlphaFilter::coverageHash(const glm::vec3& origin, const glm::vec3& direction, unsigned geometry,
+                                unsigned primitive) {
+  std::uint64_t h = mixBits((std::uint64_t(geometry) << 32) | primitive);
+  for (int i = 0; i < 3; ++i) h = mixIn(mixIn(h, origin[i]), direction[i]);
+  return float(h >> 40) * 0x1p-24f;
+}
+
+bool AlphaFilter::accept(unsigned geometry, unsigned primitive, glm::vec2 barycentrics, float t,
+                         const glm::vec3& origin, const glm::vec3& direction,
+                         const glm::vec3& geometricNormal, const RayQuery& query) const {
+  const Geometry& g = geometries_[geometry];
+  if ((g.needs & kCullCameraBackFaces) && query.kind == RayKind::Camera &&
+      glm::dot(direction, geometricNormal) > 0.0f)
+    return false;
+  if (!(g.needs & kAlphaTest)) return true;
+
+  const Material& material = g.material;
+  float alpha = material.alpha;
+  if (g.alphaFromTexture) {
+    const Mesh& mesh = *g.mesh;
+    const TextureRef& ref = material.baseColorTexture;
+    const std::vector<glm::vec2>& uvs = ref.texCoord == 1 ? mesh.texcoords1 : mesh.texcoords;
+    SurfaceInputs inputs;
+    inputs.slots = slots_;
+    if (uvs.size() == mesh.positions.size()) {
+      const std::uint32_t* corner = &mesh.indices[3 * std::size_t(primitive)];
+      const float u = barycentrics.x, v = barycentrics.y;
+      inputs.texcoords[ref.texCoord == 1 ? 1 : 0] =
+          (1.0f - u - v) * uvs[corner[0]] + u * uvs[corner[1]] + v * uvs[corner[2]];
+    }
+    const float width = query.cone.widthAt(t * glm::length(direction));
+    if (width > 0.0f) {
+      const float cosine = glm::dot(glm::normalize(direction), glm::normalize(geometricNormal));
+      const int set = ref.texCoord == 1 ? 1 : 0;
+      inputs.footprintUv[set] = textureFootprint(width, uvPerWorldArea(mesh, primitive, set), cosine);
+    }
+    alpha = surfaceAlpha(material, *textures_, inputs);
+  }
+  const float u = material.alphaMode == AlphaMode::Blend ? coverageHash(origin, direction, geometry, primitive)
+                                                          : 0.0f;
+  return surfacePresent(material, alpha, u);
+}
+
+}  // namespace iblkit

@@ -1,0 +1,109 @@
+#pragma once
+// Which candidate hits of a ray count: the glTF alpha mode and doubleSided rule of every ray the
+// reference tracer and the baker trace, tested in Embree filter callbacks (RayScene::setAlphaFilter)
+// so that closest-hit and occlusion queries agree. The rules (docs/reference-tracer.md, "Alpha and
+// faces"; docs/material-model.md "Alpha"):
+// - MASK: a candidate is there where surfaceAlpha >= alphaCutoff, for every kind of ray.
+// - BLEND: alpha is coverage. A candidate is kept when u < alpha, u in [0, 1) a hash of the ray
+//   (origin and direction bits) and of the triangle (geometry and primitive id): the same ray
+//   decides the same way in intersect and occluded, the result is deterministic, and rays of
+//   different samples see independent u, so the expected transmission is 1 - alpha (pbrt-v4
+//   tests alpha with HashFloat(ray.o, ray.d) the same way; the ids decorrelate stacked layers).
+// - doubleSided false: camera rays (RayKind::Camera) pass through back faces, as the raster culls
+//   them; every other ray (bounces, shadow, AO, the baker's) hits both faces, so a closed
+//   single-sided mesh still blocks light from the inside.
+// Only geometries whose material needs a test get a callback (needs()), so opaque double-sided
+// scenes trace at full speed.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/material.h"
+#include "core/mesh.h"
+#include "core/texture_sampling.h"
+
+namespace iblkit {
+
+enum class RayKind : std::uint8_t {
+  Camera,     // primary rays: single-sided back faces are culled
+  Secondary,  // everything else
+};
+
+// A ray's footprint as a cone (Akenine-Möller et al. 2019, "Texture Level of Detail Strategies
+// for Real-Time Ray Tracing", Ray Tracing Gems ch. 20): its width at distance t along the unit
+// direction is width + spread * t. Zero: the sharpest texture level.
+struct RayCone {
+  float width = 0.0f;
+  float spread = 0.0f;  // radians (small-angle: the width grows by spread per unit distance)
+  float widthAt(float t) const { return width + spread * t; }
+};
+
+// What a query tells the filters about its ray (carried in Embree's intersect context).
+struct RayQuery {
+  RayKind kind = RayKind::Secondary;
+  RayCone cone;
+};
+
+// The largest anisotropy the isotropic lookups stand in for (the raster's
+// GL_TEXTURE_MAX_ANISOTROPY, 16 where the driver offers it): see textureFootprint.
+inline constexpr float kMaxTextureAnisotropy = 16.0f;
+
+// The uv footprint (width in uv units) of a cone `width` wide hitting a triangle whose uv area per
+// world area is `uvPerWorldArea`, at cosine `cosine` between the ray and the triangle's normal:
+// width * sqrt(uvPerWorldArea) / max(|cosine|, 1 / kMaxTextureAnisotropy). Akenine-Möller et al.
+// divide by the cosine (the footprint's major axis); GL's anisotropic filtering picks the level of
+// max(major / maxAnisotropy, minor) and averages along the major axis, and a tracer that
+// supersamples the pixel averages along it too, so the cosine is clamped where GL's anisotropy is.
+float textureFootprint(float width, float uvPerWorldArea, float cosine);
+
+// The ratio uv area / world area of triangle `triangle` of `mesh` in texCoord set `set` (0 when
+// the mesh has no such set or the triangle no area), for textureFootprint.
+float uvPerWorldArea(const Mesh& mesh, std::size_t triangle, int set);
+
+class AlphaFilter {
+ public:
+  enum Need : unsigned {
+    kNoTest = 0,
+    kAlphaTest = 1u << 0,        // MASK or BLEND with a non-constant or partial alpha
+    kCullCameraBackFaces = 1u << 1,  // single-sided, and camera rays are traced
+  };
+
+  // `geometryMeshes[g]` is the mesh of Embree geometry id g; `materials` is what Mesh::material
+  // indexes; `textures` holds the scene's textures (may be empty: then alpha is the factor's).
+  // `slots`: the texture slots switched on (only kSlotBaseColor matters here). `cameraRays`:
+  // whether RayKind::Camera queries will be traced (the baker traces none, so single-sided
+  // geometry then needs no callback). The meshes must outlive the filter; materials are copied.
+  AlphaFilter(std::vector<const Mesh*> geometryMeshes, const std::vector<Material>& materials,
+              std::shared_ptr<const SceneTextures> textures, unsigned slots = kAllTextureSlots,
+              bool cameraRays = true);
+
+  unsigned geometryCount() const { return static_cast<unsigned>(geometries_.size()); }
+  // The Need bits of geometry g.
+  unsigned needs(unsigned geometry) const { return geometries_[geometry].needs; }
+
+  // Whether the candidate hit of a ray (origin, unit-or-not direction) on triangle `primitive` of
+  // `geometry` at Embree barycentrics (u, v) and distance t counts; `geometricNormal` is Embree's
+  // Ng (any length). The callbacks call this; so may anything that wants the same answer.
+  bool accept(unsigned geometry, unsigned primitive, glm::vec2 barycentrics, float t, const glm::vec3& origin,
+              const glm::vec3& direction, const glm::vec3& geometricNormal, const RayQuery& query) const;
+
+  // The coverage hash u in [0, 1) of a ray and a triangle (the BLEND test keeps u < alpha).
+  static float coverageHash(const glm::vec3& origin, const glm::vec3& direction, unsigned geometry,
+                            unsigned primitive);
+
+ private:
+  struct Geometry {
+    const Mesh* mesh = nullptr;
+    Material material;
+    unsigned needs = kNoTest;
+    bool alphaFromTexture = false;
+  };
+  std::vector<Geometry> geometries_;
+  std::shared_ptr<const SceneTextures> textures_;
+  unsigned slots_;
+};
+
+}  // namespace iblkit
