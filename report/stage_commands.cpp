@@ -1,6 +1,7 @@
 #include "report/stage_commands.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "core/scene.h"
 #include "report/case_modes.h"
@@ -21,7 +22,7 @@ void appendSize(const ReportSettings& settings, std::vector<std::string>& argume
 }  // namespace
 
 CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile) {
-  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}, false};
+  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}, false, false};
   const Scene scene = loadScene(sceneFile);
   // A missing model file is left to the program that reads it, which fails naming it.
   const auto add = [&](const fs::path& file) {
@@ -34,6 +35,7 @@ CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile
   // An image embedded in a glTF names that glTF, already in the list.
   for (const TextureImage& image : scene.images) add(image.file);
   inputs.files.push_back(environmentFile);
+  inputs.textured = !scene.textures.empty();
   inputs.occlusionTexture = hasOcclusionTexture(scene);
   return inputs;
 }
@@ -71,6 +73,11 @@ StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inpu
   if (seed == 0) arguments.insert(arguments.end(), {"--normal", stageFile("normal.exr")});
   if (settings.referenceIntegrator != "path")
     arguments.insert(arguments.end(), {"--integrator", settings.referenceIntegrator});
+  if (inputs.textured) {
+    std::ostringstream footprint;
+    footprint << 1.0 / double(std::max(1, settings.engineSupersample));  // 1, 0.5, 0.25: exact
+    arguments.insert(arguments.end(), {"--texture-footprint", footprint.str()});
+  }
   appendSize(settings, arguments);
   return command;
 }

@@ -2,12 +2,6 @@
 
 #include <gtest/gtest.h>
 
-// The test's own PNG and JPEG encoder (stb_image_write, private to this file as in core/png_io.cpp):
-// the writer copies image bytes, so the test needs real files whose bytes it knows.
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC
-#include <stb/stb_image_write.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -21,6 +15,7 @@
 #include "support/error_capture.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
+#include "support/texture_files.h"
 
 namespace iblkit {
 namespace {
@@ -77,24 +72,10 @@ std::vector<std::uint8_t> rgbaPattern(int w, int h) {
   return rgba;
 }
 
-void appendBytes(void* context, void* data, int size) {
-  auto& out = *static_cast<std::vector<std::uint8_t>*>(context);
-  out.insert(out.end(), static_cast<std::uint8_t*>(data), static_cast<std::uint8_t*>(data) + size);
-}
-
-std::vector<std::uint8_t> encodePng(int w, int h) {
-  std::vector<std::uint8_t> out;
-  const std::vector<std::uint8_t> rgba = rgbaPattern(w, h);
-  stbi_write_png_to_func(appendBytes, &out, w, h, 4, rgba.data(), w * 4);
-  return out;
-}
-
-std::vector<std::uint8_t> encodeJpeg(int w, int h) {
-  std::vector<std::uint8_t> out;
-  const std::vector<std::uint8_t> rgba = rgbaPattern(w, h);
-  stbi_write_jpg_to_func(appendBytes, &out, w, h, 4, rgba.data(), 90);
-  return out;
-}
+// The writer copies image bytes, so the test needs real files whose bytes it knows.
+std::vector<std::uint8_t> encodePng(int w, int h) { return test::encodePng(w, h, rgbaPattern(w, h)); }
+std::vector<std::uint8_t> encodeJpeg(int w, int h) { return test::encodeJpeg(w, h, rgbaPattern(w, h), 90); }
+std::vector<std::uint8_t> encodeWebp(int w, int h) { return test::encodeWebp(w, h, rgbaPattern(w, h)); }
 
 TextureImage image(std::string name, std::string mimeType, std::vector<std::uint8_t> encoded, int w, int h) {
   TextureImage result;
@@ -112,7 +93,8 @@ TextureImage image(std::string name, std::string mimeType, std::vector<std::uint
 Scene texturedScene() {
   Scene scene = bakedScene();
   scene.images = {image("checker", "image/png", encodePng(4, 4), 4, 4),
-                  image("ao", "image/jpeg", encodeJpeg(8, 8), 8, 8)};
+                  image("ao", "image/jpeg", encodeJpeg(8, 8), 8, 8),
+                  image("tiles", "image/webp", encodeWebp(2, 4), 2, 4)};
   Texture nearest;
   nearest.name = "nearest";
   nearest.image = 0;
@@ -127,7 +109,9 @@ Scene texturedScene() {
   mipNearest.image = 0;
   mipNearest.sampler.minFilter = TextureFilter::Linear;
   mipNearest.sampler.mipFilter = TextureFilter::Nearest;
-  scene.textures = {nearest, trilinear, mipNearest};
+  Texture webp;
+  webp.image = 2;
+  scene.textures = {nearest, trilinear, mipNearest, webp};
 
   Material& lamp = scene.materials[1];
   lamp.alpha = 0.75f;
@@ -138,7 +122,7 @@ Scene texturedScene() {
   lamp.normalScale = 0.75f;
   lamp.occlusionTexture = {.texture = 1, .texCoord = 1, .transform = {}};
   lamp.occlusionStrength = 0.625f;
-  lamp.emissiveTexture = {.texture = 0, .texCoord = 0, .transform = {}};
+  lamp.emissiveTexture = {.texture = 3, .texCoord = 0, .transform = {}};
   lamp.alphaMode = AlphaMode::Mask;
   lamp.alphaCutoff = 0.375f;
   lamp.doubleSided = true;
@@ -287,14 +271,14 @@ TEST(BakedSceneGltf, TexturedSceneKeepsImageBytesSamplersAndEverySlot) {
   const GlbChunks glb = readGlb(file);
   const json& doc = glb.document;
 
-  ASSERT_EQ(doc["images"].size(), 2u);
-  for (int i = 0; i < 2; ++i) {
+  ASSERT_EQ(doc["images"].size(), 3u);
+  for (int i = 0; i < 3; ++i) {
     EXPECT_EQ(imageBytes(glb, i), scene.images[i].encoded) << "image " << i;
     EXPECT_EQ(doc["images"][i]["mimeType"], scene.images[i].mimeType);
     EXPECT_EQ(doc["images"][i]["name"], scene.images[i].name);
     EXPECT_EQ(doc["bufferViews"][doc["images"][i]["bufferView"].get<int>()]["byteOffset"].get<int>() % 4, 0);
   }
-  ASSERT_EQ(doc["textures"].size(), 3u);
+  ASSERT_EQ(doc["textures"].size(), 4u);
   EXPECT_EQ(doc["textures"][0], json::parse(R"({"name": "nearest", "source": 0, "sampler": 0})"));
   EXPECT_EQ(doc["textures"][1]["source"], 1);
   EXPECT_EQ(doc["samplers"][0], json::parse(R"({"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33648})"));
@@ -309,7 +293,8 @@ TEST(BakedSceneGltf, TexturedSceneKeepsImageBytesSamplersAndEverySlot) {
   EXPECT_EQ(lamp["pbrMetallicRoughness"]["metallicRoughnessTexture"], json::parse(R"({"index": 2, "texCoord": 1})"));
   EXPECT_EQ(lamp["normalTexture"], json::parse(R"({"index": 1, "scale": 0.75})"));
   EXPECT_EQ(lamp["occlusionTexture"], json::parse(R"({"index": 1, "texCoord": 1, "strength": 0.625})"));
-  EXPECT_EQ(lamp["emissiveTexture"], json::parse(R"({"index": 0})"));
+  EXPECT_EQ(lamp["emissiveTexture"], json::parse(R"({"index": 3})"));
+  EXPECT_EQ(doc["textures"][3]["extensions"]["EXT_texture_webp"]["source"], 2);
   EXPECT_EQ(lamp["alphaMode"], "MASK");
   EXPECT_EQ(lamp["alphaCutoff"], 0.375);
   EXPECT_EQ(lamp["doubleSided"], true);
@@ -318,7 +303,7 @@ TEST(BakedSceneGltf, TexturedSceneKeepsImageBytesSamplersAndEverySlot) {
   EXPECT_FALSE(doc["materials"][0].contains("alphaCutoff"));
   EXPECT_NE(std::find(doc["extensionsUsed"].begin(), doc["extensionsUsed"].end(), "KHR_texture_transform"),
             doc["extensionsUsed"].end());
-  EXPECT_FALSE(doc.contains("extensionsRequired"));  // PNG and JPEG need no extension
+  EXPECT_EQ(doc["extensionsRequired"], json::parse(R"(["EXT_texture_webp"])"));
 
   const json& sphere = doc["meshes"][0]["primitives"][0]["attributes"];
   ASSERT_TRUE(sphere.contains("TEXCOORD_1"));
@@ -414,7 +399,8 @@ TEST(BakedSceneGltf, TexturedSceneLoadsBackAsTheSameTexturesAndMaterials) {
     EXPECT_EQ(back.images[i].width, scene.images[i].width) << "image " << i;
     EXPECT_EQ(back.images[i].height, scene.images[i].height) << "image " << i;
   }
-  EXPECT_EQ(back.images[0].rgba, rgbaPattern(4, 4));  // PNG is lossless
+  EXPECT_EQ(back.images[0].rgba, rgbaPattern(4, 4));  // PNG and lossless WebP keep every byte
+  EXPECT_EQ(back.images[2].rgba, rgbaPattern(2, 4));
   ASSERT_EQ(back.textures.size(), scene.textures.size());
   for (std::size_t t = 0; t < scene.textures.size(); ++t) {
     EXPECT_EQ(back.textures[t].image, scene.textures[t].image) << "texture " << t;
@@ -433,17 +419,17 @@ TEST(BakedSceneGltf, TexturedSceneLoadsBackAsTheSameTexturesAndMaterials) {
 TEST(BakedSceneGltf, BadTextureReferencesAreErrorsAndLeaveNoFile) {
   const std::filesystem::path file = test::scratchDir() / "bad_texture.glb";
   Scene slot = texturedScene();
-  slot.materials[1].occlusionTexture.texture = 3;
+  slot.materials[1].occlusionTexture.texture = 4;
   EXPECT_EQ(test::errorMessage([&] { writeSceneGlb(slot, file); }),
-            file.string() + ": material 1 (lamp) occlusionTexture: texture 3 does not exist");
+            file.string() + ": material 1 (lamp) occlusionTexture: texture 4 does not exist");
   Scene texCoord = texturedScene();
   texCoord.materials[1].normalTexture.texCoord = 2;
   EXPECT_EQ(test::errorMessage([&] { writeSceneGlb(texCoord, file); }),
             file.string() + ": material 1 (lamp) normalTexture: texCoord 2 is not 0 or 1");
   Scene source = texturedScene();
-  source.textures[2].image = 2;
+  source.textures[2].image = 3;
   EXPECT_EQ(test::errorMessage([&] { writeSceneGlb(source, file); }),
-            file.string() + ": texture 2: image 2 does not exist");
+            file.string() + ": texture 2: image 3 does not exist");
   Scene noBytes = texturedScene();
   noBytes.images[1].encoded.clear();
   EXPECT_EQ(test::errorMessage([&] { writeSceneGlb(noBytes, file); }),

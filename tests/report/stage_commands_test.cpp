@@ -121,6 +121,20 @@ TEST(StageCommands, ImageFilesAreInputsAndAnOcclusionTextureIsNoticed) {
   writePng(dir / "ao.png", Image(4, 4, glm::vec4(0.25f, 0.25f, 0.25f, 1.0f)));
   EXPECT_NE(stageKey(bakeCommand(settings, inputs)), before);
   EXPECT_FALSE(plain.inputs.occlusionTexture);
+
+  // The textured scene's reference traces with the engine frame's footprint, 1 / supersample.
+  EXPECT_TRUE(inputs.textured);
+  EXPECT_FALSE(plain.inputs.textured);
+  const auto footprint = [](const StageCommand& command) {
+    const auto at = std::find(command.arguments.begin(), command.arguments.end(), "--texture-footprint");
+    return at == command.arguments.end() ? std::string("none") : *(at + 1);
+  };
+  ReportSettings four = settings;
+  four.engineSupersample = 4;
+  EXPECT_EQ(footprint(traceCommand(settings, inputs, 0)), "0.5");  // the default 2 x 2
+  EXPECT_EQ(footprint(traceCommand(four, inputs, 0)), "0.25");
+  EXPECT_EQ(footprint(traceCommand(four, plain.inputs, 0)), "none");
+  EXPECT_EQ(stageKey(traceCommand(four, plain.inputs, 0)), stageKey(traceCommand(settings, plain.inputs, 0)));
 }
 
 }  // namespace
