@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "support/gltf_builder.h"
+#include "support/texture_files.h"
 #include "support/test_paths.h"
 #include "support/warning_capture.h"
 
@@ -55,6 +56,29 @@ TEST_F(SceneLoad, SceneCameraFramesScenesWithoutOne) {
   EXPECT_EQ(camera.position, framed.position);
   EXPECT_EQ(camera.forward, framed.forward);
   EXPECT_EQ(camera.zfar, framed.zfar);
+}
+
+// A slot reading a TEXCOORD set the mesh lacks reads uv (0, 0): the set is filled, with a warning,
+// so that every program can index it; a normal-mapped mesh also gets its tangents generated.
+TEST_F(SceneLoad, MissingTexcoordsAreFilledForTexturedSlots) {
+  test::GltfBuilder builder;
+  const std::vector<glm::vec3> triangle = {glm::vec3(0, 0, 0), glm::vec3(2, 0, 0), glm::vec3(0, 2, 0)};
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(triangle)}}}, {"material", 0}});
+  const std::vector<std::uint8_t> png = test::encodePng(2, 2, test::quadPixels());
+  builder.addImage(png, "image/png");
+  builder.document()["textures"] = {{{"source", 0}}};
+  builder.document()["materials"] = {{{"name", "stone"}, {"normalTexture", {{"index", 0}, {"texCoord", 1}}}}};
+  const std::filesystem::path path = scratch / "model.glb";
+  builder.write(path, test::GltfBuilder::Storage::Glb);
+  const Scene scene = loadScene(path);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_TRUE(scene.meshes[0].texcoords.empty());
+  EXPECT_EQ(scene.meshes[0].texcoords1, std::vector<glm::vec2>(3, glm::vec2(0.0f)));
+  EXPECT_EQ(scene.meshes[0].tangents.size(), 3u);
+  EXPECT_TRUE(warnings.contains(path.string() + ": warning: mesh 0 primitive 0: material 'stone' reads TEXCOORD_1, "
+                                                "which the mesh does not have; its textures read uv (0, 0)"));
+  ASSERT_EQ(scene.images.size(), 1u);
+  EXPECT_EQ(scene.images[0].encoded, png);
 }
 
 TEST_F(SceneLoad, UnknownExtensionIsAnError) {
