@@ -25,8 +25,11 @@ namespace fs = std::filesystem;
 constexpr const char* kProgram = "iblkit-report";
 
 struct Options {
+  // The untextured scenes, then the textured ones (pmndrs.glb as shipped; the same model with a
+  // normal map from the package assigned in the scene file).
   std::vector<std::string> scenes = {"assets/scenes/mirror_sphere.json", "assets/scenes/diffuse_sphere.json",
-                                     "assets/scenes/bunny.json", "assets/scenes/suzi.json"};
+                                     "assets/scenes/bunny.json",         "assets/scenes/suzi.json",
+                                     "assets/scenes/pmndrs.json",        "assets/scenes/tiles.json"};
   std::vector<std::string> environments = {"sky", "esplanade", "studio", "city", "forest", "sunset"};
   std::string environmentFolder = "assets/hdri", output = "out/demo", cacheFolder, binFolder;
   ReportSettings settings;
