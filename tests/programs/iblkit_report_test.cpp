@@ -164,7 +164,7 @@ TEST(IblkitReport, GltfOcclusionModesOnlyOnScenesWithAnOcclusionTexture) {
   ASSERT_EQ(report(smallReport(out, quoted(dir / "card.json") + " " +
                                         quoted(test::assetsDir() / "scenes" / "mirror_sphere.json"),
                                "city") +
-                       " --modes full,full-gltf-ao,full-both-ao --max-passes 2",
+                       " --modes full,full-gltf-ao,full-both-ao",
                    &output),
             0)
       << output;
