@@ -495,5 +495,28 @@ TEST(BakedSceneGltf, IblkitBakeKeepsATexturedGltfsImagesAndSlots) {
   EXPECT_TRUE(attributes.contains("_AO"));
 }
 
+// The bundled pmndrs.glb (CC0, assets/fetch.sh): the bake's scene.glb holds its JPEG byte for byte,
+// its sampler and its material's doubleSided and baseColorTexture.
+TEST(BakedSceneGltf, IblkitBakeKeepsTheBundledPmndrsTexture) {
+  const std::filesystem::path model = test::assetsDir() / "models" / "pmndrs.glb";
+  ASSERT_TRUE(std::filesystem::is_regular_file(model)) << "run assets/fetch.sh";
+  const std::filesystem::path out = test::scratchDir() / "pmndrs";
+  std::string output;
+  ASSERT_EQ(test::runCommand("timeout 120 " + test::shellQuoted(test::binDir() / "iblkit-bake") + " " +
+                                 test::shellQuoted(model) + " -o " + test::shellQuoted(out) + " --ao-rays 4 2>&1",
+                             &output),
+            0)
+      << output;
+  const GlbChunks source = readGlb(model), baked = readGlb(out / "scene.glb");
+  ASSERT_EQ(baked.document["images"].size(), source.document["images"].size());
+  EXPECT_EQ(imageBytes(baked, 0), imageBytes(source, 0));
+  EXPECT_EQ(baked.document["images"][0]["mimeType"], "image/jpeg");
+  EXPECT_EQ(baked.document["samplers"][0], source.document["samplers"][0]);
+  const json& material = baked.document["materials"][0];
+  EXPECT_EQ(material["doubleSided"], true);
+  EXPECT_EQ(material["pbrMetallicRoughness"]["baseColorTexture"]["index"], 0);
+  EXPECT_TRUE(baked.document["meshes"][0]["primitives"][0]["attributes"].contains("TEXCOORD_0"));
+}
+
 }  // namespace
 }  // namespace iblkit
