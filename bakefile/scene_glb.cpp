@@ -50,7 +50,7 @@ class BinaryBuffer {
     return int(accessors.size()) - 1;
   }
 
-  // Appends `size` bytes (an encoded image) as a buffer view without a target (glTF 2.0 section
+  // Appends `data` (an encoded image) as a buffer view without a target (glTF 2.0 section
   // 3.6.1.2: image data is not vertex data), padded with zeros so the next view stays 4-byte
   // aligned; returns the view's index.
   int addBytes(const std::vector<std::uint8_t>& data) {
