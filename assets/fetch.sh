@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Fetches the CC0 assets of @pmndrs/assets (18 HDR environment maps as 512x256 OpenEXR, the
-# Draco-compressed bunny and suzi meshes) with `npm pack`, decodes the base64 data: URIs inside
-# its .js modules into assets/hdri and assets/models, and verifies them against manifest.sha256.
+# Draco-compressed bunny and suzi meshes, the textured pmndrs.glb, 29 tileable normal maps and 4
+# textures as WebP; and pmndrs.glb's embedded AO atlas as a JPEG of its own) with `npm pack`, decodes the base64 data: URIs inside its .js modules into
+# assets/hdri, assets/models, assets/normals and assets/textures, and verifies them against
+# manifest.sha256. One download of the package (about 8 MB) holds them all.
 # Quick when the files are already there and verified.
 set -euo pipefail
 
@@ -33,12 +35,28 @@ decode() {
   mv "$dst.tmp" "$dst"
 }
 
-mkdir -p "$here/hdri" "$here/models"
+# textures/pmndrs_ao.jpg: the JPEG pmndrs.glb embeds (its image "ao", buffer view 0: a baked
+# ambient-occlusion atlas the asset uses as its baseColorTexture), as a file of its own, so that a
+# scene file can assign it as the model's glTF occlusionTexture (assets/scenes/tiles.json). Read
+# from the GLB container (glTF 2.0 section 4.4): the JSON chunk's length at byte 12, the JSON from
+# byte 20, the BIN chunk's data 8 bytes after it; the view's offset and length from the JSON.
+extract_view0() {
+  local glb=$1 dst=$2 json_length view offset length
+  json_length=$(od -An -t u4 -j 12 -N 4 "$glb" | tr -d ' ')
+  view=$(dd if="$glb" bs=1 skip=20 count="$json_length" 2>/dev/null | grep -o '"bufferViews":\[{[^}]*}')
+  offset=$(sed -E 's/.*"byteOffset":([0-9]+).*/\1/' <<<"$view")
+  length=$(sed -E 's/.*"byteLength":([0-9]+).*/\1/' <<<"$view")
+  tail -c +$((20 + json_length + 8 + offset + 1)) "$glb" | head -c "$length" >"$dst.tmp"
+  mv "$dst.tmp" "$dst"
+}
+
+mkdir -p "$here/hdri" "$here/models" "$here/normals" "$here/textures"
+# The manifest is sorted by path, so models/pmndrs.glb is decoded before textures/pmndrs_ao.jpg.
 while read -r _ path; do
-  name=$(basename "$path")
   case "$path" in
-    hdri/*) decode "$work/package/hdri/$name.js" "$here/$path" ;;
-    models/*) decode "$work/package/models/$name.js" "$here/$path" ;;
+    textures/pmndrs_ao.jpg) extract_view0 "$here/models/pmndrs.glb" "$here/$path" ;;
+    hdri/* | models/* | normals/* | textures/*) decode "$work/package/$path.js" "$here/$path" ;;
+    *) echo "assets: $manifest: unexpected path $path" >&2; exit 1 ;;
   esac
 done <"$manifest"
 

@@ -25,8 +25,11 @@ namespace fs = std::filesystem;
 constexpr const char* kProgram = "iblkit-report";
 
 struct Options {
+  // The untextured scenes, then the textured ones (pmndrs.glb as shipped; the same model with a
+  // normal map from the package assigned in the scene file).
   std::vector<std::string> scenes = {"assets/scenes/mirror_sphere.json", "assets/scenes/diffuse_sphere.json",
-                                     "assets/scenes/bunny.json", "assets/scenes/suzi.json"};
+                                     "assets/scenes/bunny.json",         "assets/scenes/suzi.json",
+                                     "assets/scenes/pmndrs.json",        "assets/scenes/tiles.json"};
   std::vector<std::string> environments = {"sky", "esplanade", "studio", "city", "forest", "sunset"};
   std::string environmentFolder = "assets/hdri", output = "out/demo", cacheFolder, binFolder;
   ReportSettings settings;
@@ -114,7 +117,8 @@ int main(int argc, char** argv) {
   using namespace iblkit;
   Options options;
   ReportSettings& settings = options.settings;
-  settings.modes = {"mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full"};
+  // full-gltf-ao and full-both-ao run only on scenes with a glTF occlusion texture (report/case_modes.h).
+  settings.modes = {"mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full", "full-gltf-ao", "full-both-ao"};
   CLI::App app{"Scores every real-time mode against the path-traced reference", kProgram};
   app.add_option("scenes", options.scenes, "scene files (.json, .gltf, .glb)");
   app.add_option("--envs", options.environments, "environment map names (files ENV-DIR/NAME.exr) or paths")

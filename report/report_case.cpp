@@ -1,5 +1,6 @@
 #include "report/report_case.h"
 
+#include "report/case_modes.h"
 #include "report/case_pictures.h"
 #include "report/engine_frames.h"
 #include "report/mode_scores.h"
@@ -35,14 +36,16 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
   result.environmentFile = environmentFile;
   const std::string caseName = result.scene + "-" + result.environment;
   const CaseInputs inputs = caseInputs(sceneFile, environmentFile);
+  ReportSettings caseSettings = settings;  // the stages below score caseSettings.modes
+  caseSettings.modes = caseModes(settings.modes, inputs.occlusionTexture);
 
-  const StageRun baked = runStage(cache, "bake-" + caseName, bakeCommand(settings, inputs));
+  const StageRun baked = runStage(cache, "bake-" + caseName, bakeCommand(caseSettings, inputs));
   result.bakeSeconds = baked.seconds;
   result.commands.push_back(baked.command);
-  const std::vector<Image> frames = renderEngineFrames(settings, cache, caseName, baked.folder, result);
-  const Reference reference = traceReference(settings, cache, caseName, inputs, frames, result);
+  const std::vector<Image> frames = renderEngineFrames(caseSettings, cache, caseName, baked.folder, result);
+  const Reference reference = traceReference(caseSettings, cache, caseName, inputs, frames, result);
   const std::vector<FlipErrorMap> flipMaps = scoreModes(reference, frames, result);
-  writeCasePictures(settings.outDir, caseName, reference, frames, flipMaps, result);
+  writeCasePictures(caseSettings.outDir, caseName, reference, frames, flipMaps, result);
   const Sh9Truncation truncation =
       caseSh9Truncation(sceneFile, environmentFile, baked.folder / "bake", reference.normals, reference.mask);
   result.sh9Truncation = truncation.meanRelativeError;

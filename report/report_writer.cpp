@@ -240,7 +240,14 @@ relMSE, estimated from two independent halves, is at most )"
             " averages over the environments.</p>\n<table><tr><th class=l>mode</th>";
     for (const CaseResult* result : sceneCases) html << "<th>" << result->environment << "</th>";
     html << "<th>mean</th><th>frame (ms)</th></tr>\n";
-    for (const std::string& mode : summary.modes) {
+    // The modes some case of this scene scored: the glTF occlusion modes only where a material has
+    // an occlusion texture (case_modes.h).
+    std::vector<std::string> sceneModes;
+    for (const std::string& mode : summary.modes)
+      if (std::any_of(sceneCases.begin(), sceneCases.end(),
+                      [&](const CaseResult* result) { return findMode(*result, mode) != nullptr; }))
+        sceneModes.push_back(mode);
+    for (const std::string& mode : sceneModes) {
       html << "<tr><td class=l>" << mode << "</td>";
       std::vector<double> frameTimes;
       for (const CaseResult* result : sceneCases) {
@@ -262,7 +269,7 @@ relMSE, estimated from two independent halves, is at most )"
            << "%</b></td><td>" << (frameTimes.empty() ? "&ndash;" : fixed(frameTimes[frameTimes.size() / 2], 1))
            << "</td></tr>\n";
     }
-    html << "</table>\n" << ladderSvg(summary.cases, scene, summary.modes);
+    html << "</table>\n" << ladderSvg(summary.cases, scene, sceneModes);
     html << "<table><tr><th class=l>environment</th><th>bake (s)</th><th>trace (s)</th><th>reference spp</th>"
             "<th>reference relMSE (estimated)</th><th>converged</th>"
             "<th title=\"mean relative error of SH9 irradiance against brute force on the scored pixels' normals: "

@@ -1,6 +1,10 @@
 #include "report/stage_commands.h"
 
+#include <algorithm>
+#include <sstream>
+
 #include "core/scene.h"
+#include "report/case_modes.h"
 
 namespace iblkit {
 
@@ -18,13 +22,21 @@ void appendSize(const ReportSettings& settings, std::vector<std::string>& argume
 }  // namespace
 
 CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile) {
-  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}};
+  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}, false, false};
+  const Scene scene = loadScene(sceneFile);
   // A missing model file is left to the program that reads it, which fails naming it.
-  for (const fs::path& model : loadScene(sceneFile).modelFiles) {
+  const auto add = [&](const fs::path& file) {
     std::error_code error;
-    if (fs::is_regular_file(model, error)) inputs.files.push_back(model);
-  }
+    if (std::find(inputs.files.begin(), inputs.files.end(), file) == inputs.files.end() &&
+        fs::is_regular_file(file, error))
+      inputs.files.push_back(file);
+  };
+  for (const fs::path& model : scene.modelFiles) add(model);
+  // An image embedded in a glTF names that glTF, already in the list.
+  for (const TextureImage& image : scene.images) add(image.file);
   inputs.files.push_back(environmentFile);
+  inputs.textured = !scene.textures.empty();
+  inputs.occlusionTexture = hasOcclusionTexture(scene);
   return inputs;
 }
 
@@ -61,6 +73,11 @@ StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inpu
   if (seed == 0) arguments.insert(arguments.end(), {"--normal", stageFile("normal.exr")});
   if (settings.referenceIntegrator != "path")
     arguments.insert(arguments.end(), {"--integrator", settings.referenceIntegrator});
+  if (inputs.textured) {
+    std::ostringstream footprint;
+    footprint << 1.0 / double(std::max(1, settings.engineSupersample));  // 1, 0.5, 0.25: exact
+    arguments.insert(arguments.end(), {"--texture-footprint", footprint.str()});
+  }
   appendSize(settings, arguments);
   return command;
 }

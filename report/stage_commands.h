@@ -12,10 +12,15 @@
 namespace iblkit {
 
 // What a scene's images depend on besides the arguments: the scene file, every model file it
-// names and the environment map, whose bytes go into the key of each stage that reads them.
+// names, every texture image file its materials read (files beside a glTF, a scene file's
+// texture overrides) and the environment map, whose bytes go into the key of each stage that
+// reads them; whether the scene has textures (the reference then traces with the engine frame's
+// texture footprint) and whether some material has a glTF occlusion texture (case_modes.h).
 struct CaseInputs {
   std::filesystem::path sceneFile, environmentFile;
-  std::vector<std::filesystem::path> files;  // the scene, its model files, the environment map
+  std::vector<std::filesystem::path> files;  // the scene, its model and image files, the environment map
+  bool textured = false;
+  bool occlusionTexture = false;
 };
 CaseInputs caseInputs(const std::filesystem::path& sceneFile, const std::filesystem::path& environmentFile);
 
@@ -29,7 +34,11 @@ StageCommand viewCommand(const ReportSettings& settings, const std::filesystem::
                          const std::string& mode);
 
 // iblkit-trace SCENE --env ENV: the reference pass with `seed` ({stage}/beauty.exr and depth.exr;
-// pass 0 also writes {stage}/normal.exr, for the mask's normals).
+// pass 0 also writes {stage}/normal.exr, for the mask's normals). A textured scene is traced with
+// --texture-footprint 1/K, K the engine's --supersample: the engine's texture lookups take their
+// level of detail from the derivatives of its K x K finer pixels, so the reference's camera ray
+// cones spread over that pixel too (reference/renderer.h, textureFootprint). An untextured scene's
+// command (and cache key) does not depend on K.
 StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inputs, int seed);
 
 }  // namespace iblkit

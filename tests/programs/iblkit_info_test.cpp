@@ -192,15 +192,28 @@ TEST(IblkitInfo, BundledScenesLoad) {
     const std::string output = info("--json " + quoted(entry.path()) + " 2>/dev/null", &status);
     ASSERT_EQ(status, 0) << entry.path() << ": " << output;
     const nlohmann::json d = nlohmann::json::parse(output);
-    // The lone spheres stand in the sky; the bunny and suzi stand on a ground plane.
+    // The lone spheres stand in the sky; the bunny, suzi and pmndrs.glb stand on a ground plane.
     const bool lone = entry.path().stem().string().ends_with("_sphere");
     EXPECT_EQ(d["groundMeshes"], lone ? 0 : 1) << entry.path();
     EXPECT_TRUE(std::filesystem::exists(scenes / d["environment"].get<std::string>()) ||
                 std::filesystem::exists(d["environment"].get<std::string>()))
         << entry.path();
+    // The textured scenes (pmndrs.glb as shipped; tiles adds a normal and an occlusion texture
+    // in the scene file) list their textures' slots; the others have none.
+    std::vector<std::string> slots;
+    for (const nlohmann::json& texture : d.value("textures", nlohmann::json::array()))
+      for (const nlohmann::json& slot : texture["slots"]) slots.push_back(slot);
+    const std::string stem = entry.path().stem().string();
+    if (stem == "pmndrs") {
+      EXPECT_EQ(slots, std::vector<std::string>{"baseColorTexture"});
+    } else if (stem == "tiles") {
+      EXPECT_EQ(slots, (std::vector<std::string>{"baseColorTexture", "normalTexture", "occlusionTexture"}));
+    } else {
+      EXPECT_TRUE(slots.empty()) << entry.path();
+    }
     ++count;
   }
-  EXPECT_EQ(count, 4);
+  EXPECT_EQ(count, 6);  // mirror_sphere, diffuse_sphere, bunny, suzi, pmndrs, tiles
 }
 
 TEST(IblkitInfo, PngPreviewNeedsOneImage) {

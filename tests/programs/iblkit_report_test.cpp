@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/gltf_builder.h"
 #include "support/test_paths.h"
+#include "support/texture_files.h"
 #include "support/usage_error_check.h"
 
 namespace iblkit {
@@ -127,6 +129,60 @@ TEST(IblkitReport, BunnyLadderOnSmallImages) {
       if (mode["mode"] == "full") full = mode["meanFlip"].get<double>();
     }
     EXPECT_LT(full, sh) << entry["environment"];
+  }
+}
+
+// The glTF occlusion modes are scored where a material has an occlusion texture, beside `full`,
+// and not on a scene without one (where they would repeat `full`). The textured scene: a quad
+// facing the camera whose occlusion texture darkens its left half, in a scene file with a camera.
+TEST(IblkitReport, GltfOcclusionModesOnlyOnScenesWithAnOcclusionTexture) {
+  const fs::path dir = test::scratchDir();
+  std::vector<std::uint8_t> rgba(8 * 8 * 4, 255);
+  for (int i = 0; i < 8 * 8; ++i)
+    if (i % 8 < 4) rgba[4 * i] = 40;  // R, the occlusion channel
+  test::writeFileBytes(dir / "ao.png", test::encodePng(8, 8, rgba));
+  test::GltfBuilder builder;
+  const std::vector<glm::vec3> positions = {{-1, 0, 0}, {1, 0, 0}, {1, 2, 0}, {-1, 2, 0}};
+  const std::vector<glm::vec3> normals(4, glm::vec3(0, 0, 1));
+  const std::vector<glm::vec2> uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(positions)},
+                              {"NORMAL", builder.addFloats(normals)},
+                              {"TEXCOORD_0", builder.addFloats(uvs)}}},
+                            {"indices", builder.addIndices({0, 1, 2, 0, 2, 3})},
+                            {"material", 0}});
+  builder.document()["images"] = {{{"uri", "ao.png"}}};
+  builder.document()["textures"] = {{{"source", 0}}};
+  builder.document()["materials"] = {
+      {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}, {"occlusionTexture", {{"index", 0}}}}};
+  builder.write(dir / "card.glb", test::GltfBuilder::Storage::Glb);
+  std::ofstream(dir / "card.json") << R"({"models": [{"file": "card.glb"}], "ground": {"enabled": true},
+      "camera": {"position": [0, 1, 4], "target": [0, 0.8, 0], "yfov": 45}})";
+
+  const fs::path out = dir / "report";
+  std::string output;
+  ASSERT_EQ(report(smallReport(out, quoted(dir / "card.json") + " " +
+                                        quoted(test::assetsDir() / "scenes" / "mirror_sphere.json"),
+                               "city") +
+                       " --modes full,full-gltf-ao,full-both-ao",
+                   &output),
+            0)
+      << output;
+  const json document = readJson(out / "report.json");
+  ASSERT_EQ(document["cases"].size(), 2u);
+  for (const json& entry : document["cases"]) {
+    std::vector<std::string> modes;
+    for (const json& mode : entry["modes"]) {
+      modes.push_back(mode["mode"]);
+      EXPECT_FALSE(mode.contains("failure")) << entry["scene"] << " " << mode["mode"] << ": " << mode["failure"];
+    }
+    if (entry["scene"] == "card") {
+      EXPECT_EQ(modes, (std::vector<std::string>{"full", "full-gltf-ao", "full-both-ao"}));
+      // The texture darkens half the card: glTF occlusion changes the frame, so its score differs.
+      EXPECT_NE(entry["modes"][0]["meanFlip"], entry["modes"][2]["meanFlip"]);
+    } else {
+      EXPECT_EQ(modes, std::vector<std::string>{"full"}) << entry["scene"];
+    }
   }
 }
 

@@ -6,6 +6,9 @@
 #include <fstream>
 #include <functional>
 
+#include "core/image.h"
+#include "core/image_io.h"
+#include "support/gltf_builder.h"
 #include "support/test_paths.h"
 
 namespace iblkit {
@@ -89,6 +92,49 @@ TEST(StageCommands, TheScenesBytesAreInTheBakeAndTraceKeys) {
   std::ofstream(fixture.inputs.environmentFile) << "other pixels";
   EXPECT_NE(stageKey(bakeCommand(fixture.settings, fixture.inputs)), bake);
   EXPECT_NE(stageKey(traceCommand(fixture.settings, fixture.inputs, 0)), trace);
+}
+
+// A texture image in a file beside the glTF goes into the bake's and the trace's keys (editing the
+// image re-runs them), and an occlusion texture makes the case score the glTF occlusion modes.
+TEST(StageCommands, ImageFilesAreInputsAndAnOcclusionTextureIsNoticed) {
+  const Fixture plain;  // its stand-in programs, and a scene without textures (first: it makes the scratch folder)
+  const fs::path dir = plain.settings.binDir.parent_path() / "textured";
+  fs::create_directories(dir);
+  writePng(dir / "ao.png", Image(4, 4, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+  test::GltfBuilder builder;
+  const std::vector<glm::vec3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::vector<glm::vec2> uvs = {{0, 0}, {1, 0}, {0, 1}};
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(positions)},
+                                            {"TEXCOORD_0", builder.addFloats(uvs)}}},
+                            {"material", 0}});
+  builder.document()["images"] = {{{"uri", "ao.png"}}};
+  builder.document()["textures"] = {{{"source", 0}}};
+  builder.document()["materials"] = {{{"occlusionTexture", {{"index", 0}}}}};
+  builder.write(dir / "model.glb", test::GltfBuilder::Storage::Glb);
+  std::ofstream(dir / "map.exr") << "pixels";
+
+  const CaseInputs inputs = caseInputs(dir / "model.glb", dir / "map.exr");
+  EXPECT_TRUE(inputs.occlusionTexture);
+  EXPECT_NE(std::find(inputs.files.begin(), inputs.files.end(), dir / "ao.png"), inputs.files.end());
+  const ReportSettings& settings = plain.settings;
+  const std::string before = stageKey(bakeCommand(settings, inputs));
+  writePng(dir / "ao.png", Image(4, 4, glm::vec4(0.25f, 0.25f, 0.25f, 1.0f)));
+  EXPECT_NE(stageKey(bakeCommand(settings, inputs)), before);
+  EXPECT_FALSE(plain.inputs.occlusionTexture);
+
+  // The textured scene's reference traces with the engine frame's footprint, 1 / supersample.
+  EXPECT_TRUE(inputs.textured);
+  EXPECT_FALSE(plain.inputs.textured);
+  const auto footprint = [](const StageCommand& command) {
+    const auto at = std::find(command.arguments.begin(), command.arguments.end(), "--texture-footprint");
+    return at == command.arguments.end() ? std::string("none") : *(at + 1);
+  };
+  ReportSettings four = settings;
+  four.engineSupersample = 4;
+  EXPECT_EQ(footprint(traceCommand(settings, inputs, 0)), "0.5");  // the default 2 x 2
+  EXPECT_EQ(footprint(traceCommand(four, inputs, 0)), "0.25");
+  EXPECT_EQ(footprint(traceCommand(four, plain.inputs, 0)), "none");
+  EXPECT_EQ(stageKey(traceCommand(four, plain.inputs, 0)), stageKey(traceCommand(settings, plain.inputs, 0)));
 }
 
 }  // namespace
