@@ -2,7 +2,8 @@
 //
 //   iblkit-view OUTDIR|SCENE --headless -o IMAGE [--width W] [--height H] [--mode M]
 //               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
-//               [--bench N] [--no-sky] [--ao-rays N]
+//               [--bench N] [--no-sky] [--ao-rays N] [--texture-slots LIST | --no-textures]
+//               [--anisotropy A]
 //
 // OUTDIR is an iblkit-bake folder; a .json/.gltf/.glb scene is baked in memory first. -o .exr
 // writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
@@ -33,6 +34,7 @@
 #include "engine/gl/headless_context.h"
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
+#include "engine/gl/texture_slot_names.h"
 #include "engine/view/reference_comparison.h"
 #include "engine/view/screenshot.h"
 #include "engine/view/viewer.h"
@@ -57,6 +59,9 @@ struct Options {
   int bench = 0;
   int aoRays = 64;
   bool noSky = false;
+  std::string textureSlots = "all";  // --texture-slots; --no-textures is "none"
+  bool noTextures = false;
+  float anisotropy = kDefaultTextureAnisotropy;
   // The window viewer's.
   std::filesystem::path envDir, environment, reference, screenshot;
   std::string compare = "split";
@@ -161,6 +166,7 @@ int runHeadless(const Options& options) {
   settings.exposure = options.exposure;
   settings.drawSky = !options.noSky;
   settings.sampleShading = options.sampleShading;
+  settings.textureSlots = options.noTextures ? 0u : parseTextureSlots(options.textureSlots);
 
   const BakedScene bake = loadOrBakeScene(options.input, inMemoryBake(options.aoRays));
   // No image may replace the bake folder's files, the scene, a model or the map.
@@ -173,14 +179,16 @@ int runHeadless(const Options& options) {
 
   HeadlessContext context = HeadlessContext::create();
   enableGlDebugOutput(GlDebugMode::Strict);
-  Renderer renderer(bake);
+  Renderer renderer(bake, options.anisotropy);
   RenderTarget target(width * options.supersample, height * options.supersample, options.samples);
   const Camera camera = sceneCamera(bake.scene, float(width) / float(height));
   checkGlErrors("setup");
 
   if (options.bench > 0) {
     std::cout << kProgram << ": " << context.description() << ", " << width << "x" << height << ", "
-              << target.samples() << " sample(s), median of " << options.bench << " frames\n";
+              << target.samples() << " sample(s), texture slots " << textureSlotsName(settings.textureSlots)
+              << " (" << bake.scene.textures.size() << " textures, anisotropy " << renderer.textureAnisotropy()
+              << "), median of " << options.bench << " frames\n";
     std::vector<ShadingMode> modes(std::begin(kShadingModes), std::end(kShadingModes));
     if (!allModes) modes = {settings.mode};
     benchmark(renderer, target, camera, settings, modes, 2);  // warm-up: shader variants, caches
@@ -238,6 +246,8 @@ int runWindow(const Options& options) {
   viewer.envRotation = options.envRotation;
   viewer.samples = options.samples;
   viewer.noSky = options.noSky;
+  viewer.textureSlots = options.noTextures ? 0u : parseTextureSlots(options.textureSlots);
+  viewer.anisotropy = options.anisotropy;
   viewer.loadScene = [aoRays = options.aoRays](const fs::path& input) {
     return loadOrBakeScene(input, inMemoryBake(aoRays));
   };
@@ -299,6 +309,15 @@ int main(int argc, char** argv) {
   app.add_option("--bench", options.bench, "render N frames and print the median frame time")
       ->check(CLI::Range(1, 100000));
   app.add_flag("--no-sky", options.noSky, "black background (alpha 0) instead of the environment");
+  app.add_option("--texture-slots", options.textureSlots,
+                 "material texture slots used: comma-separated base-color, metallic-roughness, normal, "
+                 "occlusion, emissive; or all, none")
+      ->capture_default_str();
+  app.add_flag("--no-textures", options.noTextures, "every material with its factors only (--texture-slots none)");
+  app.add_option("--anisotropy", options.anisotropy,
+                 "maximum anisotropy of the trilinear texture samplers (1: isotropic; clamped to the driver's)")
+      ->check(CLI::Range(1.0f, 16.0f))
+      ->capture_default_str();
   app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex when baking a scene in memory")
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();
@@ -317,6 +336,8 @@ int main(int argc, char** argv) {
   app.add_flag("--no-panel", options.noPanel, "window: start with the panel hidden (Tab shows it)");
   return runProgram(app, argc, argv, [&] {
     rejectWindowFlagsWhenHeadless(options);
+    if (options.noTextures && options.textureSlots != "all")
+      failUsage("--no-textures", "give --no-textures or --texture-slots, not both");
     EnvironmentOverride rotation;
     rotation.rotationDegrees = options.envRotation;
     checkEnvironmentOverride(rotation);

@@ -6,6 +6,7 @@
 #include "environment.glsl"
 #include "sh9.glsl"
 #include "brdf.glsl"
+#include "material.glsl"
 
 in VertexData {
   vec3 position;
@@ -15,6 +16,9 @@ in VertexData {
   vec3 transfer012;
   vec3 transfer345;
   vec3 transfer678;
+  vec2 texcoord0;
+  vec2 texcoord1;
+  vec4 tangent;
 }
 vertexIn;
 
@@ -32,13 +36,16 @@ const int mode = SHADING_MODE;
 const int layer = FRAME_LAYER;
 uniform vec3 cameraPosition;
 uniform bool isGround;
-// Material (core/material.h), clamped to the glTF ranges on the CPU (clampedToGltfRanges).
-uniform vec3 baseColor;
-uniform float metallic;
-uniform float roughness;
+// The material's other factors (material.glsl has those its textures multiply), clamped to the
+// glTF ranges on the CPU (clampedToGltfRanges).
 uniform float specularWeight;
 uniform vec3 specularColor;
-uniform vec3 emissive;
+// TextureSlot bits that are present and switched on (renderer.cpp), and whether the material is
+// double-sided (the back face then shades with the normal and tangent negated).
+uniform int textureSlots;
+uniform bool doubleSided;
+// GL_SAMPLES of the target (renderer.cpp; llvmpipe's gl_NumSamples reads 1 on a multisampled one).
+uniform int framebufferSamples;
 // Environment: SH9 radiance (rotated on the CPU), the lat-long map with its total rotation and
 // intensity, the specular chain with the extra rotation only (the scene's is baked into it).
 uniform vec3 shRadiance[9];
@@ -53,21 +60,20 @@ layout(binding = kTextureUnitBrdfLut) uniform sampler2D brdfLut;
 layout(location = 0) out vec4 fragColor;
 
 // The shading normal on the viewer's side, as iblkit-trace chooses it (docs/reference-tracer.md):
-// the interpolated normal turned towards the viewer, or the geometric normal where it still faces
-// away (silhouettes of coarse meshes).
-vec3 shadingNormal(vec3 v) {
-  vec3 geometric = normalize(cross(dFdx(vertexIn.position), dFdy(vertexIn.position)));
-  if (dot(geometric, v) < 0.0) geometric = -geometric;
-  vec3 n = normalize(vertexIn.normal);
+// `n` (the interpolated or normal-mapped normal) turned towards the viewer, or the geometric
+// normal where it still faces away (silhouettes of coarse meshes). `geometric` faces the viewer.
+vec3 shadingNormal(vec3 n, vec3 geometric, vec3 v) {
   if (dot(n, geometric) < 0.0) n = -n;
   return dot(n, v) > 0.0 ? n : geometric;
 }
 
-vec3 fullMaterialModel(vec3 n, vec3 v, vec3 albedo, float ao, vec3 bent, vec3 irradiance) {
+vec3 fullMaterialModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 bent, vec3 irradiance) {
+  vec3 albedo = m.baseColor;
+  float roughness = m.roughness;
   float NoV = clamp(dot(n, v), 1e-4, 1.0);
   vec3 r = reflect(-v, n);
-  BrdfLobes lobes = brdfLobes(baseColor, metallic, roughness, specularWeight, specularColor);
-  vec3 dfg = texture(brdfLut, vec2(NoV, roughness)).rgb;
+  BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, roughness, specularWeight, specularColor);
+  vec3 dfg = textureLod(brdfLut, vec2(NoV, roughness), 0.0).rgb;
   vec3 specularAlbedo = splitSumKaris(lobes.f0, lobes.f90, dfg.xy) * energyCompensationFdezAguera(lobes.f0, dfg.z);
   float lod = roughness * (specularLevels - 1.0);
   vec3 prefiltered = textureLod(specularCube, rotateAboutY(r, specularRotation), lod).rgb;
@@ -94,7 +100,28 @@ vec3 visibilityConeAxis(vec3 n, float ao) {
 
 void main() {
   vec3 v = normalize(cameraPosition - vertexIn.position);
-  vec3 n = shadingNormal(v);
+  // Screen derivatives (and every texture read) before any discard: the quad is still whole.
+  vec3 geometric = normalize(cross(dFdx(vertexIn.position), dFdy(vertexIn.position)));
+  if (dot(geometric, v) < 0.0) geometric = -geometric;
+  // The side being shaded (surface_material.h): a double-sided material's back face negates the
+  // normal and the tangent's xyz, w kept. Single-sided back faces are culled (renderer.cpp).
+  float side = (doubleSided && !gl_FrontFacing) ? -1.0 : 1.0;
+  SurfaceInputs inputs;
+  inputs.texcoords[0] = vertexIn.texcoord0;
+  inputs.texcoords[1] = vertexIn.texcoord1;
+  inputs.normal = side * normalize(vertexIn.normal);
+  float tangentLength2 = dot(vertexIn.tangent.xyz, vertexIn.tangent.xyz);
+  inputs.tangent = tangentLength2 > 0.0 ? vec4(side * vertexIn.tangent.xyz * inversesqrt(tangentLength2), vertexIn.tangent.w < 0.0 ? -1.0 : 1.0) : vec4(0.0);
+  inputs.slots = textureSlots;
+  SurfaceMaterial m = evaluateSurfaceMaterial(inputs);
+  vec3 n = shadingNormal(m.normal, geometric, v);
+  // Alpha (docs/engine.md "Alpha"), in every layer: MASK exact, BLEND as coverage of the samples.
+  if (alphaMode == kAlphaModeMask && !surfacePresent(m.alpha, 0.0)) discard;
+  // A single-sample target ignores gl_SampleMask (no multisample fragment operations): there the
+  // one sample's bit decides through discard.
+  int sampleMask = coverageMask(m.alpha, uvec2(gl_FragCoord.xy), max(framebufferSamples, 1));
+  if (sampleMask == 0) discard;
+  gl_SampleMask[0] = sampleMask;
   float coverage = isGround ? 0.0 : 1.0;
   if (layer == kFrameLayerNormal) {
     fragColor = vec4(n, coverage);
@@ -104,11 +131,13 @@ void main() {
     fragColor = vec4(vec3(distance(cameraPosition, vertexIn.position)), coverage);
     return;
   }
-  vec3 albedo = baseColor;
+  vec3 albedo = m.baseColor;
   float ao = clamp(vertexIn.ao, 0.0, 1.0);
+  // The material's glTF occlusion (occlusionTexture R, 1 + strength (R - 1)); 1 without one.
+  float gltfOcclusion = m.occlusion;
   vec3 radiance;
   if (mode == kShadingModeUnlit) {
-    radiance = baseColor;
+    radiance = albedo;
   } else if (mode == kShadingModeMirror) {
     radiance = latLongIntensity * sampleLatLongBilinear(latLongMap, latLongUv(rotateAboutY(reflect(-v, n), latLongRotation)));
   } else if (mode == kShadingModeSh) {
@@ -118,10 +147,22 @@ void main() {
   } else if (mode == kShadingModeShAoBent) {
     vec3 bent = normalize(vertexIn.bentNormal);
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, bent) * ao;
+  } else if (mode == kShadingModeFullGltfAo) {
+    // The asset's AO in place of the baked visibility: unshadowed SH9 irradiance times it, the
+    // specular cone about n (glTF's occlusion has no direction).
+    vec3 irradiance = sphericalHarmonics9Irradiance(shRadiance, n) * gltfOcclusion;
+    radiance = fullMaterialModel(m, n, v, gltfOcclusion, n, irradiance);
   } else {
     vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, shRadiance);
-    radiance = mode == kShadingModePrt ? albedo / kPi * irradiance : fullMaterialModel(n, v, albedo, ao, visibilityConeAxis(n, ao), irradiance);
+    if (mode == kShadingModePrt) {
+      radiance = albedo / kPi * irradiance;
+    } else if (mode == kShadingModeFullBothAo) {
+      // Both: the baked visibility (in the transfer and the cone's axis) times the asset's AO.
+      radiance = fullMaterialModel(m, n, v, ao * gltfOcclusion, visibilityConeAxis(n, ao), irradiance * gltfOcclusion);
+    } else {
+      radiance = fullMaterialModel(m, n, v, ao, visibilityConeAxis(n, ao), irradiance);
+    }
   }
-  if (mode != kShadingModeUnlit) radiance += emissive;
+  if (mode != kShadingModeUnlit) radiance += m.emissive;
   fragColor = vec4(radiance, coverage);
 }

@@ -8,11 +8,14 @@ layout(location = 0) out vec4 fragColor;
 
 const float kValues[] = float[](
     kShadingModeUnlit, kShadingModeMirror, kShadingModeSh, kShadingModeShAo, kShadingModeShAoBent, kShadingModePrt,
-    kShadingModeFull, kFrameLayerRadiance, kFrameLayerNormal, kFrameLayerDepth, kToneCurveClamp,
+    kShadingModeFull, kShadingModeFullGltfAo, kShadingModeFullBothAo, kFrameLayerRadiance, kFrameLayerNormal, kFrameLayerDepth, kToneCurveClamp,
     kToneCurveAcesFitted, kToneCurveReinhard, kAttributePosition, kAttributeNormal, kAttributeAo,
     kAttributeBentNormal, kAttributeTransfer012, kAttributeTransfer345, kAttributeTransfer678,
     kTextureUnitLatLong, kTextureUnitSpecular, kTextureUnitBrdfLut, kTextureUnitPresent, kTextureUnitLive,
-    kTextureUnitReference, kTextureUnitColorMap, kRelMseEpsilon);
+    kTextureUnitReference, kTextureUnitColorMap, kRelMseEpsilon, kAttributeTexcoord0, kAttributeTexcoord1,
+    kAttributeTangent, kTextureUnitBaseColor, kTextureUnitMetallicRoughness, kTextureUnitNormal,
+    kTextureUnitOcclusion, kTextureUnitEmissive, kSlotBaseColor, kSlotMetallicRoughness, kSlotNormal, kSlotOcclusion,
+    kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend);
 
 void main() {
   int i = int(gl_FragCoord.x);

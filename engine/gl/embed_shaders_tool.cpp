@@ -3,7 +3,7 @@
 //
 // `#include "shared_constants.glsl"` is no file of shaders/: it is generated here from the C++
 // constants the shaders share with the engine (shading modes, frame layers, tone curves, vertex
-// attribute locations, texture units, the relMSE epsilon), which this tool includes, so the GLSL
+// attribute locations, texture units, texture slots, alpha modes, the relMSE epsilon), which this tool includes, so the GLSL
 // values are derived from the C++ ones and cannot disagree with them. A copy is written to
 // EXPANDED_DIR for reading.
 //
@@ -23,7 +23,9 @@
 #include <string>
 #include <vector>
 
+#include "core/material.h"
 #include "core/relative_squared_error.h"
+#include "core/texture.h"
 #include "core/tone_curve.h"
 #include "engine/gl/frame_layer.h"
 #include "engine/gl/gpu_mesh_attribute.h"
@@ -70,7 +72,9 @@ std::string sharedConstants() {
                         {"kShadingModeShAo", int(ShadingMode::ShAo)},
                         {"kShadingModeShAoBent", int(ShadingMode::ShAoBent)},
                         {"kShadingModePrt", int(ShadingMode::Prt)},
-                        {"kShadingModeFull", int(ShadingMode::Full)}});
+                        {"kShadingModeFull", int(ShadingMode::Full)},
+                        {"kShadingModeFullGltfAo", int(ShadingMode::FullGltfAo)},
+                        {"kShadingModeFullBothAo", int(ShadingMode::FullBothAo)}});
   text += intConstants("iblkit::FrameLayer (engine/gl/frame_layer.h)",
                        {{"kFrameLayerRadiance", int(FrameLayer::Radiance)},
                         {"kFrameLayerNormal", int(FrameLayer::Normal)},
@@ -86,7 +90,10 @@ std::string sharedConstants() {
                         {"kAttributeBentNormal", kAttributeBentNormal},
                         {"kAttributeTransfer012", kAttributeTransfer012},
                         {"kAttributeTransfer345", kAttributeTransfer345},
-                        {"kAttributeTransfer678", kAttributeTransfer678}});
+                        {"kAttributeTransfer678", kAttributeTransfer678},
+                        {"kAttributeTexcoord0", kAttributeTexcoord0},
+                        {"kAttributeTexcoord1", kAttributeTexcoord1},
+                        {"kAttributeTangent", kAttributeTangent}});
   text += intConstants("iblkit::TextureUnit (engine/gl/texture_unit.h)",
                        {{"kTextureUnitLatLong", kTextureUnitLatLong},
                         {"kTextureUnitSpecular", kTextureUnitSpecular},
@@ -94,7 +101,23 @@ std::string sharedConstants() {
                         {"kTextureUnitPresent", kTextureUnitPresent},
                         {"kTextureUnitLive", kTextureUnitLive},
                         {"kTextureUnitReference", kTextureUnitReference},
-                        {"kTextureUnitColorMap", kTextureUnitColorMap}});
+                        {"kTextureUnitColorMap", kTextureUnitColorMap},
+                        {"kTextureUnitBaseColor", kTextureUnitBaseColor},
+                        {"kTextureUnitMetallicRoughness", kTextureUnitMetallicRoughness},
+                        {"kTextureUnitNormal", kTextureUnitNormal},
+                        {"kTextureUnitOcclusion", kTextureUnitOcclusion},
+                        {"kTextureUnitEmissive", kTextureUnitEmissive}});
+  text += intConstants("iblkit::TextureSlot (core/texture.h)",
+                       {{"kSlotBaseColor", int(kSlotBaseColor)},
+                        {"kSlotMetallicRoughness", int(kSlotMetallicRoughness)},
+                        {"kSlotNormal", int(kSlotNormal)},
+                        {"kSlotOcclusion", int(kSlotOcclusion)},
+                        {"kSlotEmissive", int(kSlotEmissive)},
+                        {"kAllTextureSlots", int(kAllTextureSlots)}});
+  text += intConstants("iblkit::AlphaMode (core/material.h)",
+                       {{"kAlphaModeOpaque", int(AlphaMode::Opaque)},
+                        {"kAlphaModeMask", int(AlphaMode::Mask)},
+                        {"kAlphaModeBlend", int(AlphaMode::Blend)}});
   text += "// iblkit::kRelMseEpsilon (core/relative_squared_error.h)\nconst float kRelMseEpsilon = " +
           floatLiteral(float(kRelMseEpsilon)) + ";\n";
   return text + "#endif\n";

@@ -29,7 +29,7 @@ std::span<const float> bakedAttribute(const Mesh& mesh, const char* name, int co
 
 GpuMesh::GpuMesh(const Mesh& mesh) : indexCount_(GLsizei(mesh.indices.size())) {
   const std::size_t n = mesh.vertexCount();
-  const std::vector<Stream> streams = {
+  std::vector<Stream> streams = {
       {kAttributePosition, 3, {reinterpret_cast<const float*>(mesh.positions.data()), 3 * n}},
       {kAttributeNormal, 3, {reinterpret_cast<const float*>(mesh.normals.data()), 3 * n}},
       {kAttributeAo, 1, bakedAttribute(mesh, kAmbientOcclusionAttribute, 1)},
@@ -38,6 +38,14 @@ GpuMesh::GpuMesh(const Mesh& mesh) : indexCount_(GLsizei(mesh.indices.size())) {
       {kAttributeTransfer345, 3, bakedAttribute(mesh, kTransferAttributes[1], 3)},
       {kAttributeTransfer678, 3, bakedAttribute(mesh, kTransferAttributes[2], 3)},
   };
+  // The texture coordinates and tangents the mesh has; an absent one stays a disabled attribute.
+  auto optional = [&](GLuint location, int components, const auto& values) {
+    if (values.size() == n)
+      streams.push_back({location, components, {reinterpret_cast<const float*>(values.data()), std::size_t(components) * n}});
+  };
+  optional(kAttributeTexcoord0, 2, mesh.texcoords);
+  optional(kAttributeTexcoord1, 2, mesh.texcoords1);
+  optional(kAttributeTangent, 4, mesh.tangents);
   // One buffer: each attribute's array in turn (4-byte aligned), then the indices.
   std::size_t bytes = 0;
   for (const Stream& stream : streams) bytes += stream.data.size_bytes();

@@ -1,6 +1,7 @@
 #pragma once
 // A mesh on the GPU: one vertex array with the attributes mesh.vert reads (position, normal and
-// the baked _AO, _BENTNORMAL, _SHT0.._SHT2), and its triangle indices.
+// the baked _AO, _BENTNORMAL, _SHT0.._SHT2; TEXCOORD_0, TEXCOORD_1 and TANGENT where the mesh has
+// them), and its triangle indices.
 #include <epoxy/gl.h>
 
 #include "core/mesh.h"

@@ -14,6 +14,12 @@ enum GpuMeshAttribute : unsigned {
   kAttributeTransfer012 = 4,
   kAttributeTransfer345 = 5,
   kAttributeTransfer678 = 6,
+  // glTF TEXCOORD_0, TEXCOORD_1 and TANGENT (vec4, w the handedness). A mesh without one leaves
+  // the attribute disabled: the shader reads the generic value (0, 0, 0, 1), i.e. uv (0, 0) and a
+  // zero tangent, which surface_material.h treats as "no tangent".
+  kAttributeTexcoord0 = 7,
+  kAttributeTexcoord1 = 8,
+  kAttributeTangent = 9,
 };
 
 }  // namespace iblkit

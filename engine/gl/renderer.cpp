@@ -1,8 +1,10 @@
 #include "engine/gl/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <map>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -10,6 +12,7 @@
 #include "core/sh_rotation.h"
 #include "engine/gl/gpu_mesh.h"
 #include "engine/gl/gpu_textures.h"
+#include "engine/gl/material_textures.h"
 #include "engine/gl/shader_program.h"
 #include "engine/gl/texture_unit.h"
 
@@ -32,8 +35,9 @@ float envRotationFromBake(const EnvironmentStages& env, std::optional<float> deg
 struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;
-  // mesh.frag specialised per (mode, layer), compiled on first use.
-  std::map<std::pair<ShadingMode, FrameLayer>, ShaderProgram> meshPrograms;
+  // mesh.frag specialised per (mode, layer, textured), compiled on first use.
+  std::map<std::tuple<ShadingMode, FrameLayer, bool>, ShaderProgram> meshPrograms;
+  MaterialTextures materialTextures;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
   GLuint emptyVertexArray = 0;  // the fullscreen triangle needs a bound VAO but no attributes
@@ -42,23 +46,27 @@ struct Renderer::Impl {
   float rotationDegrees = 0.0f, intensity = 1.0f;
   int specularLevels = 1;
 
-  const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer) {
+  // `textured`: the variant that reads the material's texture slots (material.glsl's TEXTURED), for
+  // meshes with at least one slot bound; the others keep the cost of the untextured shader.
+  const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, bool textured) {
     // The feature layers do not depend on the mode: one program each.
     if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
-    const auto key = std::make_pair(mode, layer);
+    const auto key = std::make_tuple(mode, layer, textured);
     auto found = meshPrograms.find(key);
     if (found == meshPrograms.end()) {
       const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
-                                  "\n#define FRAME_LAYER " + std::to_string(int(layer));
+                                  "\n#define FRAME_LAYER " + std::to_string(int(layer)) +
+                                  "\n#define TEXTURED " + std::to_string(int(textured));
       found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
     }
     return found->second;
   }
 };
 
-Renderer::Renderer(const BakedScene& bake) : impl_(std::make_unique<Impl>()) {
+Renderer::Renderer(const BakedScene& bake, float textureAnisotropy) : impl_(std::make_unique<Impl>()) {
   impl_->scene = bake.scene;
   for (const Mesh& mesh : bake.scene.meshes) impl_->meshes.emplace_back(mesh);
+  impl_->materialTextures = MaterialTextures(bake.scene, textureAnisotropy);
   glCreateVertexArrays(1, &impl_->emptyVertexArray);
   setEnvironment(bake.env);
 }
@@ -84,6 +92,8 @@ void Renderer::setMaterial(int materialIndex, const Material& material) {
 const std::vector<Material>& Renderer::materials() const { return impl_->scene.materials; }
 
 const Scene& Renderer::scene() const { return impl_->scene; }
+
+float Renderer::textureAnisotropy() const { return impl_->materialTextures.anisotropy(); }
 
 void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width,
                       int height) {
@@ -119,32 +129,51 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
 
-  const ShaderProgram& program = r.meshProgram(settings.mode, settings.layer);
   // SH9 radiance turned by the extra rotation (the scene's is in the baked coefficients).
   const SphericalHarmonics9 sh =
       settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
-  program.set("viewProjection", viewProjection);
-  program.set("cameraPosition", camera.position);
-  program.setArray("shRadiance", sh.coefficients.data(), kShCoefficients);
-  program.set("latLongRotation", latLongRotation);
-  program.set("latLongIntensity", r.intensity);
-  program.set("specularRotation", inverseRotation(settings.envRotationDegrees));
-  program.set("specularLevels", float(r.specularLevels));
-  program.use();
+  GLint samples = 1;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  auto setFrameUniforms = [&](const ShaderProgram& program) {
+    program.set("framebufferSamples", int(samples));
+    program.set("viewProjection", viewProjection);
+    program.set("cameraPosition", camera.position);
+    program.setArray("shRadiance", sh.coefficients.data(), kShCoefficients);
+    program.set("latLongRotation", latLongRotation);
+    program.set("latLongIntensity", r.intensity);
+    program.set("specularRotation", inverseRotation(settings.envRotationDegrees));
+    program.set("specularLevels", float(r.specularLevels));
+  };
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
+  glCullFace(GL_BACK);
+  const ShaderProgram* current = nullptr;
+  std::vector<const ShaderProgram*> prepared;  // programs whose frame uniforms are set
   for (std::size_t i = 0; i < r.meshes.size(); ++i) {
     const Mesh& mesh = r.scene.meshes[i];
-    const Material m = clampedToGltfRanges(r.scene.materials.at(std::size_t(mesh.material)));
+    const Material& material = r.scene.materials.at(std::size_t(mesh.material));
+    // The slots bound (present, switched on, uploaded) choose the program variant.
+    const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
+    const ShaderProgram& program = r.meshProgram(settings.mode, settings.layer, slots != 0);
+    if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
+      setFrameUniforms(program);
+      prepared.push_back(&program);
+    }
+    if (current != &program) {
+      program.use();
+      current = &program;
+    }
     program.set("isGround", int(mesh.isGround));
-    program.set("baseColor", m.baseColor);
-    program.set("metallic", m.metallic);
-    program.set("roughness", m.roughness);
-    program.set("specularWeight", m.specular);
-    program.set("specularColor", m.specularColor);
-    program.set("emissive", m.emissive);
+    setMaterialUniforms(program, material, slots);
+    // glTF 2.0 section 3.9.5 (doubleSided): false culls back faces; true shades both sides.
+    if (material.doubleSided)
+      glDisable(GL_CULL_FACE);
+    else
+      glEnable(GL_CULL_FACE);
     r.meshes[i].draw();
   }
+  glDisable(GL_CULL_FACE);
+  for (GLuint unit = kTextureUnitBaseColor; unit <= kTextureUnitEmissive; ++unit) glBindSampler(unit, 0);
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(0);
   glUseProgram(0);

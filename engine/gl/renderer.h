@@ -11,6 +11,7 @@
 #include "bakefile/bake_folder.h"
 #include "core/camera.h"
 #include "core/material.h"
+#include "core/texture.h"
 #include "core/tone_curve.h"
 #include "engine/gl/frame_layer.h"
 #include "engine/gl/shading_mode.h"
@@ -30,6 +31,10 @@ struct FrameSettings {
   // Shade every sample of a multisampled target (supersampling): the shading is then averaged
   // over the pixel like the reference's pixel filter does, not only the edges. N times the cost.
   bool sampleShading = false;
+  // The material texture slots used (TextureSlot bits, core/texture.h): a slot switched off reads
+  // as "no texture" (the factor alone), to see what each contributes (the viewer's panel,
+  // iblkit-view --texture-slots, the benchmarks).
+  unsigned textureSlots = kAllTextureSlots;
 };
 
 // The envRotationDegrees that shows the environment at the absolute rotation `degrees` about +Y
@@ -37,12 +42,19 @@ struct FrameSettings {
 // `degrees` is unset (the bake's own rotation).
 float envRotationFromBake(const EnvironmentStages& env, std::optional<float> degrees);
 
+// The anisotropy the renderer's trilinear samplers ask for (where the driver offers it).
+inline constexpr float kDefaultTextureAnisotropy = 16.0f;
+
 class Renderer {
  public:
-  // Uploads the scene's meshes (with their baked attributes) and environment stages. Needs a
+  // Uploads the scene's meshes (with their baked attributes), material textures (their core mip
+  // chains, MaterialTextures; trilinear samplers with up to 16x anisotropy where the driver offers
+  // it) and environment stages. Needs a
   // current OpenGL 4.5 core context (HeadlessContext or a window's); the Renderer must be
   // destroyed while that context is still current. Throws Error for shader build failures.
-  explicit Renderer(const BakedScene& bake);
+  // `textureAnisotropy` caps the trilinear samplers' anisotropy (1: isotropic, as the reference's
+  // footprint rule is; clamped to the driver's maximum).
+  explicit Renderer(const BakedScene& bake, float textureAnisotropy = kDefaultTextureAnisotropy);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -55,6 +67,8 @@ class Renderer {
   const std::vector<Material>& materials() const;
   // The scene as given to the constructor (its camera, bounds, image size).
   const Scene& scene() const;
+  // The anisotropy the trilinear texture samplers use (1 where the driver offers none).
+  float textureAnisotropy() const;
 
   // Renders into `framebuffer` (0 = the default one) over the viewport (0, 0, width, height): clears
   // colour and depth, draws the sky (if settings.drawSky) and every mesh. Afterwards `framebuffer`

@@ -15,6 +15,11 @@ enum class ShadingMode {
   ShAoBent,  // SH9 irradiance along the baked bent normal, times the ambient occlusion
   Prt,       // baked SH transfer dotted with the environment's SH9 radiance, times albedo / pi
   Full,      // the material model: diffuse (PRT) + split-sum specular with occlusion terms
+  // glTF occlusion (the material's occlusionTexture, 1 + strength (R - 1); glTF 2.0 section
+  // 3.9.3: it applies to indirect light, here all the environment's): Full with the asset's AO
+  // texture in place of the baked per-vertex visibility, and Full with both (their product).
+  FullGltfAo,  // Full, unshadowed SH9 irradiance, the glTF occlusion as the AO term
+  FullBothAo,  // Full, baked AO times the glTF occlusion
 };
 
 // The one spelling of each mode (iblkit-view --mode and the viewer's menu; the report passes them on), in
@@ -22,12 +27,12 @@ enum class ShadingMode {
 inline constexpr EnumName<ShadingMode> kShadingModeNames[] = {
     {ShadingMode::Unlit, "unlit"}, {ShadingMode::Mirror, "mirror"},       {ShadingMode::Sh, "sh"},
     {ShadingMode::ShAo, "sh-ao"},  {ShadingMode::ShAoBent, "sh-ao-bent"}, {ShadingMode::Prt, "prt"},
-    {ShadingMode::Full, "full"}};
+    {ShadingMode::Full, "full"},   {ShadingMode::FullGltfAo, "full-gltf-ao"}, {ShadingMode::FullBothAo, "full-both-ao"}};
 
 // Every mode, in the order of the enum (for benchmarks, tests and the viewer's mode menu).
 inline constexpr ShadingMode kShadingModes[] = {ShadingMode::Unlit, ShadingMode::Mirror,   ShadingMode::Sh,
                                                 ShadingMode::ShAo,  ShadingMode::ShAoBent, ShadingMode::Prt,
-                                                ShadingMode::Full};
+                                                ShadingMode::Full,  ShadingMode::FullGltfAo, ShadingMode::FullBothAo};
 
 // The mode named `name` in kShadingModeNames. Throws Error("--mode: unknown shading mode '<name>'
 // (expected one of unlit, mirror, ...)") for anything else.

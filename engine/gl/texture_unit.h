@@ -15,6 +15,12 @@ enum TextureUnit : unsigned {
   kTextureUnitLive = 4,       // difference_heatmap.frag: the live frame
   kTextureUnitReference = 5,  // difference_heatmap.frag: the path-traced reference
   kTextureUnitColorMap = 6,   // difference_heatmap.frag: the heat map's colour map (core/color_map.h)
+  // material.glsl: the five glTF material slots (core/material.h), in TextureSlot bit order.
+  kTextureUnitBaseColor = 7,
+  kTextureUnitMetallicRoughness = 8,
+  kTextureUnitNormal = 9,
+  kTextureUnitOcclusion = 10,
+  kTextureUnitEmissive = 11,
 };
 
 }  // namespace iblkit

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/gl/shading_mode.h"
+#include "engine/gl/texture_slot_names.h"
 
 namespace iblkit {
 
@@ -89,6 +90,22 @@ void materialSection(Renderer& renderer, const std::vector<Material>& originals,
   if (changed) renderer.setMaterial(selected, material);
 }
 
+// One checkbox per texture slot (FrameSettings::textureSlots): a slot switched off shows what the
+// material is without it (its factor alone), to see what the texture contributes.
+void textureSection(FrameSettings& settings, const Renderer& renderer) {
+  const Scene& scene = renderer.scene();
+  ImGui::Text("%zu textures, %zu images, anisotropy %.0f", scene.textures.size(), scene.images.size(),
+              renderer.textureAnisotropy());
+  for (const EnumName<TextureSlot>& slot : kTextureSlotNames) {
+    bool on = (settings.textureSlots & slot.value) != 0;
+    if (ImGui::Checkbox(std::string(slot.name).c_str(), &on))
+      settings.textureSlots = on ? settings.textureSlots | slot.value : settings.textureSlots & ~unsigned(slot.value);
+  }
+  if (ImGui::Button("all")) settings.textureSlots = kAllTextureSlots;
+  ImGui::SameLine();
+  if (ImGui::Button("none")) settings.textureSlots = 0;
+}
+
 void comparisonSection(ReferenceComparison& comparison, bool cameraMoved) {
   ImGui::Text("reference: %s (%dx%d)", comparison.file().filename().string().c_str(), comparison.width(),
               comparison.height());
@@ -139,6 +156,8 @@ PanelActions Panel::build(PanelContext& context) {
     ImGui::Checkbox("sky", &settings.drawSky);
     if (ImGui::CollapsingHeader("environment", ImGuiTreeNodeFlags_DefaultOpen))
       environmentSection(context.environments);
+    if (ImGui::CollapsingHeader("textures", context.renderer.scene().textures.empty() ? 0 : ImGuiTreeNodeFlags_DefaultOpen))
+      textureSection(settings, context.renderer);
     if (ImGui::CollapsingHeader("material"))
       materialSection(context.renderer, context.originalMaterials, selectedMaterial_);
     if (context.comparison && ImGui::CollapsingHeader("reference", ImGuiTreeNodeFlags_DefaultOpen))

@@ -61,6 +61,7 @@ class Viewer {
     settings_.exposure = options.exposure;
     settings_.envRotationDegrees = envRotationFromBake(bake_.env, options.envRotation);
     settings_.drawSky = !options.noSky;
+    settings_.textureSlots = options.textureSlots;
     // The reference decides the size (same camera, same pixels) unless --width/--height do.
     int width = bake_.scene.width, height = bake_.scene.height;
     if (!options.reference.empty()) {
@@ -75,7 +76,7 @@ class Viewer {
     window_.emplace(
         WindowContext::open(width, height, "iblkit-view: " + options.input.filename().string(), false));
     enableGlDebugOutput(GlDebugMode::Strict);
-    renderer_ = std::make_unique<Renderer>(bake_);
+    renderer_ = std::make_unique<Renderer>(bake_, options.anisotropy);
     originalMaterials_ = renderer_->materials();
     camera_.emplace(sceneCamera(bake_.scene, float(width) / float(height)), bake_.scene.bounds);
     if (!options.reference.empty()) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "bakefile/bake_folder.h"
+#include "engine/gl/renderer.h"
 #include "engine/view/environment_switcher.h"
 
 namespace iblkit {
@@ -26,6 +27,8 @@ struct ViewerOptions {
   std::optional<float> envRotation;  // absolute about +Y (docs/conventions.md); unset: the bake's
   int samples = 1;  // MSAA
   bool noSky = false;
+  unsigned textureSlots = kAllTextureSlots;       // FrameSettings::textureSlots at start
+  float anisotropy = kDefaultTextureAnisotropy;  // Renderer's textureAnisotropy
   std::filesystem::path envDir = "assets/hdri";
   std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)
   std::filesystem::path reference;    // --reference REF.exr

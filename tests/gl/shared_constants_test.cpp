@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/material.h"
 #include "core/relative_squared_error.h"
 #include "core/tone_curve.h"
 #include "engine/gl/frame_layer.h"
@@ -23,14 +24,20 @@ namespace {
 const std::vector<float> kCppValues = {
     float(ShadingMode::Unlit),    float(ShadingMode::Mirror),   float(ShadingMode::Sh),
     float(ShadingMode::ShAo),     float(ShadingMode::ShAoBent), float(ShadingMode::Prt),
-    float(ShadingMode::Full),     float(FrameLayer::Radiance),  float(FrameLayer::Normal),
+    float(ShadingMode::Full),     float(ShadingMode::FullGltfAo), float(ShadingMode::FullBothAo),
+    float(FrameLayer::Radiance),  float(FrameLayer::Normal),
     float(FrameLayer::Depth),     float(ToneCurve::Clamp),      float(ToneCurve::AcesFitted),
     float(ToneCurve::Reinhard),   float(kAttributePosition),    float(kAttributeNormal),
     float(kAttributeAo),          float(kAttributeBentNormal),  float(kAttributeTransfer012),
     float(kAttributeTransfer345), float(kAttributeTransfer678), float(kTextureUnitLatLong),
     float(kTextureUnitSpecular),  float(kTextureUnitBrdfLut),   float(kTextureUnitPresent),
     float(kTextureUnitLive),      float(kTextureUnitReference), float(kTextureUnitColorMap),
-    float(kRelMseEpsilon)};
+    float(kRelMseEpsilon),        float(kAttributeTexcoord0),   float(kAttributeTexcoord1),
+    float(kAttributeTangent),     float(kTextureUnitBaseColor), float(kTextureUnitMetallicRoughness),
+    float(kTextureUnitNormal),    float(kTextureUnitOcclusion), float(kTextureUnitEmissive),
+    float(kSlotBaseColor),        float(kSlotMetallicRoughness), float(kSlotNormal),
+    float(kSlotOcclusion),        float(kSlotEmissive),         float(kAllTextureSlots),
+    float(AlphaMode::Opaque),     float(AlphaMode::Mask),       float(AlphaMode::Blend)};
 
 TEST(SharedConstants, GlslValuesEqualTheCppOnes) {
   const int n = int(kCppValues.size()) + 1;  // one texel past the table: the probe's -1
@@ -63,6 +70,11 @@ TEST(SharedConstants, MeshAttributesAreAtTheGpuMeshLocations) {
   EXPECT_EQ(attributeLocation(mesh, "inTransfer012"), GLint(kAttributeTransfer012));
   EXPECT_EQ(attributeLocation(mesh, "inTransfer345"), GLint(kAttributeTransfer345));
   EXPECT_EQ(attributeLocation(mesh, "inTransfer678"), GLint(kAttributeTransfer678));
+  // Texture coordinates and tangents are read by the textured variant (material.glsl's TEXTURED).
+  const ShaderProgram textured("mesh.vert", "mesh.frag", "#define TEXTURED 1");
+  EXPECT_EQ(attributeLocation(textured, "inTexcoord0"), GLint(kAttributeTexcoord0));
+  EXPECT_EQ(attributeLocation(textured, "inTexcoord1"), GLint(kAttributeTexcoord1));
+  EXPECT_EQ(attributeLocation(textured, "inTangent"), GLint(kAttributeTangent));
   checkGlErrors("attribute locations");
 }
 
@@ -75,6 +87,15 @@ TEST(SharedConstants, SamplersReadTheTextureUnitsTheCppBinds) {
   const ShaderProgram mesh("mesh.vert", "mesh.frag");
   EXPECT_EQ(samplerUnit(mesh, "specularCube"), GLint(kTextureUnitSpecular));
   EXPECT_EQ(samplerUnit(mesh, "brdfLut"), GLint(kTextureUnitBrdfLut));
+  // The material's slots are read in the textured variant (renderer.cpp's TEXTURED 1); the glTF
+  // occlusion by the modes that use it.
+  const ShaderProgram textured("mesh.vert", "mesh.frag",
+                               "#define TEXTURED 1\n#define SHADING_MODE " + std::to_string(int(ShadingMode::FullBothAo)));
+  EXPECT_EQ(samplerUnit(textured, "baseColorTexture"), GLint(kTextureUnitBaseColor));
+  EXPECT_EQ(samplerUnit(textured, "metallicRoughnessTexture"), GLint(kTextureUnitMetallicRoughness));
+  EXPECT_EQ(samplerUnit(textured, "normalTexture"), GLint(kTextureUnitNormal));
+  EXPECT_EQ(samplerUnit(textured, "occlusionTexture"), GLint(kTextureUnitOcclusion));
+  EXPECT_EQ(samplerUnit(textured, "emissiveTexture"), GLint(kTextureUnitEmissive));
   const ShaderProgram sky("fullscreen.vert", "sky.frag");
   EXPECT_EQ(samplerUnit(sky, "latLongMap"), GLint(kTextureUnitLatLong));
   const ShaderProgram present("fullscreen.vert", "present.frag");
