@@ -250,7 +250,7 @@ std::string imageLabel(const tinygltf::Image& image) {
     const std::size_t comma = image.uri.rfind("data:", 0) == 0 ? image.uri.find(',') : std::string::npos;
     return printableExcerpt(comma == std::string::npos ? image.uri : image.uri.substr(0, comma + 1), 80);
   }
-  if (image.as_is) return "data:" + image.mimeType;
+  if (image.as_is) return "data:" + image.mimeType + ";base64,";
   return printableExcerpt(image.name, 80);
 }
 

@@ -48,6 +48,33 @@ void generateMissingTangents(Scene& scene) {
   }
 }
 
+// A slot reading a TEXCOORD set its primitive lacks (the glTF validator's error
+// MESH_PRIMITIVE_MISSING_TEXCOORD, or a .json override giving a texture to an untextured model)
+// reads uv (0, 0) everywhere, as a missing vertex attribute reads 0 in OpenGL: the set is filled
+// with zeros and a warning, so every program indexes the same, present uvs.
+void fillMissingTexcoords(Scene& scene) {
+  for (Mesh& mesh : scene.meshes) {
+    if (mesh.material < 0 || mesh.material >= static_cast<int>(scene.materials.size())) continue;
+    const Material& m = scene.materials[mesh.material];
+    for (int set = 0; set < 2; ++set) {
+      std::vector<glm::vec2>& uvs = set == 0 ? mesh.texcoords : mesh.texcoords1;
+      bool reads = false;
+      for (const TextureRef* ref : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
+                                    &m.occlusionTexture, &m.emissiveTexture})
+        reads = reads || (ref->present() && ref->texCoord == set);
+      if (!reads || !uvs.empty()) continue;
+      uvs.assign(mesh.vertexCount(), glm::vec2(0.0f));
+      const bool model = mesh.source.model >= 0 && mesh.source.model < static_cast<int>(scene.modelFiles.size());
+      const std::string where = mesh.source.mesh >= 0 ? "mesh " + std::to_string(mesh.source.mesh) + " primitive " +
+                                                            std::to_string(mesh.source.primitive)
+                                                      : "'" + mesh.name + "'";
+      warn(model ? scene.modelFiles[mesh.source.model] : scene.file,
+           where + ": material '" + m.name + "' reads TEXCOORD_" + std::to_string(set) +
+               ", which the mesh does not have; its textures read uv (0, 0)");
+    }
+  }
+}
+
 }  // namespace
 
 Scene loadScene(const std::filesystem::path& path) {
@@ -59,6 +86,7 @@ Scene loadScene(const std::filesystem::path& path) {
     scene = sceneFromGltf(path);
   else
     fail(path, "unknown scene type '" + path.extension().string() + "' (expected .json, .gltf or .glb)");
+  fillMissingTexcoords(scene);
   generateMissingTangents(scene);
   return scene;
 }

@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "core/gltf_load.h"
 #include "core/input_file.h"
 #include "core/procedural_mesh.h"
+#include "core/texture_image.h"
 
 namespace iblkit {
 
@@ -140,18 +142,108 @@ class ObjectReader {
   const fs::path& file_;
 };
 
+// The images and textures material overrides add to the scene: one image and one texture (repeat
+// wrap, trilinear) per distinct file, however many materials use it.
+class OverrideTextures {
+ public:
+  OverrideTextures(Scene& scene, const fs::path& folder) : scene_(scene), folder_(folder) {}
+
+  // The texture index for `name` (relative to the scene file's folder, as model files are),
+  // read through readInputFile and decoded (texture_image.h) the first time. Errors name `key`.
+  int texture(const std::string& name, const ObjectReader& reader, const char* key) {
+    const fs::path path = (folder_ / name).lexically_normal();
+    const auto found = textures_.find(path);
+    if (found != textures_.end()) return found->second;
+    const std::string what = reader.keyPath(key) + " '" + printableExcerpt(name, 80) + "'";
+    std::vector<char> bytes;
+    try {
+      bytes = readInputFile(path, kMaxBinaryInputBytes);
+    } catch (const Error& e) {
+      fail(reader.file(), what + ": " + e.what());
+    }
+    TextureImage image;
+    image.name = path.filename().string();
+    image.file = path;
+    image.uri = name;
+    decodeTextureImage(image, std::vector<std::uint8_t>(bytes.begin(), bytes.end()), reader.file(), what);
+    Texture texture;
+    texture.name = image.name;
+    scene_.images.push_back(std::move(image));
+    texture.image = int(scene_.images.size()) - 1;
+    scene_.textures.push_back(texture);
+    return textures_[path] = int(scene_.textures.size()) - 1;
+  }
+
+ private:
+  Scene& scene_;
+  fs::path folder_;
+  std::map<fs::path, int> textures_;
+};
+
+// A texture slot override: {"file": ..., "uvScale": s or [su, sv], "texCoord": 0 or 1} and, for
+// the normal and occlusion slots, "scale" or "strength". It replaces the slot's texture
+// reference; uvScale becomes a KHR_texture_transform scale (tiling).
+void applyTextureOverride(const ObjectReader& m, const char* key, TextureRef& ref, float* factor,
+                          OverrideTextures& textures) {
+  if (!m.has(key)) return;
+  const char* factorKey = std::string(key) == "normalTexture"      ? "scale"
+                          : std::string(key) == "occlusionTexture" ? "strength"
+                                                                   : nullptr;
+  const ObjectReader t = factorKey ? ObjectReader(m.at(key), m.keyPath(key), m.file(), {"file", "uvScale", "texCoord", factorKey})
+                                   : ObjectReader(m.at(key), m.keyPath(key), m.file(), {"file", "uvScale", "texCoord"});
+  TextureRef result;
+  result.texture = textures.texture(t.string("file"), m, key);
+  result.texCoord = t.integer("texCoord", 0, 0, 1);
+  if (t.has("uvScale")) {
+    const json& value = t.at("uvScale");
+    const auto v = value.is_number() ? ObjectReader::numbers(json::array({value, value}), 2)
+                                     : ObjectReader::numbers(value, 2);
+    if (!v || (*v)[0] == 0.0 || (*v)[1] == 0.0)
+      t.wrongValue("uvScale", "a nonzero number or an array of 2 nonzero numbers");
+    result.transform.scale = glm::vec2(float((*v)[0]), float((*v)[1]));
+  }
+  if (factorKey) {
+    // glTF: normalTexture.scale is any number; occlusionTexture.strength is in [0, 1].
+    const bool normal = std::string(factorKey) == "scale";
+    *factor = float(t.number(factorKey, 1.0, normal ? -kInfinity : 0.0, normal ? kInfinity : 1.0));
+  }
+  ref = result;
+}
+
 // "material": {...} overrides on top of `material`; ranges follow glTF (emissive unbounded, as
 // with KHR_materials_emissive_strength; specularColor up to the extension's practical range).
-void applyMaterialOverrides(const ObjectReader& parent, Material& material) {
+void applyMaterialOverrides(const ObjectReader& parent, Material& material, OverrideTextures& textures) {
   if (!parent.has("material")) return;
   const ObjectReader m(parent.at("material"), parent.keyPath("material"), parent.file(),
-                       {"baseColor", "metallic", "roughness", "specular", "specularColor", "emissive"});
+                       {"baseColor", "metallic", "roughness", "specular", "specularColor", "emissive", "alpha",
+                        "alphaMode", "alphaCutoff", "doubleSided", "baseColorTexture", "metallicRoughnessTexture",
+                        "normalTexture", "occlusionTexture", "emissiveTexture"});
   material.baseColor = m.color("baseColor", material.baseColor, 1.0);
   material.metallic = float(m.number("metallic", material.metallic, 0.0, 1.0));
   material.roughness = float(m.number("roughness", material.roughness, 0.0, 1.0));
   material.specular = float(m.number("specular", material.specular, 0.0, 1.0));
   material.specularColor = m.color("specularColor", material.specularColor, kInfinity);
   material.emissive = m.color("emissive", material.emissive, kInfinity);
+  material.alpha = float(m.number("alpha", material.alpha, 0.0, 1.0));
+  if (m.has("alphaMode")) {
+    const json& mode = m.at("alphaMode");
+    if (mode == "OPAQUE") material.alphaMode = AlphaMode::Opaque;
+    else if (mode == "MASK") material.alphaMode = AlphaMode::Mask;
+    else if (mode == "BLEND") material.alphaMode = AlphaMode::Blend;
+    else m.wrongValue("alphaMode", "\"OPAQUE\", \"MASK\" or \"BLEND\"");
+  }
+  material.alphaCutoff = float(m.number("alphaCutoff", material.alphaCutoff, 0.0));
+  material.doubleSided = m.boolean("doubleSided", material.doubleSided);
+  applyTextureOverride(m, "baseColorTexture", material.baseColorTexture, nullptr, textures);
+  applyTextureOverride(m, "metallicRoughnessTexture", material.metallicRoughnessTexture, nullptr, textures);
+  applyTextureOverride(m, "normalTexture", material.normalTexture, &material.normalScale, textures);
+  applyTextureOverride(m, "occlusionTexture", material.occlusionTexture, &material.occlusionStrength, textures);
+  applyTextureOverride(m, "emissiveTexture", material.emissiveTexture, nullptr, textures);
+}
+
+bool hasTexture(const Material& m) {
+  return m.baseColorTexture.present() || m.metallicRoughnessTexture.present() || m.normalTexture.present() ||
+         m.occlusionTexture.present() || m.emissiveTexture.present();
 }
 
 glm::mat4 modelTransform(const ObjectReader& model) {
@@ -200,7 +292,7 @@ GltfContents shapeContents(const ObjectReader& model) {
   return contents;
 }
 
-void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene) {
+void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene, OverrideTextures& textures) {
   const json& models = root.required("models");
   if (!models.is_array() || models.empty()) root.wrongValue("models", "a non-empty array of models");
   for (std::size_t i = 0; i < models.size(); ++i) {
@@ -232,7 +324,7 @@ void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene) 
       for (TextureRef* ref : {&material.baseColorTexture, &material.metallicRoughnessTexture,
                               &material.normalTexture, &material.occlusionTexture, &material.emissiveTexture})
         if (ref->present()) ref->texture += textureOffset;
-      applyMaterialOverrides(model, material);
+      applyMaterialOverrides(model, material, textures);
       scene.materials.push_back(material);
     }
     for (Mesh& mesh : contents.meshes) {
@@ -253,8 +345,9 @@ void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene) 
   }
 }
 
-// A square of side `size` at height `height`, centred under the objects, facing +Y.
-Mesh groundMesh(const glm::vec3& center, float height, float size, int material) {
+// A square of side `size` at height `height`, centred under the objects, facing +Y. With
+// `texcoords`, TEXCOORD_0 spans [0, 1] over it, u along +X and v along +Z.
+Mesh groundMesh(const glm::vec3& center, float height, float size, int material, bool texcoords) {
   Mesh ground;
   ground.name = "ground";
   ground.isGround = true;
@@ -264,13 +357,14 @@ Mesh groundMesh(const glm::vec3& center, float height, float size, int material)
   for (const glm::vec2 corner : {glm::vec2(-h, -h), glm::vec2(h, -h), glm::vec2(h, h), glm::vec2(-h, h)}) {
     ground.positions.emplace_back(center.x + corner.x, height, center.z + corner.y);
     ground.normals.emplace_back(0.0f, 1.0f, 0.0f);
+    if (texcoords) ground.texcoords.push_back(corner / size + 0.5f);
   }
   // Counter-clockwise seen from above: cross(p3 - p0, p2 - p0) points along +Y.
   ground.indices = {0, 3, 2, 0, 2, 1};
   return ground;
 }
 
-void readGround(const ObjectReader& root, Scene& scene) {
+void readGround(const ObjectReader& root, Scene& scene, OverrideTextures& textures) {
   if (!root.has("ground")) return;
   const ObjectReader ground(root.at("ground"), "ground", root.file(),
                             {"enabled", "height", "size", "material"});
@@ -288,9 +382,10 @@ void readGround(const ObjectReader& root, Scene& scene) {
   material.name = "ground";
   material.baseColor = glm::vec3(0.5f);
   material.metallic = 0.0f;
-  applyMaterialOverrides(ground, material);
+  applyMaterialOverrides(ground, material, textures);
   scene.materials.push_back(material);
-  scene.meshes.push_back(groundMesh(scene.bounds.center(), height, size, int(scene.materials.size()) - 1));
+  scene.meshes.push_back(
+      groundMesh(scene.bounds.center(), height, size, int(scene.materials.size()) - 1, hasTexture(material)));
 }
 
 void readEnvironment(const ObjectReader& root, const fs::path& folder, Scene& scene) {
@@ -350,9 +445,10 @@ Scene loadSceneFile(const fs::path& file) {
 
   Scene scene;
   scene.file = file;
-  readModels(root, folder, scene);
+  OverrideTextures textures(scene, folder);
+  readModels(root, folder, scene, textures);
   scene.bounds = objectBounds(scene.meshes);
-  readGround(root, scene);
+  readGround(root, scene, textures);
   readEnvironment(root, folder, scene);
   readCamera(root, scene);
   scene.width = root.integer("width", kDefaultImageWidth, 1, kMaxImageSize);

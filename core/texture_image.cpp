@@ -67,13 +67,21 @@ void decodeWithStb(TextureImage& image, std::span<const std::uint8_t> bytes, boo
   }
   int width = 0, height = 0, channels = 0;
   if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels))
-    fail(file, what + ": " + format + " does not decode (" + stbi_failure_reason() + ")");
+    fail(file, what + ": " + format + " does not decode (" + printableExcerpt(stbi_failure_reason(), 80) + ")");
   requireTextureSize(width, height, file, what);
+  // stb_image decodes a truncated JPEG to the end, as grey blocks: a 700-byte header claiming
+  // 16000 x 16000 took 35 s and 2 GiB. Every 8 x 8 block of a full-resolution component codes at
+  // least its DC difference, a Huffman code of at least 1 bit (ITU T.81 F.1.2.1, and the first DC
+  // scan of a progressive file, G.1.2.1), so a real file has at least one byte per 8 blocks.
+  const long long blocks = (width + 7LL) / 8 * ((height + 7LL) / 8);
+  if (!png && (long long)(bytes.size()) * 8 < blocks)
+    fail(file, what + ": JPEG of " + std::to_string(bytes.size()) + " bytes is too short for its " +
+                   sizeText(width, height) + " pixels (truncated?)");
 
   int decodedWidth = 0, decodedHeight = 0, fileChannels = 0;
   const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
       stbi_load_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &fileChannels, 4), &stbi_image_free);
-  if (!pixels) fail(file, what + ": " + format + " does not decode (" + stbi_failure_reason() + ")");
+  if (!pixels) fail(file, what + ": " + format + " does not decode (" + printableExcerpt(stbi_failure_reason(), 80) + ")");
   if (decodedWidth != width || decodedHeight != height)
     fail(file, what + ": " + format + " decodes to " + sizeText(decodedWidth, decodedHeight) +
                    " pixels, not the " + sizeText(width, height) + " of its header");

@@ -4,7 +4,9 @@
 // The format is decided by the bytes' signature, not by the name or the declared mimeType.
 // Before anything is decoded, the size is read from the header (PNG IHDR, stbi_info for JPEG,
 // WebPGetInfo for WebP: for VP8X files the canvas) and checked against kMaxTextureSize, so a
-// crafted header claiming 64k x 64k is refused without allocating its pixels. Every failure is
+// crafted header claiming 64k x 64k is refused without allocating its pixels; so is a JPEG with
+// fewer bytes than its 8 x 8 blocks need (one bit each at least), which stb_image would decode
+// for seconds as grey blocks. Every failure is
 // one line: "<file>: <what>: <problem>", with stb_image's or libwebp's reason for data that does
 // not decode.
 

@@ -9,13 +9,16 @@
 #include <fstream>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "bakefile/bake_record.h"
 #include "bakefile/sh9_json.h"
 #include "core/error.h"
 #include "core/gltf_load.h"
 #include "core/image_io.h"
+#include "core/input_file.h"
 #include "core/scene_file.h"
+#include "core/texture_image.h"
 
 namespace iblkit::fuzz {
 namespace {
@@ -30,6 +33,12 @@ constexpr std::string_view kSceneModel =
     R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],)"
     R"("bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36,"uri":)"
     R"("data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+// A 1 x 1 RGB PNG, albedo.png, for a scene's texture overrides to name.
+constexpr char kSceneTextureBytes[] =
+    "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x01\x00\x00\x00\x01"
+    "\x08\x02\x00\x00\x00\x90\x77\x53\xde\x00\x00\x00\x0c\x49\x44\x41\x54\x78\x9c\x63\x38\x91\x62\x04\x00"
+    "\x03\x56\x01\x5f\xe8\x17\x84\x52\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82";
+constexpr std::string_view kSceneTexture(kSceneTextureBytes, sizeof(kSceneTextureBytes) - 1);
 constexpr std::string_view kSceneEnvironment = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n\x80\x80\x80\x81\x80\x80\x80\x81";
 
 void writeFile(const fs::path& file, std::string_view bytes) {
@@ -47,6 +56,7 @@ const fs::path& scratchFolder() {
     fs::create_directories(*path);
     writeFile(*path / "model.gltf", kSceneModel);
     writeFile(*path / "env.hdr", kSceneEnvironment);
+    writeFile(*path / "albedo.png", kSceneTexture);
     setWarningSink(&ignoreWarning);
     std::atexit([] {
       std::error_code ignored;
@@ -69,6 +79,7 @@ std::string fileName(Loader loader, std::span<const std::uint8_t> bytes) {
     case Loader::Scene: return "scene.json";
     case Loader::BakeRecord: return "bake.json";
     case Loader::Sh9: return "sh9.json";
+    case Loader::Texture: return "texture.img";
   }
   std::abort();
 }
@@ -89,6 +100,12 @@ void load(Loader loader, const fs::path& file) {
     case Loader::Sh9: {
       float windowCutoff = 0.0f;
       readSh9Json(file, &windowCutoff);
+      return;
+    }
+    case Loader::Texture: {
+      const std::vector<char> bytes = readInputFile(file, kMaxBinaryInputBytes);
+      TextureImage image;
+      decodeTextureImage(image, std::vector<std::uint8_t>(bytes.begin(), bytes.end()), file, "image");
       return;
     }
   }

@@ -185,7 +185,58 @@ put("gltf", "seed_strip.gltf", json.dumps(doc))
 doc, buffer = triangle_gltf(embed=False)
 put("gltf", "seed_triangle.glb", glb(doc, buffer))
 
+
+def textured_glb():
+    """The triangle with TEXCOORD_0, TEXCOORD_1 and TANGENT, a PNG in the glb's buffer and a WebP
+    (EXT_texture_webp; the lossless seed of fuzz/corpus/texture, made by make_texture_seeds) as a
+    data: URI, two samplers, and every texture slot, KHR_texture_transform and alpha mode used."""
+    doc, buffer = triangle_gltf(embed=False)
+    def view(data, **extra):
+        nonlocal buffer
+        buffer += b"\0" * (-len(buffer) % 4)
+        doc["bufferViews"].append(dict({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data)}, **extra))
+        buffer += data
+        return len(doc["bufferViews"]) - 1
+    def accessor(data, count, kind):
+        doc["accessors"].append({"bufferView": view(data), "componentType": 5126, "count": count, "type": kind})
+        return len(doc["accessors"]) - 1
+    primitive = doc["meshes"][0]["primitives"][0]
+    primitive["attributes"]["TEXCOORD_0"] = accessor(struct.pack("<6f", 0, 0, 1, 0, 0, 1), 3, "VEC2")
+    primitive["attributes"]["TEXCOORD_1"] = accessor(struct.pack("<6f", 0, 1, 1, 1, 0, 0), 3, "VEC2")
+    primitive["attributes"]["TANGENT"] = accessor(struct.pack("<12f", *([1, 0, 0, 1] * 3)), 3, "VEC4")
+    with open(os.path.join(HERE, "corpus", "texture", "seed_rgba_lossless_4x4.webp"), "rb") as f:
+        webp = f.read()
+    doc["images"] = [{"bufferView": view(png(2, 2, 6, 4)), "mimeType": "image/png", "name": "albedo"},
+                     {"uri": "data:image/webp;base64," + base64.b64encode(webp).decode()}]
+    doc["samplers"] = [{"magFilter": 9728, "minFilter": 9986, "wrapS": 33071, "wrapT": 33648}, {}]
+    doc["textures"] = [{"source": 0, "sampler": 0},
+                       {"source": 0, "sampler": 1, "extensions": {"EXT_texture_webp": {"source": 1}}}]
+    material = doc["materials"][0]
+    transform = {"KHR_texture_transform": {"offset": [0.5, 0], "rotation": 0.3, "scale": [2, 2], "texCoord": 1}}
+    material["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0, "extensions": transform}
+    material["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {"index": 1, "texCoord": 1}
+    material["normalTexture"] = {"index": 1, "scale": 0.5}
+    material["occlusionTexture"] = {"index": 0, "strength": 0.8}
+    material["emissiveTexture"] = {"index": 1}
+    material["alphaMode"] = "MASK"
+    material["alphaCutoff"] = 0.4
+    material["doubleSided"] = True
+    doc["extensionsUsed"] += ["KHR_texture_transform", "EXT_texture_webp"]
+    doc["extensionsRequired"] = ["KHR_texture_transform", "EXT_texture_webp"]
+    doc["buffers"][0]["byteLength"] = len(buffer)
+    return glb(doc, buffer)
+
+
+put("gltf", "seed_textured.glb", textured_glb())
+
 # --- scene .json (fuzz_loaders.cpp puts model.gltf and env.hdr beside the scene) ---------------
+put("scene", "seed_textured.json", json.dumps({
+    "models": [{"file": "model.gltf", "material": {
+        "alphaMode": "BLEND", "alpha": 0.5, "doubleSided": True,
+        "normalTexture": {"file": "albedo.png", "scale": 0.5, "uvScale": [4, 2], "texCoord": 1},
+        "baseColorTexture": {"file": "albedo.png"}}}],
+    "ground": {"material": {"alphaMode": "MASK", "alphaCutoff": 0.2,
+                            "occlusionTexture": {"file": "albedo.png", "strength": 0.5, "uvScale": 3}}}}))
 put("scene", "seed_shapes.json", json.dumps({
     "models": [{"shape": "sphere", "translation": [0, 1, 0], "rotation": [0, 0.2588, 0, 0.9659], "scale": 0.5,
                 "material": {"baseColor": [0.9, 0.1, 0.1], "metallic": 1, "roughness": 0.2}},

@@ -75,6 +75,85 @@ json describeImage(const std::filesystem::path& file, Image* pixels) {
           {"meanLuminance", s.meanLuminance}};
 }
 
+const char* wrapName(iblkit::TextureWrap wrap) {
+  switch (wrap) {
+    case iblkit::TextureWrap::ClampToEdge:
+      return "CLAMP_TO_EDGE";
+    case iblkit::TextureWrap::MirroredRepeat:
+      return "MIRRORED_REPEAT";
+    case iblkit::TextureWrap::Repeat:
+      break;
+  }
+  return "REPEAT";
+}
+
+const char* filterName(iblkit::TextureFilter filter) {
+  return filter == iblkit::TextureFilter::Nearest ? "NEAREST" : "LINEAR";
+}
+
+// The glTF (GL) name of a sampler's minification: NEAREST, LINEAR or <min>_MIPMAP_<mip>.
+std::string minFilterName(const iblkit::TextureSampler& sampler) {
+  std::string name = filterName(sampler.minFilter);
+  if (sampler.mipmaps) name += std::string("_MIPMAP_") + filterName(sampler.mipFilter);
+  return name;
+}
+
+// Each texture the scene's materials use: the slots reading it (and which materials), the image's
+// size, format, channels and where it came from, the colour space the slots read it in (sRGB for
+// base colour and emissive, linear for the others; texture.h) and its sampler.
+json describeTextures(const iblkit::Scene& scene) {
+  struct Use {
+    std::vector<std::string> slots;
+    std::vector<int> materials;
+    bool srgb = false, linear = false;
+  };
+  std::vector<Use> uses(scene.textures.size());
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    const iblkit::Material& material = scene.materials[m];
+    const std::pair<const char*, const iblkit::TextureRef*> slots[] = {
+        {"baseColorTexture", &material.baseColorTexture},
+        {"metallicRoughnessTexture", &material.metallicRoughnessTexture},
+        {"normalTexture", &material.normalTexture},
+        {"occlusionTexture", &material.occlusionTexture},
+        {"emissiveTexture", &material.emissiveTexture}};
+    for (const auto& [slot, ref] : slots) {
+      if (!ref->present() || ref->texture >= int(uses.size())) continue;
+      Use& use = uses[ref->texture];
+      if (std::find(use.slots.begin(), use.slots.end(), slot) == use.slots.end()) use.slots.push_back(slot);
+      if (use.materials.empty() || use.materials.back() != int(m)) use.materials.push_back(int(m));
+      const bool srgb = ref == &material.baseColorTexture || ref == &material.emissiveTexture;
+      (srgb ? use.srgb : use.linear) = true;
+    }
+  }
+  json textures = json::array();
+  for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+    const iblkit::Texture& texture = scene.textures[t];
+    const Use& use = uses[t];
+    json d = {{"index", t},
+              {"name", texture.name},
+              {"slots", use.slots},
+              {"materials", use.materials},
+              {"colorSpace", use.srgb && use.linear ? "sRGB+linear" : use.srgb ? "sRGB" : "linear"},
+              {"wrapS", wrapName(texture.sampler.wrapS)},
+              {"wrapT", wrapName(texture.sampler.wrapT)},
+              {"magFilter", filterName(texture.sampler.magFilter)},
+              {"minFilter", minFilterName(texture.sampler)},
+              {"image", texture.image}};
+    if (texture.image >= 0 && texture.image < int(scene.images.size())) {
+      const iblkit::TextureImage& image = scene.images[texture.image];
+      d["width"] = image.width;
+      d["height"] = image.height;
+      d["mimeType"] = image.mimeType;
+      d["channels"] = image.channels;
+      d["bytes"] = image.encoded.size();
+      d["source"] = image.uri.empty() ? "bufferView" : image.uri.rfind("data:", 0) == 0 ? "dataUri" : "file";
+      d["sourceFile"] = image.file.string();
+    }
+    textures.push_back(std::move(d));
+  }
+  return textures;
+}
+
 json describeScene(const std::filesystem::path& file) {
   const iblkit::Scene scene = iblkit::loadScene(file);
   std::size_t vertices = 0, triangles = 0, groundMeshes = 0;
@@ -95,6 +174,8 @@ json describeScene(const std::filesystem::path& file) {
           {"vertices", vertices},
           {"triangles", triangles},
           {"materials", scene.materials.size()},
+          {"textures", describeTextures(scene)},
+          {"images", scene.images.size()},
           {"customAttributes", attributes},
           {"boundsMin", vec3Json(scene.bounds.min)},
           {"boundsMax", vec3Json(scene.bounds.max)},
@@ -133,6 +214,23 @@ void printText(const json& d) {
                 d["environment"].get<std::string>().c_str(), d["environmentRotation"].get<float>(),
                 d["environmentIntensity"].get<float>());
   if (!d["customAttributes"].empty()) std::printf("  attributes %s\n", d["customAttributes"].dump().c_str());
+  for (const json& t : d["textures"]) {
+    std::string slots;
+    for (const json& slot : t["slots"]) slots += (slots.empty() ? "" : ", ") + slot.get<std::string>();
+    std::string materials;
+    for (const json& m : t["materials"]) materials += (materials.empty() ? "" : ", ") + std::to_string(m.get<int>());
+    const std::string name = t["name"].get<std::string>();
+    const std::string source = t["source"] == "file" ? t["sourceFile"].get<std::string>()
+                               : t["source"] == "dataUri" ? "embedded (data URI)"
+                                                          : "embedded (buffer view)";
+    std::printf("  texture %d%s: %s (material %s), %dx%d %s %d channel(s), %s, wrap %s/%s, filter %s/%s, %s\n",
+                t["index"].get<int>(), name.empty() ? "" : (" '" + name + "'").c_str(), slots.c_str(),
+                materials.c_str(), t["width"].get<int>(), t["height"].get<int>(),
+                t["mimeType"].get<std::string>().c_str(), t["channels"].get<int>(),
+                t["colorSpace"].get<std::string>().c_str(), t["wrapS"].get<std::string>().c_str(),
+                t["wrapT"].get<std::string>().c_str(), t["magFilter"].get<std::string>().c_str(),
+                t["minFilter"].get<std::string>().c_str(), source.c_str());
+  }
 }
 
 constexpr const char* kProgram = "iblkit-info";

@@ -75,6 +75,7 @@ int run(const Options& options, const CLI::App& app) {
   if (options.maxDepth < 1)
     failUsage("--max-depth", "must be at least 1, got " + std::to_string(options.maxDepth));
   if (!(options.aoDistance > 0.0f)) failUsage("--ao-distance", "must be positive");
+  if (!(options.textureFootprint >= 0.0f)) failUsage("--texture-footprint", "must be >= 0 (pixels)");
   if (!(options.timeSeconds >= 0.0) || !std::isfinite(options.timeSeconds))
     failUsage("--time", "must be a finite number of seconds >= 0");
   checkEnvironmentOverride(options.environment);
@@ -178,7 +179,7 @@ int main(int argc, char** argv) {
   app.add_option("--texture-footprint", options.textureFootprint,
                  "camera ray cone spread in pixels (texture level of detail; 0.5 = the report's 2x2 "
                  "supersampled engine frame, 0 = finest level)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finiteNumber());
   addEnvironmentOptions(app, options.environment);
   addNameOption(app, "--integrator", options.integrator, kIntegratorNames, "integrator");
   addNameOption(app, "--env-sampling", options.envSampling, kEnvSamplingNames, "strategy");

@@ -338,6 +338,11 @@ int main(int argc, char** argv) {
     rejectWindowFlagsWhenHeadless(options);
     if (options.noTextures && options.textureSlots != "all")
       failUsage("--no-textures", "give --no-textures or --texture-slots, not both");
+    try {
+      parseTextureSlots(options.textureSlots);
+    } catch (const Error& e) {
+      throw UsageError(e.what());  // a bad command line: status 2, like --mode's names
+    }
     EnvironmentOverride rotation;
     rotation.rotationDegrees = options.envRotation;
     checkEnvironmentOverride(rotation);

@@ -9,8 +9,9 @@
 // object from the glTF sampler; the level of detail comes from the screen derivatives of the uv
 // (OpenGL 4.5 section 8.14.1) and, where the driver offers it, anisotropic filtering.
 //
-// TEXTURED 0 (the default) compiles the texture reads out: a material without textures, or with
-// every slot switched off, is drawn by that variant and costs what it did before textures.
+// TEXTURED is the set of slots (TextureSlot bits) whose reads are compiled in: renderer.cpp builds
+// one variant per set of slots bound, so a slot a material lacks (or that is switched off) costs
+// nothing, and a material without textures (TEXTURED 0, the default) costs what it did before.
 
 #include "shared_constants.glsl"
 
@@ -51,11 +52,19 @@ uniform float alphaCutoff;
 uniform int slotTexCoord[5];
 uniform mat3 slotTransform[5];
 
-#if TEXTURED
+#if (TEXTURED & SLOT_BIT_BASE_COLOR) != 0
 layout(binding = kTextureUnitBaseColor) uniform sampler2D baseColorTexture;
+#endif
+#if (TEXTURED & SLOT_BIT_METALLIC_ROUGHNESS) != 0
 layout(binding = kTextureUnitMetallicRoughness) uniform sampler2D metallicRoughnessTexture;
+#endif
+#if (TEXTURED & SLOT_BIT_NORMAL) != 0
 layout(binding = kTextureUnitNormal) uniform sampler2D normalTexture;
+#endif
+#if (TEXTURED & SLOT_BIT_OCCLUSION) != 0
 layout(binding = kTextureUnitOcclusion) uniform sampler2D occlusionTexture;
+#endif
+#if (TEXTURED & SLOT_BIT_EMISSIVE) != 0
 layout(binding = kTextureUnitEmissive) uniform sampler2D emissiveTexture;
 #endif
 
@@ -77,7 +86,7 @@ vec3 perturbNormal(vec3 n, vec4 tangent, vec3 texel, float scale) {
   return length2 > 0.0 ? perturbed * inversesqrt(length2) : n;
 }
 
-#if TEXTURED
+#if TEXTURED != 0
 vec2 slotUv(SurfaceInputs inputs, int slot) {
   return textureTransformApply(slotTransform[slot], inputs.texcoords[slotTexCoord[slot] == 1 ? 1 : 0]);
 }
@@ -94,22 +103,30 @@ SurfaceMaterial evaluateSurfaceMaterial(SurfaceInputs inputs) {
   s.alpha = baseAlpha;
   s.occlusion = 1.0;
   s.normal = inputs.normal;
-#if TEXTURED
+#if (TEXTURED & SLOT_BIT_BASE_COLOR) != 0
   vec4 base = texture(baseColorTexture, slotUv(inputs, 0));
-  vec4 metallicRoughness = texture(metallicRoughnessTexture, slotUv(inputs, 1));
-  vec3 normalTexel = texture(normalTexture, slotUv(inputs, 2)).rgb;
-  float occlusionTexel = texture(occlusionTexture, slotUv(inputs, 3)).r;
-  vec3 emissiveTexel = texture(emissiveTexture, slotUv(inputs, 4)).rgb;
   if ((inputs.slots & kSlotBaseColor) != 0) {
     s.baseColor *= base.rgb;
     s.alpha *= base.a;
   }
+#endif
+#if (TEXTURED & SLOT_BIT_METALLIC_ROUGHNESS) != 0
+  vec4 metallicRoughness = texture(metallicRoughnessTexture, slotUv(inputs, 1));
   if ((inputs.slots & kSlotMetallicRoughness) != 0) {
     s.roughness *= metallicRoughness.g;
     s.metallic *= metallicRoughness.b;
   }
+#endif
+#if (TEXTURED & SLOT_BIT_NORMAL) != 0
+  vec3 normalTexel = texture(normalTexture, slotUv(inputs, 2)).rgb;
   if ((inputs.slots & kSlotNormal) != 0) s.normal = perturbNormal(inputs.normal, inputs.tangent, normalTexel, normalScale);
+#endif
+#if (TEXTURED & SLOT_BIT_OCCLUSION) != 0
+  float occlusionTexel = texture(occlusionTexture, slotUv(inputs, 3)).r;
   if ((inputs.slots & kSlotOcclusion) != 0) s.occlusion = 1.0 + occlusionStrength * (occlusionTexel - 1.0);
+#endif
+#if (TEXTURED & SLOT_BIT_EMISSIVE) != 0
+  vec3 emissiveTexel = texture(emissiveTexture, slotUv(inputs, 4)).rgb;
   if ((inputs.slots & kSlotEmissive) != 0) s.emissive *= emissiveTexel;
 #endif
   return s;

@@ -7,7 +7,7 @@
 // 4 (slot 0's and slot 3's transformed uv: textureTransformApply), 5 the base colour texture's
 // texel x of level 0 as the texture unit decodes it (texelFetch).
 
-#define TEXTURED 1
+#define TEXTURED 31  // every slot (kAllTextureSlots)
 #include "shared_constants.glsl"
 #include "material.glsl"
 

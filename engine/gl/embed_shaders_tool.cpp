@@ -114,6 +114,13 @@ std::string sharedConstants() {
                         {"kSlotOcclusion", int(kSlotOcclusion)},
                         {"kSlotEmissive", int(kSlotEmissive)},
                         {"kAllTextureSlots", int(kAllTextureSlots)}});
+  // The same bits as preprocessor macros, for material.glsl's #if on TEXTURED (the slots a
+  // program variant reads; a const int cannot be tested by #if).
+  text += "#define SLOT_BIT_BASE_COLOR " + std::to_string(int(kSlotBaseColor)) +
+          "\n#define SLOT_BIT_METALLIC_ROUGHNESS " + std::to_string(int(kSlotMetallicRoughness)) +
+          "\n#define SLOT_BIT_NORMAL " + std::to_string(int(kSlotNormal)) +
+          "\n#define SLOT_BIT_OCCLUSION " + std::to_string(int(kSlotOcclusion)) +
+          "\n#define SLOT_BIT_EMISSIVE " + std::to_string(int(kSlotEmissive)) + "\n";
   text += intConstants("iblkit::AlphaMode (core/material.h)",
                        {{"kAlphaModeOpaque", int(AlphaMode::Opaque)},
                         {"kAlphaModeMask", int(AlphaMode::Mask)},

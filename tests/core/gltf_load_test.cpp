@@ -822,8 +822,16 @@ TEST_F(GltfLoad, ReadsTangents) {
   EXPECT_EQ(contents.meshes[0].tangents,
             (std::vector<glm::vec4>{glm::vec4(1, 0, 0, 1), glm::vec4(1, 0, 0, -1), glm::vec4(0, 1, 0, -1)}));
 
+  // The node's transform turns tangents as it turns the surface (transformMesh): 90 degrees about +Z
+  // takes +X to +Y; w stays.
+  builder.document()["nodes"][0]["rotation"] = {0, 0, std::sqrt(0.5), std::sqrt(0.5)};
+  contents = load(builder);
+  ASSERT_EQ(contents.meshes[0].tangents.size(), 3u);
+  expectNear(glm::vec3(contents.meshes[0].tangents[0]), glm::vec3(0, 1, 0));
+  expectNear(glm::vec3(contents.meshes[0].tangents[2]), glm::vec3(-1, 0, 0));
+  EXPECT_EQ(contents.meshes[0].tangents[2].w, -1.0f);
+
   // A zero tangent cannot make a frame: the file's tangents are dropped with a warning.
-  builder.document()["accessors"][2]["byteOffset"] = 0;
   const std::vector<glm::vec4> broken = {glm::vec4(1, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 1, 0, 1)};
   GltfBuilder second;
   second.addPrimitiveNode({{"attributes",

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "support/gltf_builder.h"
+#include "support/texture_files.h"
 #include "support/test_paths.h"
 #include "support/warning_capture.h"
 
@@ -201,7 +202,8 @@ TEST_F(SceneFile, UnknownKeysAndWrongTypesNameTheKeyPath) {
             "camrea: unknown key (expected one of: models, ground, environment, camera, width, height)");
   EXPECT_EQ(error({{"models", {model}}, {"ground", {{"material", {{"colour", {1, 1, 1}}}}}}}),
             "ground.material.colour: unknown key (expected one of: baseColor, metallic, roughness, specular, "
-            "specularColor, emissive)");
+            "specularColor, emissive, alpha, alphaMode, alphaCutoff, doubleSided, baseColorTexture, "
+            "metallicRoughnessTexture, normalTexture, occlusionTexture, emissiveTexture)");
   EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"scale", "big"}}}}}),
             "models[0].scale: expected a nonzero number or an array of 3 nonzero numbers");
   EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"scale", {1, 0, 1}}}}}}),
@@ -253,6 +255,105 @@ TEST_F(SceneFile, BrokenFilesAreErrors) {
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()), (root / "models" / "missing.gltf").string() + ": cannot open: No such file or directory");
   }
+}
+
+// models/quad.gltf: a textured unit quad (its own baseColorTexture, maps/albedo.png beside it).
+void writeTexturedQuad(const std::filesystem::path& models) {
+  std::filesystem::create_directories(models / "maps");
+  test::writeFileBytes(models / "maps" / "albedo.png", test::encodePng(2, 2, test::quadPixels()));
+  test::GltfBuilder builder;
+  const std::vector<glm::vec3> positions = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(1, 1, 0), glm::vec3(0, 1, 0)};
+  const std::vector<glm::vec2> uvs = {glm::vec2(0, 1), glm::vec2(1, 1), glm::vec2(1, 0), glm::vec2(0, 0)};
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(positions)},
+                              {"NORMAL", builder.addFloats(std::vector<glm::vec3>(4, glm::vec3(0, 0, 1)))},
+                              {"TEXCOORD_0", builder.addFloats(uvs)}}},
+                            {"indices", builder.addIndices({0, 1, 2, 0, 2, 3})},
+                            {"material", 0}});
+  builder.document()["images"] = {{{"uri", "maps/albedo.png"}}};
+  builder.document()["textures"] = {{{"source", 0}}};
+  builder.document()["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  builder.write(models / "quad.gltf", test::GltfBuilder::Storage::BinFile);
+}
+
+TEST_F(SceneFile, MaterialOverridesAssignTextures) {
+  writeTexturedQuad(root / "models");
+  std::filesystem::create_directories(root / "normals");
+  const std::vector<std::uint8_t> normal(4 * 4 * 4, 128);
+  test::writeFileBytes(root / "normals" / "0001.webp", test::encodeWebp(4, 4, normal));
+  const json normalMap = {{"file", "../normals/0001.webp"}, {"scale", 0.5}, {"uvScale", {4, 2}}};
+  const Scene scene = load(
+      {{"models",
+        {{{"file", "../models/quad.gltf"}},
+         {{"file", "../models/quad.gltf"}, {"material", {{"normalTexture", normalMap}, {"doubleSided", true}}}},
+         {{"shape", "sphere"},
+          {"material", {{"normalTexture", {{"file", "../normals/0001.webp"}}}, {"alphaMode", "MASK"}}}}}},
+       {"ground", {{"material", {{"occlusionTexture", {{"file", "../normals/0001.webp"}, {"strength", 0.25}, {"uvScale", 8}}}}}}}});
+
+  // Each model loads its own copy of quad.gltf's texture; the override file is read once.
+  ASSERT_EQ(scene.images.size(), 3u);
+  ASSERT_EQ(scene.textures.size(), 3u);
+  EXPECT_EQ(scene.images[2].file, root / "normals" / "0001.webp");
+  EXPECT_EQ(scene.images[2].mimeType, "image/webp");
+  EXPECT_EQ(scene.images[2].width, 4);
+  for (int t = 0; t < 3; ++t) EXPECT_EQ(scene.textures[t].image, t);
+  const TextureSampler& sampler = scene.textures[2].sampler;  // repeat, trilinear
+  EXPECT_EQ(sampler.wrapS, TextureWrap::Repeat);
+  EXPECT_EQ(sampler.wrapT, TextureWrap::Repeat);
+  EXPECT_TRUE(sampler.mipmaps);
+
+  ASSERT_EQ(scene.materials.size(), 4u);
+  EXPECT_EQ(scene.materials[0].baseColorTexture.texture, 0);
+  EXPECT_FALSE(scene.materials[0].normalTexture.present());
+  const Material& second = scene.materials[1];
+  EXPECT_EQ(second.baseColorTexture.texture, 1);  // offset past model 0's texture
+  EXPECT_EQ(second.normalTexture.texture, 2);
+  EXPECT_EQ(second.normalTexture.texCoord, 0);
+  EXPECT_EQ(second.normalTexture.transform.scale, glm::vec2(4.0f, 2.0f));
+  EXPECT_EQ(second.normalScale, 0.5f);
+  EXPECT_TRUE(second.doubleSided);
+  EXPECT_EQ(scene.materials[2].normalTexture.texture, 2);
+  EXPECT_TRUE(scene.materials[2].normalTexture.transform.identity());
+  EXPECT_EQ(scene.materials[2].alphaMode, AlphaMode::Mask);
+  const Material& ground = scene.materials[3];
+  EXPECT_EQ(ground.occlusionTexture.texture, 2);
+  EXPECT_EQ(ground.occlusionStrength, 0.25f);
+  EXPECT_EQ(ground.occlusionTexture.transform.scale, glm::vec2(8.0f));
+  // A textured ground gets uvs spanning [0, 1], u along +X, v along +Z.
+  const Mesh& groundMesh = scene.meshes.back();
+  ASSERT_TRUE(groundMesh.isGround);
+  ASSERT_EQ(groundMesh.texcoords.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const glm::vec3& p = groundMesh.positions[i];
+    const glm::vec3 size = groundMesh.bounds().max - groundMesh.bounds().min;
+    EXPECT_NEAR(groundMesh.texcoords[i].x, (p.x - groundMesh.bounds().min.x) / size.x, 1e-5f);
+    EXPECT_NEAR(groundMesh.texcoords[i].y, (p.z - groundMesh.bounds().min.z) / size.z, 1e-5f);
+  }
+  EXPECT_EQ(scene.meshes[0].material, 0);
+  EXPECT_EQ(scene.meshes[1].material, 1);
+}
+
+TEST_F(SceneFile, BadTextureOverridesNameTheKey) {
+  std::filesystem::create_directories(root / "normals");
+  test::writeFileBytes(root / "normals" / "broken.webp", {'R', 'I', 'F', 'F', 4, 0, 0, 0, 'W', 'E', 'B', 'P', 'V', 'P', '8', ' '});
+  const auto withNormal = [&](const json& texture) {
+    return json{{"models", {{{"shape", "sphere"}, {"material", {{"normalTexture", texture}}}}}}};
+  };
+  EXPECT_EQ(error(withNormal({{"file", "../normals/missing.webp"}})),
+            "models[0].material.normalTexture '../normals/missing.webp': " + (root / "normals" / "missing.webp").string() +
+                ": cannot open: No such file or directory");
+  EXPECT_EQ(error(withNormal({{"file", "../normals/broken.webp"}})),
+            "models[0].material.normalTexture '../normals/broken.webp': WebP does not decode (bitstream error)");
+  EXPECT_EQ(error(withNormal({{"uvScale", 2}})), "models[0].material.normalTexture: missing required key 'file'");
+  EXPECT_EQ(error(withNormal({{"file", "x.png"}, {"strength", 1}})),
+            "models[0].material.normalTexture.strength: unknown key (expected one of: file, uvScale, texCoord, scale)");
+  test::writeFileBytes(root / "normals" / "flat.png", test::encodePng(2, 2, test::quadPixels()));
+  EXPECT_EQ(error(withNormal({{"file", "../normals/flat.png"}, {"uvScale", {0, 1}}})),
+            "models[0].material.normalTexture.uvScale: expected a nonzero number or an array of 2 nonzero numbers");
+  EXPECT_EQ(error(withNormal({{"file", "../normals/flat.png"}, {"texCoord", 2}})),
+            "models[0].material.normalTexture.texCoord: expected an integer in [0, 1]");
+  EXPECT_EQ(error({{"models", {{{"shape", "sphere"}, {"material", {{"alphaMode", "CLIP"}}}}}}}),
+            "models[0].material.alphaMode: expected \"OPAQUE\", \"MASK\" or \"BLEND\"");
 }
 
 }  // namespace

@@ -10,7 +10,9 @@
 #include "bakefile/scene_glb.h"
 #include "core/image_io.h"
 #include "support/bake_fixture.h"
+#include "support/gltf_builder.h"
 #include "support/test_paths.h"
+#include "support/texture_files.h"
 #include "support/usage_error_check.h"
 
 namespace iblkit {
@@ -220,6 +222,52 @@ TEST(IblkitView, BakesASceneFileInMemory) {
   EXPECT_GT(covered, 1000);
 }
 
+// A glTF quad with a 2 x 2 checker base colour texture, baked in memory: --no-textures and
+// --texture-slots without base-color show the factor alone; the base colour slot changes the frame.
+TEST(IblkitView, TextureSlotsSwitchTheMaterialTextures) {
+  const fs::path dir = test::scratchDir();
+  test::GltfBuilder builder;
+  const std::vector<glm::vec3> positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  const std::vector<glm::vec3> normals(4, glm::vec3(0, 0, 1));
+  const std::vector<glm::vec2> uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(positions)},
+                              {"NORMAL", builder.addFloats(normals)},
+                              {"TEXCOORD_0", builder.addFloats(uvs)}}},
+                            {"indices", builder.addIndices({0, 1, 2, 0, 2, 3})},
+                            {"material", 0}});
+  const std::vector<std::uint8_t> checker = {255, 0, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 255, 0, 0, 255};
+  builder.addImage(test::encodePng(2, 2, checker), "image/png");
+  builder.document()["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9728}}};  // NEAREST
+  builder.document()["textures"] = {{{"source", 0}, {"sampler", 0}}};
+  builder.document()["materials"] = {
+      {{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.5, 0.5, 1.0}}, {"baseColorTexture", {{"index", 0}}}}}}};
+  builder.write(dir / "quad.glb", test::GltfBuilder::Storage::Glb);
+  Image sky(16, 8);
+  for (glm::vec4& p : sky.pixels()) p = glm::vec4(0.2f, 0.3f, 0.4f, 1.0f);
+  writeExr(dir / "sky.exr", sky, {.pixelType = PixelType::Float});
+  std::ofstream(dir / "scene.json") << R"({"models": [{"file": "quad.glb"}], "environment": {"file": "sky.exr"},
+      "ground": {"enabled": false}, "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "yfov": 40}})";
+  auto frame = [&](const std::string& name, const std::string& flags) {
+    const fs::path out = dir / (name + ".exr");
+    const ProgramRun r = run("iblkit-view", quoted(dir / "scene.json") + " --headless -o " + quoted(out) +
+                                                " --width 64 --height 64 --mode unlit --ao-rays 1 " + flags);
+    EXPECT_EQ(r.status, 0) << r.output;
+    return readExr(out);
+  };
+  const Image all = frame("all", ""), none = frame("none", "--no-textures"),
+              others = frame("others", "--texture-slots normal,occlusion,emissive,metallic-roughness");
+  // Pixel (20, 20) is on the top-left (red) texel, (44, 20) on the top-right (green) one.
+  EXPECT_NEAR(all.at(20, 20).r, 0.5f, 1e-5f);
+  EXPECT_NEAR(all.at(20, 20).g, 0.0f, 1e-5f);
+  EXPECT_NEAR(all.at(44, 20).g, 0.5f, 1e-5f);
+  for (const glm::ivec2 p : {glm::ivec2(20, 20), glm::ivec2(44, 20)}) {
+    EXPECT_NEAR(none.at(p.x, p.y).r, 0.5f, 1e-6f);
+    EXPECT_NEAR(none.at(p.x, p.y).g, 0.5f, 1e-6f);
+    EXPECT_EQ(none.at(p.x, p.y), others.at(p.x, p.y));
+  }
+}
+
 // IBLKIT_EGL_PLATFORM forces one EGL platform; both give a context on Mesa, and --bench names it.
 TEST(IblkitView, EglPlatformCanBeForced) {
   const fs::path dir = test::scratchDir();
@@ -287,8 +335,14 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
 
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --mode shiny",
                 "iblkit-view: --mode: unknown shading mode 'shiny' (expected one of unlit, mirror, sh, "
-                "sh-ao, sh-ao-bent, prt, full, all)",
+                "sh-ao, sh-ao-bent, prt, full, full-gltf-ao, full-both-ao, all)",
                 out, 2);
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --texture-slots normal,albedo",
+                "iblkit-view: --texture-slots: unknown texture slot 'albedo' (expected one of base-color, "
+                "metallic-roughness, normal, occlusion, emissive, all, none)",
+                out, 2);
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --texture-slots normal --no-textures",
+                "iblkit-view: --no-textures: give --no-textures or --texture-slots, not both", out, 2);
   expectFailure(quoted(fixture.bake) + " -o " + quoted(out),
                 "iblkit-view: -o: only with --headless (the window saves screenshots: --screenshot)", out, 2);
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --no-such-option",

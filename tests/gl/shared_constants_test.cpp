@@ -71,7 +71,7 @@ TEST(SharedConstants, MeshAttributesAreAtTheGpuMeshLocations) {
   EXPECT_EQ(attributeLocation(mesh, "inTransfer345"), GLint(kAttributeTransfer345));
   EXPECT_EQ(attributeLocation(mesh, "inTransfer678"), GLint(kAttributeTransfer678));
   // Texture coordinates and tangents are read by the textured variant (material.glsl's TEXTURED).
-  const ShaderProgram textured("mesh.vert", "mesh.frag", "#define TEXTURED 1");
+  const ShaderProgram textured("mesh.vert", "mesh.frag", "#define TEXTURED " + std::to_string(int(kAllTextureSlots)));
   EXPECT_EQ(attributeLocation(textured, "inTexcoord0"), GLint(kAttributeTexcoord0));
   EXPECT_EQ(attributeLocation(textured, "inTexcoord1"), GLint(kAttributeTexcoord1));
   EXPECT_EQ(attributeLocation(textured, "inTangent"), GLint(kAttributeTangent));
@@ -90,7 +90,7 @@ TEST(SharedConstants, SamplersReadTheTextureUnitsTheCppBinds) {
   // The material's slots are read in the textured variant (renderer.cpp's TEXTURED 1); the glTF
   // occlusion by the modes that use it.
   const ShaderProgram textured("mesh.vert", "mesh.frag",
-                               "#define TEXTURED 1\n#define SHADING_MODE " + std::to_string(int(ShadingMode::FullBothAo)));
+                               "#define TEXTURED " + std::to_string(int(kAllTextureSlots)) + "\n#define SHADING_MODE " + std::to_string(int(ShadingMode::FullBothAo)));
   EXPECT_EQ(samplerUnit(textured, "baseColorTexture"), GLint(kTextureUnitBaseColor));
   EXPECT_EQ(samplerUnit(textured, "metallicRoughnessTexture"), GLint(kTextureUnitMetallicRoughness));
   EXPECT_EQ(samplerUnit(textured, "normalTexture"), GLint(kTextureUnitNormal));

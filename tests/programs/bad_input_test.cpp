@@ -9,13 +9,16 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/image.h"
 #include "core/image_io.h"
+#include "support/gltf_builder.h"
 #include "support/test_paths.h"
+#include "support/texture_files.h"
 
 namespace iblkit {
 namespace {
@@ -264,6 +267,128 @@ TEST_F(BadInput, NonFiniteOptionsAreUsageErrors) {
   expectOneLine(trace(file, "--phong 1e30"), "iblkit-trace", 2, "--phong");
   expectOneLine(run("iblkit-score", q(dir_ / "map.exr") + " " + q(dir_ / "map.exr") + " --exposure-range nan nan"),
                 "iblkit-score", 2, "--exposure-range: must be a finite number, not 'nan'");
+}
+
+// Issue 14's bad textures: each is one line naming the glTF file, the texture and the image, for
+// iblkit-info and for iblkit-trace (a .glb / .gltf traced directly, and inside a .json scene).
+class BadTexture : public BadInput {
+ protected:
+  // A textured triangle (baseColorTexture = texture 0 = image 0) written as `name`, the document
+  // edited by `edit` first.
+  fs::path model(const std::string& name, const std::function<void(test::GltfBuilder&)>& edit) {
+    test::GltfBuilder builder;
+    const std::vector<glm::vec3> triangle = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+    const std::vector<glm::vec2> uvs = {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1)};
+    builder.addPrimitiveNode(
+        {{"attributes", {{"POSITION", builder.addFloats(triangle)}, {"TEXCOORD_0", builder.addFloats(uvs)}}},
+         {"material", 0}});
+    builder.document()["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    builder.document()["textures"] = {{{"source", 0}}};
+    edit(builder);
+    const fs::path file = dir_ / name;
+    builder.write(file, name.ends_with(".glb") ? test::GltfBuilder::Storage::Glb : test::GltfBuilder::Storage::BinFile);
+    return file;
+  }
+
+  // The glTF file through iblkit-info, iblkit-trace, and iblkit-trace of a scene naming it.
+  void expectEverywhere(const fs::path& file, const std::string& expected) {
+    const std::string message = file.string() + ": " + expected;
+    expectOneLine(run("iblkit-info", q(file)), "iblkit-info", 1, message);
+    expectOneLine(trace(file), "iblkit-trace", 1, message);
+    const fs::path json = scene(file.stem().string() + ".json", "", "[{\"file\": \"" + file.filename().string() + "\"}]");
+    expectOneLine(trace(json), "iblkit-trace", 1, message);
+    EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
+  }
+};
+
+TEST_F(BadTexture, MissingImageFile) {
+  const fs::path file = model("missing.gltf", [](test::GltfBuilder& b) { b.document()["images"] = {{{"uri", "albedo.png"}}}; });
+  expectEverywhere(file, "texture 0 image 0 'albedo.png': " + (dir_ / "albedo.png").string() +
+                             ": cannot open: No such file or directory");
+}
+
+TEST_F(BadTexture, ImageThatDoesNotDecode) {
+  const fs::path file = model("garbage.glb", [](test::GltfBuilder& b) {
+    std::vector<std::uint8_t> png = test::encodePng(4, 4, std::vector<std::uint8_t>(64, 77));
+    for (std::size_t i = 40; i < png.size() - 12; ++i) png[i] ^= 0x5a;  // the IDAT data scrambled
+    b.addImage(png, "image/png");
+  });
+  expectEverywhere(file, "texture 0 image 0: PNG does not decode (");
+  const fs::path webp = model("garbage_webp.glb", [](test::GltfBuilder& b) {
+    std::vector<std::uint8_t> bytes = test::encodeWebp(4, 4, std::vector<std::uint8_t>(64, 77));
+    bytes.resize(bytes.size() / 2);
+    b.addImage(bytes, "image/webp");
+  });
+  expectEverywhere(webp, "texture 0 image 0: WebP does not decode (");
+}
+
+TEST_F(BadTexture, TextureOrImageIndexOutOfRange) {
+  const fs::path texture = model("texture_index.gltf", [](test::GltfBuilder& b) {
+    b.document()["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 7;
+  });
+  expectEverywhere(texture, "material 0 baseColorTexture: texture 7 does not exist");
+  const fs::path image = model("image_index.gltf", [](test::GltfBuilder& b) { b.document()["textures"][0]["source"] = 3; });
+  expectEverywhere(image, "texture 0: image 3 does not exist");
+}
+
+TEST_F(BadTexture, UriThatEscapesTheFolder) {
+  fs::create_directories(dir_ / "inner");
+  test::writeFileBytes(dir_ / "outside.png", test::encodePng(2, 2, test::quadPixels()));
+  int files = 0;
+  const auto inner = [&](const std::string& uri) {
+    return model("inner/escape" + std::to_string(files++) + ".gltf",
+                 [&](test::GltfBuilder& b) { b.document()["images"] = {{{"uri", uri}}}; });
+  };
+  // The file exists; only the rule stops it.
+  const fs::path relative = inner("../outside.png");
+  const std::string message = relative.string() + ": texture 0 image 0 '../outside.png': uri '../outside.png' points "
+                                                  "outside the scene folder";
+  expectOneLine(run("iblkit-info", q(relative)), "iblkit-info", 1, message);
+  expectOneLine(trace(relative), "iblkit-trace", 1, message);
+  const std::string absolute = (dir_ / "outside.png").string();
+  const fs::path absoluteFile = inner(absolute);
+  expectOneLine(run("iblkit-info", q(absoluteFile)), "iblkit-info", 1,
+                absoluteFile.string() + ": texture 0 image 0 '" + absolute + "': uri '" + absolute +
+                    "' points outside the scene folder");
+}
+
+TEST_F(BadTexture, MimeTypeWeDoNotRead) {
+  const std::vector<std::uint8_t> ktx2 = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n', 0, 0, 0, 0};
+  const fs::path declared = model("ktx2.glb", [&](test::GltfBuilder& b) { b.addImage(ktx2, "image/ktx2"); });
+  expectEverywhere(declared,
+                   "texture 0 image 0: mime type image/ktx2 is not supported (image/png, image/jpeg and image/webp are)");
+  test::writeFileBytes(dir_ / "albedo.ktx2", ktx2);
+  const fs::path basisu = model("basisu.gltf", [&](test::GltfBuilder& b) {
+    b.document()["images"] = {{{"uri", "albedo.ktx2"}}};
+    b.document()["textures"][0] = {{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}};
+  });
+  expectEverywhere(basisu, "texture 0 has only a KHR_texture_basisu (KTX2) image, which is not supported");
+  const fs::path file = model("ktx2_file.gltf", [&](test::GltfBuilder& b) { b.document()["images"] = {{{"uri", "albedo.ktx2"}}}; });
+  expectEverywhere(file, "texture 0 image 0 'albedo.ktx2': KTX2 images (KHR_texture_basisu) are not supported");
+}
+
+TEST_F(BadTexture, EmptyImage) {
+  const fs::path file = model("empty.glb", [](test::GltfBuilder& b) { b.addImage(test::pngHeaderClaiming(0, 0), "image/png"); });
+  expectEverywhere(file, "texture 0 image 0: image is 0 x 0 pixels");
+}
+
+// The header claims 64k x 64k (16 GiB of RGBA): refused from the header, nothing allocated (the
+// programs run under the test's 60 s timeout, and a 16 GiB allocation would fail or swap).
+TEST_F(BadTexture, ImageOf64kBy64k) {
+  const fs::path png = model("huge.glb", [](test::GltfBuilder& b) { b.addImage(test::pngHeaderClaiming(65536, 65536), "image/png"); });
+  expectEverywhere(png, "texture 0 image 0: image is 65536 x 65536 pixels, beyond the limit of 16384 on a side");
+  // WebP's VP8X canvas holds up to 2^24 a side; libwebp refuses 2^32 pixels itself, so 60000.
+  const fs::path webp = model("huge_webp.glb", [](test::GltfBuilder& b) { b.addImage(test::webpHeaderClaiming(60000, 60000), "image/webp"); });
+  expectEverywhere(webp, "texture 0 image 0: image is 60000 x 60000 pixels, beyond the limit of 16384 on a side");
+}
+
+// A scene file's texture override: the key and the file.
+TEST_F(BadTexture, SceneOverrideWithAMissingNormalMap) {
+  const fs::path file =
+      scene("override.json", "", "[{\"shape\": \"sphere\", \"material\": {\"normalTexture\": {\"file\": \"n.webp\"}}}]");
+  expectOneLine(trace(file), "iblkit-trace", 1,
+                file.string() + ": models[0].material.normalTexture 'n.webp': " + (dir_ / "n.webp").string() +
+                    ": cannot open: No such file or directory");
 }
 
 }  // namespace

@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "support/gltf_builder.h"
 #include "support/test_paths.h"
+#include "support/texture_files.h"
 #include "support/usage_error_check.h"
 
 namespace iblkit {
@@ -78,6 +80,82 @@ TEST(IblkitInfo, GoodFilesStillPrintWhenABadOneFails) {
   const nlohmann::json d = nlohmann::json::parse(output);
   EXPECT_EQ(d["file"], good.string());
   EXPECT_EQ(d["kind"], "image");
+}
+
+// Each texture: the slots and materials using it, size, format, channels, colour space, sampler
+// and where its image came from (the glb's buffer, a data: URI, a file).
+TEST(IblkitInfo, ListsEachTexture) {
+  const std::filesystem::path dir = test::scratchDir();
+  test::GltfBuilder builder;
+  const std::vector<glm::vec3> triangle = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+  const std::vector<glm::vec2> uvs = {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1)};
+  const int positions = builder.addFloats(triangle), texcoords = builder.addFloats(uvs);
+  for (int material = 0; material < 2; ++material)
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", texcoords}}}, {"material", material}});
+  builder.addImage(test::encodePng(2, 2, test::quadPixels()), "image/png");
+  test::writeFileBytes(dir / "normal.webp", test::encodeWebp(2, 2, test::quadPixels()));
+  builder.document()["images"].push_back({{"uri", "normal.webp"}, {"name", "normal"}});
+  builder.document()["images"].push_back(
+      {{"uri", "data:image/jpeg;base64," + test::base64(test::encodeJpeg(4, 2, std::vector<std::uint8_t>(32, 90)))}});
+  builder.document()["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9984}}};
+  builder.document()["textures"] = {{{"source", 0}, {"name", "albedo"}},
+                                    {{"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}, {"sampler", 0}},
+                                    {{"source", 2}}};
+  builder.document()["materials"] = {
+      {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+       {"emissiveTexture", {{"index", 0}}},
+       {"normalTexture", {{"index", 1}}}},
+      {{"occlusionTexture", {{"index", 1}}},
+       {"pbrMetallicRoughness", {{"metallicRoughnessTexture", {{"index", 2}}}, {"baseColorTexture", {{"index", 2}}}}}}};
+  const std::filesystem::path glb = dir / "textured.glb";
+  builder.write(glb, test::GltfBuilder::Storage::Glb);
+
+  int status = 0;
+  const nlohmann::json d = nlohmann::json::parse(info("--json " + quoted(glb) + " 2>/dev/null", &status));
+  EXPECT_EQ(status, 0);
+  ASSERT_EQ(d["textures"].size(), 3u);
+  EXPECT_EQ(d["images"], 3);
+  const nlohmann::json& albedo = d["textures"][0];
+  EXPECT_EQ(albedo["name"], "albedo");
+  EXPECT_EQ(albedo["slots"], nlohmann::json({"baseColorTexture", "emissiveTexture"}));
+  EXPECT_EQ(albedo["materials"], nlohmann::json({0}));
+  EXPECT_EQ(albedo["colorSpace"], "sRGB");
+  EXPECT_EQ(albedo["width"], 2);
+  EXPECT_EQ(albedo["mimeType"], "image/png");
+  EXPECT_EQ(albedo["channels"], 4);
+  EXPECT_EQ(albedo["source"], "bufferView");
+  EXPECT_EQ(albedo["wrapS"], "REPEAT");
+  EXPECT_EQ(albedo["minFilter"], "LINEAR_MIPMAP_LINEAR");
+  const nlohmann::json& normal = d["textures"][1];
+  EXPECT_EQ(normal["slots"], nlohmann::json({"normalTexture", "occlusionTexture"}));
+  EXPECT_EQ(normal["materials"], nlohmann::json({0, 1}));
+  EXPECT_EQ(normal["colorSpace"], "linear");
+  EXPECT_EQ(normal["mimeType"], "image/webp");
+  EXPECT_EQ(normal["source"], "file");
+  EXPECT_EQ(normal["sourceFile"], (dir / "normal.webp").string());
+  EXPECT_EQ(normal["wrapS"], "CLAMP_TO_EDGE");
+  EXPECT_EQ(normal["wrapT"], "MIRRORED_REPEAT");
+  EXPECT_EQ(normal["magFilter"], "NEAREST");
+  EXPECT_EQ(normal["minFilter"], "NEAREST_MIPMAP_NEAREST");
+  const nlohmann::json& jpeg = d["textures"][2];
+  EXPECT_EQ(jpeg["colorSpace"], "sRGB+linear");  // base colour and metallic-roughness
+  EXPECT_EQ(jpeg["mimeType"], "image/jpeg");
+  EXPECT_EQ(jpeg["channels"], 3);
+  EXPECT_EQ(jpeg["width"], 4);
+  EXPECT_EQ(jpeg["height"], 2);
+  EXPECT_EQ(jpeg["source"], "dataUri");
+
+  const std::vector<std::string> text = lines(info(quoted(glb) + " 2>/dev/null", &status));
+  EXPECT_EQ(status, 0);
+  EXPECT_NE(std::find(text.begin(), text.end(),
+                      "  texture 1: normalTexture, occlusionTexture (material 0, 1), 2x2 image/webp 4 channel(s), "
+                      "linear, wrap CLAMP_TO_EDGE/MIRRORED_REPEAT, filter NEAREST/NEAREST_MIPMAP_NEAREST, " +
+                          (dir / "normal.webp").string()),
+            text.end());
+  EXPECT_NE(std::find(text.begin(), text.end(),
+                      "  texture 0 'albedo': baseColorTexture, emissiveTexture (material 0), 2x2 image/png 4 channel(s), "
+                      "sRGB, wrap REPEAT/REPEAT, filter LINEAR/LINEAR_MIPMAP_LINEAR, embedded (buffer view)"),
+            text.end());
 }
 
 TEST(IblkitInfo, AllEighteenEnvironmentMapsAndBothModelsLoad) {

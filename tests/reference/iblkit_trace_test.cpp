@@ -8,6 +8,7 @@
 #include "core/image_io.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
+#include "support/texture_files.h"
 
 namespace iblkit {
 namespace {
@@ -111,6 +112,55 @@ TEST_F(IblkitTrace, TextureOptionsLeaveAnUntexturedSceneAlone) {
   EXPECT_EQ(readExr(dir_ / "a.exr").pixels(), readExr(dir_ / "b.exr").pixels());
 }
 
+// A glb quad [-1, 1]^2 facing a camera at z = 3 that it fills exactly, black, MASK, its PNG base
+// colour texture 4 x 4 with the centre 2 x 2 texels at alpha 0 (NEAREST): the pixels through the
+// hole are exactly the environment, read, decoded and filtered by the loader and the tracer.
+TEST_F(IblkitTrace, MaskedHoleInAGlbShowsTheEnvironment) {
+  test::GltfBuilder gltf;
+  const std::vector<glm::vec3> positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  const std::vector<glm::vec3> normals(4, glm::vec3(0, 0, 1));
+  const std::vector<glm::vec2> uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  std::vector<std::uint8_t> rgba;
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      const bool hole = (x == 1 || x == 2) && (y == 1 || y == 2);
+      rgba.insert(rgba.end(), {255, 255, 255, std::uint8_t(hole ? 0 : 255)});
+    }
+  const int image = gltf.addImage(test::encodePng(4, 4, rgba), "image/png");
+  nlohmann::json& doc = gltf.document();
+  doc["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9728}}};
+  doc["textures"] = {{{"source", image}, {"sampler", 0}}};
+  doc["materials"] = {{{"pbrMetallicRoughness",
+                        {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}, {"baseColorTexture", {{"index", 0}}}}},
+                       {"alphaMode", "MASK"},
+                       {"doubleSided", true}}};
+  gltf.addPrimitiveNode({{"attributes",
+                          {{"POSITION", gltf.addFloats(positions)},
+                           {"NORMAL", gltf.addFloats(normals)},
+                           {"TEXCOORD_0", gltf.addFloats(uvs)}}},
+                         {"indices", gltf.addIndices({0, 1, 2, 0, 2, 3})},
+                         {"material", 0}});
+  doc["cameras"] = {{{"type", "perspective"},
+                     {"perspective", {{"yfov", 2.0 * std::atan(1.0 / 3.0)}, {"znear", 0.1}, {"aspectRatio", 1.0}}}}};
+  gltf.addNode({{"camera", 0}, {"translation", {0, 0, 3}}});
+  gltf.write(dir_ / "holed.glb", test::GltfBuilder::Storage::Glb);
+
+  std::string output;
+  ASSERT_EQ(trace("holed.glb --env env.exr -o holed.exr --width 16 --height 16 --spp 4 --threads 2", &output), 0)
+      << output;
+  const Image beauty = readExr(dir_ / "holed.exr");
+  const glm::vec4 sky(0.5f, 0.625f, 0.75f, 1.0f);
+  for (int j = 0; j < 16; ++j)
+    for (int i = 0; i < 16; ++i) {
+      if (i % 4 == 0 || i % 4 == 3 || j % 4 == 0 || j % 4 == 3) continue;  // astride a texel edge
+      const bool hole = (i / 4 == 1 || i / 4 == 2) && (j / 4 == 1 || j / 4 == 2);
+      if (hole)
+        EXPECT_EQ(beauty.at(i, j), sky) << i << ", " << j;
+      else
+        EXPECT_LT(beauty.at(i, j).g, 0.1f) << i << ", " << j;  // the black card (its specular layer only)
+    }
+}
+
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
   struct Case {
     std::string arguments;
@@ -139,7 +189,7 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
       {"scene.json -o nowhere/out.exr", 1, "iblkit-trace: nowhere/out.exr: folder does not exist\n"},
       {"scene.json -o out.exr --bent-normal b.exr", 2,
        "iblkit-trace: --bent-normal: needs --integrator ao\n"},
-      {"scene.json -o out.exr --texture-footprint -1", 2, "TBD"},
+      {"scene.json -o out.exr --texture-footprint -1", 2, "iblkit-trace: --texture-footprint: must be >= 0 (pixels)\n"},
       {"scene.json", 2, "iblkit-trace: --output is required\n"},
       {"scene.json -o out.exr --no-such-option", 2,
        "iblkit-trace: The following argument was not expected: --no-such-option\n"},
