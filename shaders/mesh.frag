@@ -32,6 +32,10 @@ vertexIn;
 #ifndef FRAME_LAYER
 #define FRAME_LAYER kFrameLayerRadiance
 #endif
+// The material's alpha mode (iblkit::AlphaMode as ALPHA_MODE_* macros), one program per mode too.
+#ifndef ALPHA_MODE
+#define ALPHA_MODE ALPHA_MODE_OPAQUE
+#endif
 const int mode = SHADING_MODE;
 const int layer = FRAME_LAYER;
 uniform vec3 cameraPosition;
@@ -116,12 +120,17 @@ void main() {
   SurfaceMaterial m = evaluateSurfaceMaterial(inputs);
   vec3 n = shadingNormal(m.normal, geometric, v);
   // Alpha (docs/engine.md "Alpha"), in every layer: MASK exact, BLEND as coverage of the samples.
-  if (alphaMode == kAlphaModeMask && !surfacePresent(m.alpha, 0.0)) discard;
+  // Compiled in for those modes only (ALPHA_MODE, renderer.cpp): a shader that may discard or
+  // write gl_SampleMask loses the early depth test, which opaque meshes keep.
+#if ALPHA_MODE == ALPHA_MODE_MASK
+  if (!surfacePresent(m.alpha, 0.0)) discard;
+#elif ALPHA_MODE == ALPHA_MODE_BLEND
   // A single-sample target ignores gl_SampleMask (no multisample fragment operations): there the
   // one sample's bit decides through discard.
   int sampleMask = coverageMask(m.alpha, uvec2(gl_FragCoord.xy), max(framebufferSamples, 1));
   if (sampleMask == 0) discard;
   gl_SampleMask[0] = sampleMask;
+#endif
   float coverage = isGround ? 0.0 : 1.0;
   if (layer == kFrameLayerNormal) {
     fragColor = vec4(n, coverage);

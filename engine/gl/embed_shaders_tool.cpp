@@ -121,6 +121,10 @@ std::string sharedConstants() {
           "\n#define SLOT_BIT_NORMAL " + std::to_string(int(kSlotNormal)) +
           "\n#define SLOT_BIT_OCCLUSION " + std::to_string(int(kSlotOcclusion)) +
           "\n#define SLOT_BIT_EMISSIVE " + std::to_string(int(kSlotEmissive)) + "\n";
+  // The alpha modes as macros too, for mesh.frag's #if on ALPHA_MODE.
+  text += "#define ALPHA_MODE_OPAQUE " + std::to_string(int(AlphaMode::Opaque)) +
+          "\n#define ALPHA_MODE_MASK " + std::to_string(int(AlphaMode::Mask)) +
+          "\n#define ALPHA_MODE_BLEND " + std::to_string(int(AlphaMode::Blend)) + "\n";
   text += intConstants("iblkit::AlphaMode (core/material.h)",
                        {{"kAlphaModeOpaque", int(AlphaMode::Opaque)},
                         {"kAlphaModeMask", int(AlphaMode::Mask)},

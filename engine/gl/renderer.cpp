@@ -35,8 +35,8 @@ float envRotationFromBake(const EnvironmentStages& env, std::optional<float> deg
 struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;
-  // mesh.frag specialised per (mode, layer, texture slots read), compiled on first use.
-  std::map<std::tuple<ShadingMode, FrameLayer, unsigned>, ShaderProgram> meshPrograms;
+  // mesh.frag specialised per (mode, layer, texture slots read, alpha mode), compiled on first use.
+  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode>, ShaderProgram> meshPrograms;
   MaterialTextures materialTextures;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
@@ -48,15 +48,18 @@ struct Renderer::Impl {
 
   // `slots`: the texture slots the variant reads (material.glsl's TEXTURED), those bound for the
   // mesh; a slot not bound costs nothing, and untextured meshes keep the untextured shader.
-  const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots) {
+  // `alphaMode`: MASK and BLEND compile the discard / sample mask in (mesh.frag's ALPHA_MODE), so
+  // opaque meshes keep the early depth test.
+  const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode) {
     // The feature layers do not depend on the mode: one program each.
     if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
-    const auto key = std::make_tuple(mode, layer, slots);
+    const auto key = std::make_tuple(mode, layer, slots, alphaMode);
     auto found = meshPrograms.find(key);
     if (found == meshPrograms.end()) {
       const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
                                   "\n#define FRAME_LAYER " + std::to_string(int(layer)) +
-                                  "\n#define TEXTURED " + std::to_string(slots);
+                                  "\n#define TEXTURED " + std::to_string(slots) +
+                                  "\n#define ALPHA_MODE " + std::to_string(int(alphaMode));
       found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
     }
     return found->second;
@@ -154,7 +157,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const Material& material = r.scene.materials.at(std::size_t(mesh.material));
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
-    const ShaderProgram& program = r.meshProgram(settings.mode, settings.layer, slots);
+    const ShaderProgram& program = r.meshProgram(settings.mode, settings.layer, slots, material.alphaMode);
     if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
       setFrameUniforms(program);
       prepared.push_back(&program);

@@ -9,7 +9,8 @@
 namespace iblkit {
 namespace {
 
-// mesh.frag includes the generated constants and three files: each is preceded by "#line 1 N" and
+// mesh.frag includes the generated constants and four files (material.glsl includes the constants
+// again, under their include guard): each is preceded by "#line 1 N" and
 // followed by the line after the #include in file 0, so compiler messages map back to the
 // original files.
 TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
@@ -20,12 +21,13 @@ TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
   EXPECT_NE(source.find("#line 1 4\n"), std::string::npos);
   for (const EmbeddedShader& shader : embeddedShaders())
     if (shader.name == "mesh.frag") {
-      ASSERT_EQ(shader.files.size(), 5u);
+      ASSERT_EQ(shader.files.size(), 6u);
       EXPECT_EQ(shader.files[0], "shaders/mesh.frag");
       EXPECT_EQ(shader.files[1], "generated/shared_constants.glsl");
       EXPECT_EQ(shader.files[2], "shaders/environment.glsl");
       EXPECT_EQ(shader.files[3], "shaders/sh9.glsl");
       EXPECT_EQ(shader.files[4], "shaders/brdf.glsl");
+      EXPECT_EQ(shader.files[5], "shaders/material.glsl");
     }
 }
 
@@ -36,13 +38,13 @@ TEST(ShaderProgram, UnknownShaderIsAnError) {
 }
 
 // Compile errors name the original file and line, in the stage and in an included file (a define
-// breaks the source on purpose: mesh.frag line 31 reads SHADING_MODE, environment.glsl line 7
+// breaks the source on purpose: mesh.frag line 39 reads SHADING_MODE, environment.glsl line 7
 // declares rotateAboutY).
 TEST(ShaderProgram, CompileErrorsNameTheShaderFileAndLine) {
   test::glContext();
   const std::string inStage = test::errorMessage(
       [] { ShaderProgram("mesh.vert", "mesh.frag", "#define SHADING_MODE undefinedName"); });
-  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:31: ", 0), 0u) << inStage;
+  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:39: ", 0), 0u) << inStage;
   const std::string inInclude =
       test::errorMessage([] { ShaderProgram("fullscreen.vert", "sky.frag", "#define rotateAboutY 1"); });
   EXPECT_EQ(inInclude.rfind("shaders/environment.glsl:7: ", 0), 0u) << inInclude;
@@ -58,6 +60,7 @@ TEST(ShaderProgram, EveryEmbeddedStageCompilesAndLinks) {
   EXPECT_NO_THROW(ShaderProgram("fullscreen.vert", "brdf_lobes_probe.frag"));
   EXPECT_NO_THROW(ShaderProgram("fullscreen.vert", "difference_heatmap.frag"));
   EXPECT_NO_THROW(ShaderProgram("fullscreen.vert", "shared_constants_probe.frag"));
+  EXPECT_NO_THROW(ShaderProgram("fullscreen.vert", "material_probe.frag"));
   checkGlErrors("shader programs");
 }
 

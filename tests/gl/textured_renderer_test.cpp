@@ -305,6 +305,37 @@ TEST(TexturedRenderer, BlendAlphaIsCoverage) {
   }
 }
 
+// The normal layer of a normal-mapped quad (one texel, so every filter reads it) is core's
+// perturbNormal of the vertex frame: the TANGENT attribute reaches the shader, w = -1 flips the
+// bitangent, and the normal scale scales x and y.
+TEST(TexturedRenderer, NormalMapPerturbsTheNormalLayerAsTheCpu) {
+  test::glContext();
+  Material m = texturedMaterial();
+  m.baseColorTexture = TextureRef{};
+  m.normalTexture.texture = 0;
+  m.normalScale = 0.7f;
+  const glm::u8vec4 texel(200, 100, 230, 255);
+  TextureImage one;
+  one.width = one.height = 1;
+  one.rgba = {texel.r, texel.g, texel.b, texel.a};
+  for (float w : {1.0f, -1.0f}) {
+    BakedScene bake = quadBake(m, {one}, {{"normal", 0, TextureSampler{}}});
+    for (glm::vec4& t : bake.scene.meshes[0].tangents) t.w = w;
+    Renderer renderer(bake);
+    FrameSettings settings;
+    settings.layer = FrameLayer::Normal;
+    const Image normals = render(renderer, settings).image;
+    const glm::vec3 expected =
+        perturbNormal(glm::vec3(0, 0, 1), glm::vec4(1, 0, 0, w), glm::vec3(texel) / 255.0f, m.normalScale);
+    const glm::vec3 gpu(normals.at(kSize / 2, kSize / 2));
+    EXPECT_LT(glm::length(gpu - expected), 1e-4f) << "w " << w;
+    EXPECT_GT(std::abs(expected.y), 0.1f);  // the bitangent's part is there to be flipped
+    settings.textureSlots = kAllTextureSlots & ~kSlotNormal;
+    const glm::vec3 flat(render(renderer, settings).image.at(kSize / 2, kSize / 2));
+    EXPECT_LT(glm::length(flat - glm::vec3(0, 0, 1)), 1e-6f);
+  }
+}
+
 // full-gltf-ao and full-both-ao read the occlusion texture: R = 0 (strength 1) on the left half
 // takes the environment's light away there; R = 1 on the right half changes nothing.
 TEST(TexturedRenderer, GltfOcclusionModesReadTheOcclusionTexture) {
