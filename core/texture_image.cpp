@@ -53,6 +53,12 @@ std::string webpStatusText(VP8StatusCode status) {
   return "error " + std::to_string(int(status));
 }
 
+// stb_image's reason for its last failure, fit for a one-line message (it may quote raw bytes).
+std::string stbReason() {
+  const char* reason = stbi_failure_reason();
+  return reason ? printableExcerpt(reason, 80) : "unknown reason";
+}
+
 // PNG and JPEG through stb_image. The PNG size comes from IHDR (PNG specification section 11.2.2,
 // the first chunk), since stbi_info refuses sizes it would not decode with a vaguer "too large".
 void decodeWithStb(TextureImage& image, std::span<const std::uint8_t> bytes, bool png,
@@ -67,7 +73,7 @@ void decodeWithStb(TextureImage& image, std::span<const std::uint8_t> bytes, boo
   }
   int width = 0, height = 0, channels = 0;
   if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels))
-    fail(file, what + ": " + format + " does not decode (" + printableExcerpt(stbi_failure_reason(), 80) + ")");
+    fail(file, what + ": " + format + " does not decode (" + stbReason() + ")");
   requireTextureSize(width, height, file, what);
   // stb_image decodes a truncated JPEG to the end, as grey blocks: a 700-byte header claiming
   // 16000 x 16000 took 35 s and 2 GiB. Every 8 x 8 block of a full-resolution component codes at
@@ -81,7 +87,7 @@ void decodeWithStb(TextureImage& image, std::span<const std::uint8_t> bytes, boo
   int decodedWidth = 0, decodedHeight = 0, fileChannels = 0;
   const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
       stbi_load_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &fileChannels, 4), &stbi_image_free);
-  if (!pixels) fail(file, what + ": " + format + " does not decode (" + printableExcerpt(stbi_failure_reason(), 80) + ")");
+  if (!pixels) fail(file, what + ": " + format + " does not decode (" + stbReason() + ")");
   if (decodedWidth != width || decodedHeight != height)
     fail(file, what + ": " + format + " decodes to " + sizeText(decodedWidth, decodedHeight) +
                    " pixels, not the " + sizeText(width, height) + " of its header");

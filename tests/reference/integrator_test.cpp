@@ -116,6 +116,8 @@ TEST(Integrator, DirectAndPathAgreeOnAConvexSphere) {
 TEST(Integrator, PathCarriesLightBetweenSurfacesWhereDirectStops) {
   Scene scene = sphereScene(lambert(0.8f));
   scene.materials[0].emissive = glm::vec3(0.5f);
+  // Seen from inside: single-sided back faces are not there for camera rays (as in the raster).
+  scene.materials[0].doubleSided = true;
   scene.camera = Camera::lookAt(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 1.0f, 0.0f),
                                 glm::radians(40.0f), 0.1f, 10.0f);
   const EnvironmentMap black = EnvironmentMap::constant(glm::vec3(0.0f));
