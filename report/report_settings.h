@@ -29,6 +29,12 @@ struct ReportSettings {
   // ...and render K x K pixels per output pixel (iblkit-view --supersample K): 4 x 2 x 2 = 16
   // shaded samples by default, since 4 still alias the mirror sphere's minified reflection.
   int engineSupersample = 2;
+  // ...with this texture anisotropy (iblkit-view --anisotropy): 1, isotropic trilinear, because
+  // the reference's ray cones are isotropic (docs/reference-tracer.md "Texture filtering"), so the
+  // score measures the lighting approximations, not a filter the reference does not model; it
+  // also avoids llvmpipe's anisotropic filter, which blurs even head-on (docs/material-model.md
+  // "Raster against reference": checker quad FLIP 0.047 at 16 against 0.016 at 1).
+  int engineAnisotropy = 1;
   // iblkit-trace --integrator of the reference: path (full global illumination) or direct (one
   // bounce: what the engine's modes model without interreflection), for experiments.
   std::string referenceIntegrator = "path";

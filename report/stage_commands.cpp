@@ -58,6 +58,7 @@ StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, c
                      {"--samples", std::to_string(settings.engineSamples), "--sample-shading"});
   if (settings.engineSupersample > 1)
     arguments.insert(arguments.end(), {"--supersample", std::to_string(settings.engineSupersample)});
+  arguments.insert(arguments.end(), {"--anisotropy", std::to_string(settings.engineAnisotropy)});
   if (settings.benchFrames > 0)
     arguments.insert(arguments.end(), {"--bench", std::to_string(settings.benchFrames)});
   return command;

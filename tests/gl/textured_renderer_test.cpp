@@ -181,7 +181,9 @@ TEST(TexturedRenderer, TrilinearQuadMatchesTheCpuOnAverage) {
     }
   ASSERT_GT(compared, 500);
   const double meanError = error / compared;
-  if (anisotropy == 1.0f) EXPECT_LT(meanError, 5e-3);
+  if (anisotropy == 1.0f) {
+    EXPECT_LT(meanError, 5e-3);
+  }
   std::cout << "trilinear textured quad, anisotropy " << renderer.textureAnisotropy() << ": " << compared
             << " pixels, mean |GPU - CPU| " << meanError << '\n';
   }

@@ -56,7 +56,7 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   const std::vector<std::function<void(ReportSettings&)>> viewChanges = {
       [](ReportSettings& s) { s.width = 64; }, [](ReportSettings& s) { s.height = 36; },
       [](ReportSettings& s) { s.engineSamples = 1; }, [](ReportSettings& s) { s.engineSupersample = 4; },
-      [](ReportSettings& s) { s.benchFrames = 0; }};
+      [](ReportSettings& s) { s.benchFrames = 0; }, [](ReportSettings& s) { s.engineAnisotropy = 16; }};
   for (std::size_t i = 0; i < viewChanges.size(); ++i) {
     ReportSettings changed = fixture.settings;
     viewChanges[i](changed);
@@ -68,6 +68,12 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   EXPECT_EQ(stageKey(viewCommand(fixture.settings, "/elsewhere/bake-0123", "sh")), viewKey(fixture.settings));
   EXPECT_EQ(stageArgv(viewCommand(fixture.settings, bake, "sh"), "/cache", "/cache/view")[1],
             "/cache/bake-0123/bake");
+  // Isotropic texture filtering, as the reference's ray cones model it.
+  const std::vector<std::string> view = viewCommand(fixture.settings, bake, "sh").arguments;
+  const auto anisotropy = std::find(view.begin(), view.end(), "--anisotropy");
+  ASSERT_NE(anisotropy, view.end());
+  ASSERT_NE(anisotropy + 1, view.end());
+  EXPECT_EQ(*(anisotropy + 1), "1");
   const std::vector<std::function<void(ReportSettings&)>> traceChanges = {
       [](ReportSettings& s) { s.width = 64; }, [](ReportSettings& s) { s.passSpp = 32; },
       [](ReportSettings& s) { s.referenceIntegrator = "direct"; }};
