@@ -234,6 +234,7 @@ SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::ve
       MipChain chain = buildMipChain(images[image], colorSpace);
       if (chain.levels.empty()) return;
       chainOfImage[image] = static_cast<int>(chains_.size());
+      chainLog2Size_.push_back(0.5f * std::log2(static_cast<float>(chain.width()) * static_cast<float>(chain.height())));
       chains_.push_back(std::move(chain));
     }
     Entry& entry = textures_[ref.texture];
@@ -260,14 +261,33 @@ const TextureSampler& SceneTextures::sampler(int texture) const {
   return textures_[texture].sampler;
 }
 
-glm::vec4 SceneTextures::sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float footprintUv) const {
-  const MipChain* mipChain = chain(ref.texture, colorSpace);
-  if (mipChain == nullptr) return glm::vec4(1.0f);
+float SceneTextures::log2Footprint(float footprintUv) {
+  return footprintUv > 0.0f ? std::log2(footprintUv) : -std::numeric_limits<float>::infinity();
+}
+
+bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
+                              glm::vec4& value) const {
+  if (ref.texture < 0 || ref.texture >= static_cast<int>(textures_.size())) return false;
+  const Entry& entry = textures_[ref.texture];
+  const int index = colorSpace == ColorSpace::Srgb ? entry.srgb : entry.linear;
+  if (index < 0) return false;
+  // textureLod's log2(footprint * sqrt(width * height)) as a sum of logs (equal up to rounding).
   // The transform scales the footprint as it scales uv (isotropically: the geometric mean).
-  const float footprint =
-      footprintUv * std::sqrt(std::abs(ref.transform.scale.x * ref.transform.scale.y));
-  return sampleMipChain(*mipChain, textures_[ref.texture].sampler, applyTransform(ref.transform, uv),
-                        textureLod(*mipChain, footprint));
+  float lod = log2FootprintUv + chainLog2Size_[index];
+  const glm::vec2 scale = ref.transform.scale;
+  if (scale.x != 1.0f || scale.y != 1.0f) {
+    const float area = std::abs(scale.x * scale.y);
+    lod += area > 0.0f ? 0.5f * std::log2(area) : -std::numeric_limits<float>::infinity();
+  }
+  if (lod != lod) lod = -std::numeric_limits<float>::infinity();  // -inf + inf: a zero footprint
+  value = sampleMipChain(chains_[index], entry.sampler, applyTransform(ref.transform, uv), lod);
+  return true;
+}
+
+glm::vec4 SceneTextures::sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float footprintUv) const {
+  glm::vec4 value(1.0f);
+  trySample(ref, colorSpace, uv, log2Footprint(footprintUv), value);
+  return value;
 }
 
 }  // namespace iblkit
