@@ -137,6 +137,48 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   return glm::mix(top, bottom, fy);
 }
 
+// sampleLevel's LINEAR lookup for the common case, inlined into the trilinear loop (a call per
+// level returned the vec4 through the stack, and the perf profile showed the stall): both wraps
+// REPEAT on power-of-two sizes (a mask, no switch) and the coordinate well inside int range.
+// The same texels, weights and arithmetic order as sampleLevel, so the same result; false for
+// anything else, which then takes sampleLevel.
+[[gnu::always_inline]] inline bool bilinearRepeatPow2(const MipLevel& level, const float* rgbTable, glm::vec2 uv,
+                                                      glm::vec4& out) {
+  const int w = level.width, h = level.height;
+  if (((w & (w - 1)) | (h & (h - 1))) != 0) return false;
+  const float xs = uv.x * w - 0.5f, ys = uv.y * h - 0.5f;
+  if (!(std::abs(xs) < 16777216.0f && std::abs(ys) < 16777216.0f)) return false;  // NaN, inf, huge
+  const float xFloor = std::floor(xs), yFloor = std::floor(ys);
+  const float fx = xs - xFloor, fy = ys - yFloor;
+  const int i = static_cast<int>(xFloor), j = static_cast<int>(yFloor);
+  const int i0 = i & (w - 1), i1 = (i + 1) & (w - 1);
+  const int j0 = j & (h - 1), j1 = (j + 1) & (h - 1);
+  const std::uint8_t* row0 = &level.rgba[static_cast<std::size_t>(j0) * w * 4];
+  const std::uint8_t* row1 = &level.rgba[static_cast<std::size_t>(j1) * w * 4];
+  const std::uint8_t *a = row0 + 4 * i0, *b = row0 + 4 * i1, *c = row1 + 4 * i0, *d = row1 + 4 * i1;
+  const float* alphaTable = tables().linear.data();
+  const float gx = 1.0f - fx, gy = 1.0f - fy;
+  for (int k = 0; k < 3; ++k) {
+    const float top = rgbTable[a[k]] * gx + rgbTable[b[k]] * fx;
+    const float bottom = rgbTable[c[k]] * gx + rgbTable[d[k]] * fx;
+    out[k] = top * gy + bottom * fy;
+  }
+  const float top = alphaTable[a[3]] * gx + alphaTable[b[3]] * fx;
+  const float bottom = alphaTable[c[3]] * gx + alphaTable[d[3]] * fx;
+  out[3] = top * gy + bottom * fy;
+  return true;
+}
+
+// One level of a minified lookup: the fast path when it applies.
+[[gnu::always_inline]] inline glm::vec4 minifyLevel(const MipLevel& level, const float* rgbTable,
+                                                    const TextureSampler& sampler, glm::vec2 uv) {
+  glm::vec4 out;
+  if (sampler.minFilter == TextureFilter::Linear && sampler.wrapS == TextureWrap::Repeat &&
+      sampler.wrapT == TextureWrap::Repeat && bilinearRepeatPow2(level, rgbTable, uv, out))
+    return out;
+  return sampleLevel(level, rgbTable, sampler, uv, sampler.minFilter);
+}
+
 // KHR_texture_transform without building the matrix (no trigonometry for the common unrotated
 // case); the same arithmetic as TextureTransform::matrix().
 glm::vec2 applyTransform(const TextureTransform& transform, glm::vec2 uv) {
@@ -213,9 +255,9 @@ glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, g
   if (lod >= static_cast<float>(q)) return sampleLevel(chain.levels[q], rgbTable, sampler, uv, sampler.minFilter);
   const int d1 = static_cast<int>(std::floor(lod));
   const float fraction = lod - static_cast<float>(d1);
-  const glm::vec4 a = sampleLevel(chain.levels[d1], rgbTable, sampler, uv, sampler.minFilter);
+  const glm::vec4 a = minifyLevel(chain.levels[d1], rgbTable, sampler, uv);
   if (fraction == 0.0f) return a;
-  const glm::vec4 b = sampleLevel(chain.levels[d1 + 1], rgbTable, sampler, uv, sampler.minFilter);
+  const glm::vec4 b = minifyLevel(chain.levels[d1 + 1], rgbTable, sampler, uv);
   return glm::mix(a, b, fraction);
 }
 
