@@ -137,13 +137,13 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   return glm::mix(top, bottom, fy);
 }
 
-// sampleLevel's LINEAR lookup for the common case, inlined into the trilinear loop (a call per
+// sampleLevel's LINEAR lookup for the common case, inlined into sampleMipChain's lookups (a call per
 // level returned the vec4 through the stack, and the perf profile showed the stall): both wraps
 // REPEAT on power-of-two sizes (a mask, no switch) and the coordinate well inside int range.
 // The same texels, weights and arithmetic order as sampleLevel, so the same result; false for
 // anything else, which then takes sampleLevel.
-[[gnu::always_inline]] inline bool bilinearRepeatPow2(const MipLevel& level, const float* rgbTable, glm::vec2 uv,
-                                                      glm::vec4& out) {
+[[gnu::always_inline]] inline bool bilinearRepeatPow2(const MipLevel& level, const float* rgbTable,
+                                                      const float* alphaTable, glm::vec2 uv, glm::vec4& out) {
   const int w = level.width, h = level.height;
   if (((w & (w - 1)) | (h & (h - 1))) != 0) return false;
   const float xs = uv.x * w - 0.5f, ys = uv.y * h - 0.5f;
@@ -156,7 +156,6 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   const std::uint8_t* row0 = &level.rgba[static_cast<std::size_t>(j0) * w * 4];
   const std::uint8_t* row1 = &level.rgba[static_cast<std::size_t>(j1) * w * 4];
   const std::uint8_t *a = row0 + 4 * i0, *b = row0 + 4 * i1, *c = row1 + 4 * i0, *d = row1 + 4 * i1;
-  const float* alphaTable = tables().linear.data();
   const float gx = 1.0f - fx, gy = 1.0f - fy;
   for (int k = 0; k < 3; ++k) {
     const float top = rgbTable[a[k]] * gx + rgbTable[b[k]] * fx;
@@ -169,14 +168,15 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   return true;
 }
 
-// One level of a minified lookup: the fast path when it applies.
-[[gnu::always_inline]] inline glm::vec4 minifyLevel(const MipLevel& level, const float* rgbTable,
-                                                    const TextureSampler& sampler, glm::vec2 uv) {
+// One level's lookup with `filter`: the fast path when it applies. alphaTable: tables().linear.
+[[gnu::always_inline]] inline glm::vec4 lookupLevel(const MipLevel& level, const float* rgbTable,
+                                                    const float* alphaTable, const TextureSampler& sampler,
+                                                    glm::vec2 uv, TextureFilter filter) {
   glm::vec4 out;
-  if (sampler.minFilter == TextureFilter::Linear && sampler.wrapS == TextureWrap::Repeat &&
-      sampler.wrapT == TextureWrap::Repeat && bilinearRepeatPow2(level, rgbTable, uv, out))
+  if (filter == TextureFilter::Linear && sampler.wrapS == TextureWrap::Repeat &&
+      sampler.wrapT == TextureWrap::Repeat && bilinearRepeatPow2(level, rgbTable, alphaTable, uv, out))
     return out;
-  return sampleLevel(level, rgbTable, sampler, uv, sampler.minFilter);
+  return sampleLevel(level, rgbTable, sampler, uv, filter);
 }
 
 // KHR_texture_transform without building the matrix (no trigonometry for the common unrotated
@@ -240,24 +240,26 @@ int wrapTexel(int i, int size, TextureWrap wrap) {
 
 glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod) {
   if (chain.levels.empty()) return glm::vec4(1.0f);
-  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
+  const DecodeTables& decode = tables();
+  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? decode.srgb.data() : decode.linear.data();
+  const float* alphaTable = decode.linear.data();
   if (lod != lod) lod = 0.0f;
   // GL 4.5 section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter
   // pair; GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
-  if (lod <= 0.0f) return sampleLevel(chain.levels[0], rgbTable, sampler, uv, sampler.magFilter);
-  if (!sampler.mipmaps) return sampleLevel(chain.levels[0], rgbTable, sampler, uv, sampler.minFilter);
+  if (lod <= 0.0f) return lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.magFilter);
+  if (!sampler.mipmaps) return lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   const int q = static_cast<int>(chain.levels.size()) - 1;
   if (sampler.mipFilter == TextureFilter::Nearest) {
     // Section 8.14.3: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
     const int d = lod <= 0.5f ? 0 : std::min(q, static_cast<int>(std::ceil(std::min(lod, 1e6f) + 0.5f)) - 1);
-    return sampleLevel(chain.levels[d], rgbTable, sampler, uv, sampler.minFilter);
+    return lookupLevel(chain.levels[d], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   }
-  if (lod >= static_cast<float>(q)) return sampleLevel(chain.levels[q], rgbTable, sampler, uv, sampler.minFilter);
+  if (lod >= static_cast<float>(q)) return lookupLevel(chain.levels[q], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   const int d1 = static_cast<int>(std::floor(lod));
   const float fraction = lod - static_cast<float>(d1);
-  const glm::vec4 a = minifyLevel(chain.levels[d1], rgbTable, sampler, uv);
+  const glm::vec4 a = lookupLevel(chain.levels[d1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   if (fraction == 0.0f) return a;
-  const glm::vec4 b = minifyLevel(chain.levels[d1 + 1], rgbTable, sampler, uv);
+  const glm::vec4 b = lookupLevel(chain.levels[d1 + 1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   return glm::mix(a, b, fraction);
 }
 
