@@ -143,7 +143,7 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
 // The same texels, weights and arithmetic order as sampleLevel, so the same result; false for
 // anything else, which then takes sampleLevel.
 [[gnu::always_inline]] inline bool bilinearRepeatPow2(const MipLevel& level, const float* rgbTable,
-                                                      const float* alphaTable, glm::vec2 uv, glm::vec4& out) {
+                                                      const float* alphaTable, glm::vec2 uv, float* out) {
   const int w = level.width, h = level.height;
   if (((w & (w - 1)) | (h & (h - 1))) != 0) return false;
   const float xs = uv.x * w - 0.5f, ys = uv.y * h - 0.5f;
@@ -168,14 +168,19 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   return true;
 }
 
+// Whether lookups of `sampler` with `filter` can take bilinearRepeatPow2.
+bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
+  return filter == TextureFilter::Linear && sampler.wrapS == TextureWrap::Repeat &&
+         sampler.wrapT == TextureWrap::Repeat;
+}
+
 // One level's lookup with `filter`: the fast path when it applies. alphaTable: tables().linear.
 [[gnu::always_inline]] inline glm::vec4 lookupLevel(const MipLevel& level, const float* rgbTable,
                                                     const float* alphaTable, const TextureSampler& sampler,
                                                     glm::vec2 uv, TextureFilter filter) {
-  glm::vec4 out;
-  if (filter == TextureFilter::Linear && sampler.wrapS == TextureWrap::Repeat &&
-      sampler.wrapT == TextureWrap::Repeat && bilinearRepeatPow2(level, rgbTable, alphaTable, uv, out))
-    return out;
+  float out[4];
+  if (repeatLinear(sampler, filter) && bilinearRepeatPow2(level, rgbTable, alphaTable, uv, out))
+    return glm::vec4(out[0], out[1], out[2], out[3]);
   return sampleLevel(level, rgbTable, sampler, uv, filter);
 }
 
@@ -257,6 +262,17 @@ glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, g
   if (lod >= static_cast<float>(q)) return lookupLevel(chain.levels[q], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   const int d1 = static_cast<int>(std::floor(lod));
   const float fraction = lod - static_cast<float>(d1);
+  if (fraction != 0.0f && repeatLinear(sampler, sampler.minFilter)) {
+    // Trilinear in scalars: blending two vec4 results went through the stack with a
+    // store-forwarding stall per lookup (perf). The same arithmetic as glm::mix below.
+    float a[4], b[4];
+    if (bilinearRepeatPow2(chain.levels[d1], rgbTable, alphaTable, uv, a) &&
+        bilinearRepeatPow2(chain.levels[d1 + 1], rgbTable, alphaTable, uv, b)) {
+      const float g = 1.0f - fraction;
+      return glm::vec4(a[0] * g + b[0] * fraction, a[1] * g + b[1] * fraction, a[2] * g + b[2] * fraction,
+                       a[3] * g + b[3] * fraction);
+    }
+  }
   const glm::vec4 a = lookupLevel(chain.levels[d1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   if (fraction == 0.0f) return a;
   const glm::vec4 b = lookupLevel(chain.levels[d1 + 1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
