@@ -148,9 +148,12 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   if (((w & (w - 1)) | (h & (h - 1))) != 0) return false;
   const float xs = uv.x * w - 0.5f, ys = uv.y * h - 0.5f;
   if (!(std::abs(xs) < 16777216.0f && std::abs(ys) < 16777216.0f)) return false;  // NaN, inf, huge
-  const float xFloor = std::floor(xs), yFloor = std::floor(ys);
-  const float fx = xs - xFloor, fy = ys - yFloor;
-  const int i = static_cast<int>(xFloor), j = static_cast<int>(yFloor);
+  // floor without libm's call (std::floor is not inlined without SSE4.1): truncate, then step
+  // down for negative non-integers; exact for |x| < 2^24.
+  int i = static_cast<int>(xs), j = static_cast<int>(ys);
+  i -= static_cast<float>(i) > xs;
+  j -= static_cast<float>(j) > ys;
+  const float fx = xs - static_cast<float>(i), fy = ys - static_cast<float>(j);
   const int i0 = i & (w - 1), i1 = (i + 1) & (w - 1);
   const int j0 = j & (h - 1), j1 = (j + 1) & (h - 1);
   const std::uint8_t* row0 = &level.rgba[static_cast<std::size_t>(j0) * w * 4];
@@ -243,23 +246,42 @@ int wrapTexel(int i, int size, TextureWrap wrap) {
   }
 }
 
-glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod) {
-  if (chain.levels.empty()) return glm::vec4(1.0f);
+namespace {
+
+// sampleMipChain's body, inlined into SceneTextures::trySample too, so that the result is written
+// where the caller wants it (returning a glm::vec4 packs it into two registers through the stack,
+// a store-forwarding stall per lookup in perf annotate).
+[[gnu::always_inline]] inline void sampleChainInto(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
+                                                   float lod, glm::vec4& out) {
+  if (chain.levels.empty()) {
+    out = glm::vec4(1.0f);
+    return;
+  }
   const DecodeTables& decode = tables();
   const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? decode.srgb.data() : decode.linear.data();
   const float* alphaTable = decode.linear.data();
   if (lod != lod) lod = 0.0f;
   // GL 4.5 section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter
   // pair; GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
-  if (lod <= 0.0f) return lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.magFilter);
-  if (!sampler.mipmaps) return lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+  if (lod <= 0.0f) {
+    out = lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.magFilter);
+    return;
+  }
+  if (!sampler.mipmaps) {
+    out = lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    return;
+  }
   const int q = static_cast<int>(chain.levels.size()) - 1;
   if (sampler.mipFilter == TextureFilter::Nearest) {
     // Section 8.14.3: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
     const int d = lod <= 0.5f ? 0 : std::min(q, static_cast<int>(std::ceil(std::min(lod, 1e6f) + 0.5f)) - 1);
-    return lookupLevel(chain.levels[d], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    out = lookupLevel(chain.levels[d], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    return;
   }
-  if (lod >= static_cast<float>(q)) return lookupLevel(chain.levels[q], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+  if (lod >= static_cast<float>(q)) {
+    out = lookupLevel(chain.levels[q], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    return;
+  }
   const int d1 = static_cast<int>(std::floor(lod));
   const float fraction = lod - static_cast<float>(d1);
   if (fraction != 0.0f && repeatLinear(sampler, sampler.minFilter)) {
@@ -269,14 +291,26 @@ glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, g
     if (bilinearRepeatPow2(chain.levels[d1], rgbTable, alphaTable, uv, a) &&
         bilinearRepeatPow2(chain.levels[d1 + 1], rgbTable, alphaTable, uv, b)) {
       const float g = 1.0f - fraction;
-      return glm::vec4(a[0] * g + b[0] * fraction, a[1] * g + b[1] * fraction, a[2] * g + b[2] * fraction,
-                       a[3] * g + b[3] * fraction);
+      out = glm::vec4(a[0] * g + b[0] * fraction, a[1] * g + b[1] * fraction, a[2] * g + b[2] * fraction,
+                      a[3] * g + b[3] * fraction);
+      return;
     }
   }
   const glm::vec4 a = lookupLevel(chain.levels[d1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
-  if (fraction == 0.0f) return a;
+  if (fraction == 0.0f) {
+    out = a;
+    return;
+  }
   const glm::vec4 b = lookupLevel(chain.levels[d1 + 1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
-  return glm::mix(a, b, fraction);
+  out = glm::mix(a, b, fraction);
+}
+
+}  // namespace
+
+glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod) {
+  glm::vec4 out;
+  sampleChainInto(chain, sampler, uv, lod, out);
+  return out;
 }
 
 SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::vector<TextureImage>& images,
@@ -340,7 +374,7 @@ bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm:
     lod += area > 0.0f ? 0.5f * std::log2(area) : -std::numeric_limits<float>::infinity();
   }
   if (lod != lod) lod = -std::numeric_limits<float>::infinity();  // -inf + inf: a zero footprint
-  value = sampleMipChain(chains_[index], entry.sampler, applyTransform(ref.transform, uv), lod);
+  sampleChainInto(chains_[index], entry.sampler, applyTransform(ref.transform, uv), lod, value);
   return true;
 }
 
