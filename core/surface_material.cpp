@@ -9,13 +9,19 @@ namespace {
 // The slot's texture value, or nullptr-like `false` when the slot is off, empty, or names a
 // texture without a chain in that colour space (an image that did not load): then its factors
 // stand alone, as for a slot without a texture.
+// log2Footprint: SceneTextures::log2Footprint of inputs.footprintUv, once per set for all slots.
 bool readSlot(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, const SceneTextures& textures,
-              const SurfaceInputs& inputs, glm::vec4& value) {
-  if (!(inputs.slots & bit) || !ref.present() || textures.chain(ref.texture, colorSpace) == nullptr) return false;
+              const SurfaceInputs& inputs, const float* log2Footprint, glm::vec4& value) {
+  if (!(inputs.slots & bit) || !ref.present()) return false;
   const int set = ref.texCoord == 1 ? 1 : 0;
-  value = textures.sample(ref, colorSpace, inputs.texcoords[set], inputs.footprintUv[set]);
-  return true;
+  return textures.trySample(ref, colorSpace, inputs.texcoords[set], log2Footprint[set], value);
 }
+
+struct Log2Footprints {
+  float set[2];
+  explicit Log2Footprints(const SurfaceInputs& inputs)
+      : set{SceneTextures::log2Footprint(inputs.footprintUv[0]), SceneTextures::log2Footprint(inputs.footprintUv[1])} {}
+};
 
 }  // namespace
 
@@ -38,34 +44,36 @@ SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTex
   m.alphaCutoff = material.alphaCutoff;
   m.doubleSided = material.doubleSided;
   out.normal = inputs.normal;
+  const Log2Footprints lf(inputs);
   glm::vec4 value;
   // glTF 2.0 section 3.9.2: base colour and its alpha are factor times the (decoded) texel.
-  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, value)) {
+  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, lf.set, value)) {
     m.baseColor *= glm::vec3(value);
     m.alpha *= value.a;
   }
   out.alpha = m.alpha;
   // Section 3.9.2: roughness in G, metallic in B.
   if (readSlot(material.metallicRoughnessTexture, kSlotMetallicRoughness, ColorSpace::Linear, textures, inputs,
-               value)) {
+               lf.set, value)) {
     m.roughness *= value.g;
     m.metallic *= value.b;
   }
   // Section 3.9.3: occlusion = 1 + strength (R - 1).
-  if (readSlot(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, textures, inputs, value))
+  if (readSlot(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, textures, inputs, lf.set, value))
     out.occlusion = 1.0f + material.occlusionStrength * (value.r - 1.0f);
   // Section 3.9.3: emissive = factor times the sRGB-decoded texel.
-  if (readSlot(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, textures, inputs, value))
+  if (readSlot(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, textures, inputs, lf.set, value))
     m.emissive *= glm::vec3(value);
   if (inputs.tangent.x != 0.0f || inputs.tangent.y != 0.0f || inputs.tangent.z != 0.0f)
-    if (readSlot(material.normalTexture, kSlotNormal, ColorSpace::Linear, textures, inputs, value))
+    if (readSlot(material.normalTexture, kSlotNormal, ColorSpace::Linear, textures, inputs, lf.set, value))
       out.normal = perturbNormal(inputs.normal, inputs.tangent, glm::vec3(value), material.normalScale);
   return out;
 }
 
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs) {
+  const Log2Footprints lf(inputs);
   glm::vec4 value;
-  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, value))
+  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, lf.set, value))
     return material.alpha * value.a;
   return material.alpha;
 }

@@ -137,6 +137,56 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   return glm::mix(top, bottom, fy);
 }
 
+// sampleLevel's LINEAR lookup for the common case, inlined into sampleMipChain's lookups (a call per
+// level returned the vec4 through the stack, and the perf profile showed the stall): both wraps
+// REPEAT on power-of-two sizes (a mask, no switch) and the coordinate well inside int range.
+// The same texels, weights and arithmetic order as sampleLevel, so the same result; false for
+// anything else, which then takes sampleLevel.
+[[gnu::always_inline]] inline bool bilinearRepeatPow2(const MipLevel& level, const float* rgbTable,
+                                                      const float* alphaTable, glm::vec2 uv, float* out) {
+  const int w = level.width, h = level.height;
+  if (((w & (w - 1)) | (h & (h - 1))) != 0) return false;
+  const float xs = uv.x * w - 0.5f, ys = uv.y * h - 0.5f;
+  if (!(std::abs(xs) < 16777216.0f && std::abs(ys) < 16777216.0f)) return false;  // NaN, inf, huge
+  // floor without libm's call (std::floor is not inlined without SSE4.1): truncate, then step
+  // down for negative non-integers; exact for |x| < 2^24.
+  int i = static_cast<int>(xs), j = static_cast<int>(ys);
+  i -= static_cast<float>(i) > xs;
+  j -= static_cast<float>(j) > ys;
+  const float fx = xs - static_cast<float>(i), fy = ys - static_cast<float>(j);
+  const int i0 = i & (w - 1), i1 = (i + 1) & (w - 1);
+  const int j0 = j & (h - 1), j1 = (j + 1) & (h - 1);
+  const std::uint8_t* row0 = &level.rgba[static_cast<std::size_t>(j0) * w * 4];
+  const std::uint8_t* row1 = &level.rgba[static_cast<std::size_t>(j1) * w * 4];
+  const std::uint8_t *a = row0 + 4 * i0, *b = row0 + 4 * i1, *c = row1 + 4 * i0, *d = row1 + 4 * i1;
+  const float gx = 1.0f - fx, gy = 1.0f - fy;
+  for (int k = 0; k < 3; ++k) {
+    const float top = rgbTable[a[k]] * gx + rgbTable[b[k]] * fx;
+    const float bottom = rgbTable[c[k]] * gx + rgbTable[d[k]] * fx;
+    out[k] = top * gy + bottom * fy;
+  }
+  const float top = alphaTable[a[3]] * gx + alphaTable[b[3]] * fx;
+  const float bottom = alphaTable[c[3]] * gx + alphaTable[d[3]] * fx;
+  out[3] = top * gy + bottom * fy;
+  return true;
+}
+
+// Whether lookups of `sampler` with `filter` can take bilinearRepeatPow2.
+bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
+  return filter == TextureFilter::Linear && sampler.wrapS == TextureWrap::Repeat &&
+         sampler.wrapT == TextureWrap::Repeat;
+}
+
+// One level's lookup with `filter`: the fast path when it applies. alphaTable: tables().linear.
+[[gnu::always_inline]] inline glm::vec4 lookupLevel(const MipLevel& level, const float* rgbTable,
+                                                    const float* alphaTable, const TextureSampler& sampler,
+                                                    glm::vec2 uv, TextureFilter filter) {
+  float out[4];
+  if (repeatLinear(sampler, filter) && bilinearRepeatPow2(level, rgbTable, alphaTable, uv, out))
+    return glm::vec4(out[0], out[1], out[2], out[3]);
+  return sampleLevel(level, rgbTable, sampler, uv, filter);
+}
+
 // KHR_texture_transform without building the matrix (no trigonometry for the common unrotated
 // case); the same arithmetic as TextureTransform::matrix().
 glm::vec2 applyTransform(const TextureTransform& transform, glm::vec2 uv) {
@@ -196,27 +246,71 @@ int wrapTexel(int i, int size, TextureWrap wrap) {
   }
 }
 
-glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod) {
-  if (chain.levels.empty()) return glm::vec4(1.0f);
-  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
+namespace {
+
+// sampleMipChain's body, inlined into SceneTextures::trySample too, so that the result is written
+// where the caller wants it (returning a glm::vec4 packs it into two registers through the stack,
+// a store-forwarding stall per lookup in perf annotate).
+[[gnu::always_inline]] inline void sampleChainInto(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
+                                                   float lod, glm::vec4& out) {
+  if (chain.levels.empty()) {
+    out = glm::vec4(1.0f);
+    return;
+  }
+  const DecodeTables& decode = tables();
+  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? decode.srgb.data() : decode.linear.data();
+  const float* alphaTable = decode.linear.data();
   if (lod != lod) lod = 0.0f;
   // GL 4.5 section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter
   // pair; GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
-  if (lod <= 0.0f) return sampleLevel(chain.levels[0], rgbTable, sampler, uv, sampler.magFilter);
-  if (!sampler.mipmaps) return sampleLevel(chain.levels[0], rgbTable, sampler, uv, sampler.minFilter);
+  if (lod <= 0.0f) {
+    out = lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.magFilter);
+    return;
+  }
+  if (!sampler.mipmaps) {
+    out = lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    return;
+  }
   const int q = static_cast<int>(chain.levels.size()) - 1;
   if (sampler.mipFilter == TextureFilter::Nearest) {
     // Section 8.14.3: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
     const int d = lod <= 0.5f ? 0 : std::min(q, static_cast<int>(std::ceil(std::min(lod, 1e6f) + 0.5f)) - 1);
-    return sampleLevel(chain.levels[d], rgbTable, sampler, uv, sampler.minFilter);
+    out = lookupLevel(chain.levels[d], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    return;
   }
-  if (lod >= static_cast<float>(q)) return sampleLevel(chain.levels[q], rgbTable, sampler, uv, sampler.minFilter);
+  if (lod >= static_cast<float>(q)) {
+    out = lookupLevel(chain.levels[q], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    return;
+  }
   const int d1 = static_cast<int>(std::floor(lod));
   const float fraction = lod - static_cast<float>(d1);
-  const glm::vec4 a = sampleLevel(chain.levels[d1], rgbTable, sampler, uv, sampler.minFilter);
-  if (fraction == 0.0f) return a;
-  const glm::vec4 b = sampleLevel(chain.levels[d1 + 1], rgbTable, sampler, uv, sampler.minFilter);
-  return glm::mix(a, b, fraction);
+  if (fraction != 0.0f && repeatLinear(sampler, sampler.minFilter)) {
+    // Trilinear in scalars: blending two vec4 results went through the stack with a
+    // store-forwarding stall per lookup (perf). The same arithmetic as glm::mix below.
+    float a[4], b[4];
+    if (bilinearRepeatPow2(chain.levels[d1], rgbTable, alphaTable, uv, a) &&
+        bilinearRepeatPow2(chain.levels[d1 + 1], rgbTable, alphaTable, uv, b)) {
+      const float g = 1.0f - fraction;
+      out = glm::vec4(a[0] * g + b[0] * fraction, a[1] * g + b[1] * fraction, a[2] * g + b[2] * fraction,
+                      a[3] * g + b[3] * fraction);
+      return;
+    }
+  }
+  const glm::vec4 a = lookupLevel(chain.levels[d1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+  if (fraction == 0.0f) {
+    out = a;
+    return;
+  }
+  const glm::vec4 b = lookupLevel(chain.levels[d1 + 1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+  out = glm::mix(a, b, fraction);
+}
+
+}  // namespace
+
+glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod) {
+  glm::vec4 out;
+  sampleChainInto(chain, sampler, uv, lod, out);
+  return out;
 }
 
 SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::vector<TextureImage>& images,
@@ -234,6 +328,7 @@ SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::ve
       MipChain chain = buildMipChain(images[image], colorSpace);
       if (chain.levels.empty()) return;
       chainOfImage[image] = static_cast<int>(chains_.size());
+      chainLog2Size_.push_back(0.5f * std::log2(static_cast<float>(chain.width()) * static_cast<float>(chain.height())));
       chains_.push_back(std::move(chain));
     }
     Entry& entry = textures_[ref.texture];
@@ -260,14 +355,33 @@ const TextureSampler& SceneTextures::sampler(int texture) const {
   return textures_[texture].sampler;
 }
 
-glm::vec4 SceneTextures::sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float footprintUv) const {
-  const MipChain* mipChain = chain(ref.texture, colorSpace);
-  if (mipChain == nullptr) return glm::vec4(1.0f);
+float SceneTextures::log2Footprint(float footprintUv) {
+  return footprintUv > 0.0f ? std::log2(footprintUv) : -std::numeric_limits<float>::infinity();
+}
+
+bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
+                              glm::vec4& value) const {
+  if (ref.texture < 0 || ref.texture >= static_cast<int>(textures_.size())) return false;
+  const Entry& entry = textures_[ref.texture];
+  const int index = colorSpace == ColorSpace::Srgb ? entry.srgb : entry.linear;
+  if (index < 0) return false;
+  // textureLod's log2(footprint * sqrt(width * height)) as a sum of logs (equal up to rounding).
   // The transform scales the footprint as it scales uv (isotropically: the geometric mean).
-  const float footprint =
-      footprintUv * std::sqrt(std::abs(ref.transform.scale.x * ref.transform.scale.y));
-  return sampleMipChain(*mipChain, textures_[ref.texture].sampler, applyTransform(ref.transform, uv),
-                        textureLod(*mipChain, footprint));
+  float lod = log2FootprintUv + chainLog2Size_[index];
+  const glm::vec2 scale = ref.transform.scale;
+  if (scale.x != 1.0f || scale.y != 1.0f) {
+    const float area = std::abs(scale.x * scale.y);
+    lod += area > 0.0f ? 0.5f * std::log2(area) : -std::numeric_limits<float>::infinity();
+  }
+  if (lod != lod) lod = -std::numeric_limits<float>::infinity();  // -inf + inf: a zero footprint
+  sampleChainInto(chains_[index], entry.sampler, applyTransform(ref.transform, uv), lod, value);
+  return true;
+}
+
+glm::vec4 SceneTextures::sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float footprintUv) const {
+  glm::vec4 value(1.0f);
+  trySample(ref, colorSpace, uv, log2Footprint(footprintUv), value);
+  return value;
 }
 
 }  // namespace iblkit

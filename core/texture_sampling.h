@@ -72,6 +72,15 @@ class SceneTextures {
   // the footprint converted to a lod for this texture. ref must be present().
   glm::vec4 sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float footprintUv) const;
 
+  // The same lookup for a caller that reads several slots of one uv set: `log2FootprintUv` is
+  // log2Footprint(footprintUv), taken once per set rather than once per slot, since
+  // lambda = log2(footprint) + log2(sqrt(width * height)) + log2(sqrt|scale.x scale.y|) and the
+  // last two are per texture (precomputed here) and per ref. Returns false, leaving `value`, when
+  // ref names no chain in `colorSpace`.
+  static float log2Footprint(float footprintUv);
+  bool trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
+                 glm::vec4& value) const;
+
  private:
   struct Entry {
     TextureSampler sampler;
@@ -79,6 +88,7 @@ class SceneTextures {
   };
   std::vector<Entry> textures_;
   std::vector<MipChain> chains_;
+  std::vector<float> chainLog2Size_;  // per chain: log2(sqrt(width * height)) of level 0
 };
 
 }  // namespace iblkit
