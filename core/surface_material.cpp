@@ -10,17 +10,19 @@ namespace {
 // texture without a chain in that colour space (an image that did not load): then its factors
 // stand alone, as for a slot without a texture.
 // log2Footprint: SceneTextures::log2Footprint of inputs.footprintUv, once per set for all slots.
+// channels: the SceneTextures channel mask the slot uses (the others are not read).
 bool readSlot(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, const SceneTextures& textures,
-              const SurfaceInputs& inputs, const float* log2Footprint, glm::vec4& value) {
+              const SurfaceInputs& inputs, const float* log2Footprint, unsigned channels, glm::vec4& value) {
   if (!(inputs.slots & bit) || !ref.present()) return false;
   const int set = ref.texCoord == 1 ? 1 : 0;
-  return textures.trySample(ref, colorSpace, inputs.texcoords[set], log2Footprint[set], value);
+  return textures.trySample(ref, colorSpace, inputs.texcoords[set], log2Footprint[set], value, channels);
 }
 
 struct Log2Footprints {
   float set[2];
   explicit Log2Footprints(const SurfaceInputs& inputs)
-      : set{SceneTextures::log2Footprint(inputs.footprintUv[0]), SceneTextures::log2Footprint(inputs.footprintUv[1])} {}
+      : set{SceneTextures::log2Footprint(inputs.footprintUv[0]),
+            SceneTextures::log2Footprint(inputs.footprintUv[1])} {}
 };
 
 }  // namespace
@@ -47,25 +49,29 @@ SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTex
   const Log2Footprints lf(inputs);
   glm::vec4 value;
   // glTF 2.0 section 3.9.2: base colour and its alpha are factor times the (decoded) texel.
-  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, lf.set, value)) {
+  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, lf.set,
+               SceneTextures::kRgba, value)) {
     m.baseColor *= glm::vec3(value);
     m.alpha *= value.a;
   }
   out.alpha = m.alpha;
   // Section 3.9.2: roughness in G, metallic in B.
-  if (readSlot(material.metallicRoughnessTexture, kSlotMetallicRoughness, ColorSpace::Linear, textures, inputs,
-               lf.set, value)) {
+  if (readSlot(material.metallicRoughnessTexture, kSlotMetallicRoughness, ColorSpace::Linear, textures,
+               inputs, lf.set, SceneTextures::kGreenBlue, value)) {
     m.roughness *= value.g;
     m.metallic *= value.b;
   }
   // Section 3.9.3: occlusion = 1 + strength (R - 1).
-  if (readSlot(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, textures, inputs, lf.set, value))
+  if (readSlot(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, textures, inputs, lf.set,
+               SceneTextures::kRed, value))
     out.occlusion = 1.0f + material.occlusionStrength * (value.r - 1.0f);
   // Section 3.9.3: emissive = factor times the sRGB-decoded texel.
-  if (readSlot(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, textures, inputs, lf.set, value))
+  if (readSlot(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, textures, inputs, lf.set,
+               SceneTextures::kRgb, value))
     m.emissive *= glm::vec3(value);
   if (inputs.tangent.x != 0.0f || inputs.tangent.y != 0.0f || inputs.tangent.z != 0.0f)
-    if (readSlot(material.normalTexture, kSlotNormal, ColorSpace::Linear, textures, inputs, lf.set, value))
+    if (readSlot(material.normalTexture, kSlotNormal, ColorSpace::Linear, textures, inputs, lf.set,
+                 SceneTextures::kRgb, value))
       out.normal = perturbNormal(inputs.normal, inputs.tangent, glm::vec3(value), material.normalScale);
   return out;
 }
@@ -73,7 +79,8 @@ SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTex
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs) {
   const Log2Footprints lf(inputs);
   glm::vec4 value;
-  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, lf.set, value))
+  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, lf.set,
+               SceneTextures::kAlpha, value))
     return material.alpha * value.a;
   return material.alpha;
 }

@@ -40,7 +40,8 @@ std::uint8_t encodeLinear(float value) {
 
 std::uint8_t encodeSrgb(float value) {
   const auto& midpoints = tables().srgbMidpoints;
-  return static_cast<std::uint8_t>(std::upper_bound(midpoints.begin(), midpoints.end(), value) - midpoints.begin());
+  return static_cast<std::uint8_t>(std::upper_bound(midpoints.begin(), midpoints.end(), value) -
+                                   midpoints.begin());
 }
 
 // The box filter of one axis from `size` texels to `reduced`: output texel i covers the source
@@ -86,7 +87,8 @@ MipLevel reduce(const MipLevel& source, ColorSpace colorSpace) {
           sum[3] += weight * alphaTable[texel[3]];
         }
       std::uint8_t* texel = &out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4];
-      for (int c = 0; c < 3; ++c) texel[c] = colorSpace == ColorSpace::Srgb ? encodeSrgb(sum[c]) : encodeLinear(sum[c]);
+      for (int c = 0; c < 3; ++c)
+        texel[c] = colorSpace == ColorSpace::Srgb ? encodeSrgb(sum[c]) : encodeLinear(sum[c]);
       texel[3] = encodeLinear(sum[3]);
     }
   return out;
@@ -142,6 +144,9 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
 // REPEAT on power-of-two sizes (a mask, no switch) and the coordinate well inside int range.
 // The same texels, weights and arithmetic order as sampleLevel, so the same result; false for
 // anything else, which then takes sampleLevel.
+// kChannels (SceneTextures::kRgba ...): the channels computed, the others set to 0 without
+// loading their texels.
+template <unsigned kChannels = 0xF>
 [[gnu::always_inline]] inline bool bilinearRepeatPow2(const MipLevel& level, const float* rgbTable,
                                                       const float* alphaTable, glm::vec2 uv, float* out) {
   const int w = level.width, h = level.height;
@@ -161,13 +166,21 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   const std::uint8_t *a = row0 + 4 * i0, *b = row0 + 4 * i1, *c = row1 + 4 * i0, *d = row1 + 4 * i1;
   const float gx = 1.0f - fx, gy = 1.0f - fy;
   for (int k = 0; k < 3; ++k) {
+    if (!((kChannels >> k) & 1u)) {
+      out[k] = 0.0f;
+      continue;
+    }
     const float top = rgbTable[a[k]] * gx + rgbTable[b[k]] * fx;
     const float bottom = rgbTable[c[k]] * gx + rgbTable[d[k]] * fx;
     out[k] = top * gy + bottom * fy;
   }
-  const float top = alphaTable[a[3]] * gx + alphaTable[b[3]] * fx;
-  const float bottom = alphaTable[c[3]] * gx + alphaTable[d[3]] * fx;
-  out[3] = top * gy + bottom * fy;
+  if constexpr ((kChannels & 8u) != 0) {
+    const float top = alphaTable[a[3]] * gx + alphaTable[b[3]] * fx;
+    const float bottom = alphaTable[c[3]] * gx + alphaTable[d[3]] * fx;
+    out[3] = top * gy + bottom * fy;
+  } else {
+    out[3] = 0.0f;
+  }
   return true;
 }
 
@@ -178,11 +191,12 @@ bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
 }
 
 // One level's lookup with `filter`: the fast path when it applies. alphaTable: tables().linear.
+template <unsigned kChannels = 0xF>
 [[gnu::always_inline]] inline glm::vec4 lookupLevel(const MipLevel& level, const float* rgbTable,
                                                     const float* alphaTable, const TextureSampler& sampler,
                                                     glm::vec2 uv, TextureFilter filter) {
   float out[4];
-  if (repeatLinear(sampler, filter) && bilinearRepeatPow2(level, rgbTable, alphaTable, uv, out))
+  if (repeatLinear(sampler, filter) && bilinearRepeatPow2<kChannels>(level, rgbTable, alphaTable, uv, out))
     return glm::vec4(out[0], out[1], out[2], out[3]);
   return sampleLevel(level, rgbTable, sampler, uv, filter);
 }
@@ -220,7 +234,8 @@ MipChain buildMipChain(const TextureImage& image, ColorSpace colorSpace) {
 
 float textureLod(const MipChain& chain, float footprintUv) {
   if (!(footprintUv > 0.0f) || chain.levels.empty()) return -std::numeric_limits<float>::infinity();
-  const float texels = footprintUv * std::sqrt(static_cast<float>(chain.width()) * static_cast<float>(chain.height()));
+  const float texels =
+      footprintUv * std::sqrt(static_cast<float>(chain.width()) * static_cast<float>(chain.height()));
   return std::log2(texels);
 }
 
@@ -251,8 +266,9 @@ namespace {
 // sampleMipChain's body, inlined into SceneTextures::trySample too, so that the result is written
 // where the caller wants it (returning a glm::vec4 packs it into two registers through the stack,
 // a store-forwarding stall per lookup in perf annotate).
-[[gnu::always_inline]] inline void sampleChainInto(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
-                                                   float lod, glm::vec4& out) {
+template <unsigned kChannels = 0xF>
+[[gnu::always_inline]] inline void sampleChainInto(const MipChain& chain, const TextureSampler& sampler,
+                                                   glm::vec2 uv, float lod, glm::vec4& out) {
   if (chain.levels.empty()) {
     out = glm::vec4(1.0f);
     return;
@@ -264,22 +280,22 @@ namespace {
   // GL 4.5 section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter
   // pair; GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
   if (lod <= 0.0f) {
-    out = lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.magFilter);
+    out = lookupLevel<kChannels>(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.magFilter);
     return;
   }
   if (!sampler.mipmaps) {
-    out = lookupLevel(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    out = lookupLevel<kChannels>(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
     return;
   }
   const int q = static_cast<int>(chain.levels.size()) - 1;
   if (sampler.mipFilter == TextureFilter::Nearest) {
     // Section 8.14.3: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
     const int d = lod <= 0.5f ? 0 : std::min(q, static_cast<int>(std::ceil(std::min(lod, 1e6f) + 0.5f)) - 1);
-    out = lookupLevel(chain.levels[d], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    out = lookupLevel<kChannels>(chain.levels[d], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
     return;
   }
   if (lod >= static_cast<float>(q)) {
-    out = lookupLevel(chain.levels[q], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+    out = lookupLevel<kChannels>(chain.levels[q], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
     return;
   }
   const int d1 = static_cast<int>(std::floor(lod));
@@ -288,20 +304,22 @@ namespace {
     // Trilinear in scalars: blending two vec4 results went through the stack with a
     // store-forwarding stall per lookup (perf). The same arithmetic as glm::mix below.
     float a[4], b[4];
-    if (bilinearRepeatPow2(chain.levels[d1], rgbTable, alphaTable, uv, a) &&
-        bilinearRepeatPow2(chain.levels[d1 + 1], rgbTable, alphaTable, uv, b)) {
+    if (bilinearRepeatPow2<kChannels>(chain.levels[d1], rgbTable, alphaTable, uv, a) &&
+        bilinearRepeatPow2<kChannels>(chain.levels[d1 + 1], rgbTable, alphaTable, uv, b)) {
       const float g = 1.0f - fraction;
       out = glm::vec4(a[0] * g + b[0] * fraction, a[1] * g + b[1] * fraction, a[2] * g + b[2] * fraction,
                       a[3] * g + b[3] * fraction);
       return;
     }
   }
-  const glm::vec4 a = lookupLevel(chain.levels[d1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+  const glm::vec4 a =
+      lookupLevel<kChannels>(chain.levels[d1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   if (fraction == 0.0f) {
     out = a;
     return;
   }
-  const glm::vec4 b = lookupLevel(chain.levels[d1 + 1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
+  const glm::vec4 b =
+      lookupLevel<kChannels>(chain.levels[d1 + 1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
   out = glm::mix(a, b, fraction);
 }
 
@@ -328,7 +346,8 @@ SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::ve
       MipChain chain = buildMipChain(images[image], colorSpace);
       if (chain.levels.empty()) return;
       chainOfImage[image] = static_cast<int>(chains_.size());
-      chainLog2Size_.push_back(0.5f * std::log2(static_cast<float>(chain.width()) * static_cast<float>(chain.height())));
+      chainLog2Size_.push_back(
+          0.5f * std::log2(static_cast<float>(chain.width()) * static_cast<float>(chain.height())));
       chains_.push_back(std::move(chain));
     }
     Entry& entry = textures_[ref.texture];
@@ -359,8 +378,30 @@ float SceneTextures::log2Footprint(float footprintUv) {
   return footprintUv > 0.0f ? std::log2(footprintUv) : -std::numeric_limits<float>::infinity();
 }
 
-bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
-                              glm::vec4& value) const {
+bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
+                              float log2FootprintUv, glm::vec4& value) const {
+  return trySampleChannels<kRgba>(ref, colorSpace, uv, log2FootprintUv, value);
+}
+
+bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
+                              float log2FootprintUv, glm::vec4& value, unsigned channels) const {
+  switch (channels) {
+    case kRed:
+      return trySampleChannels<kRed>(ref, colorSpace, uv, log2FootprintUv, value);
+    case kGreenBlue:
+      return trySampleChannels<kGreenBlue>(ref, colorSpace, uv, log2FootprintUv, value);
+    case kRgb:
+      return trySampleChannels<kRgb>(ref, colorSpace, uv, log2FootprintUv, value);
+    case kAlpha:
+      return trySampleChannels<kAlpha>(ref, colorSpace, uv, log2FootprintUv, value);
+    default:
+      return trySampleChannels<kRgba>(ref, colorSpace, uv, log2FootprintUv, value);
+  }
+}
+
+template <unsigned kChannels>
+bool SceneTextures::trySampleChannels(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
+                                      float log2FootprintUv, glm::vec4& value) const {
   if (ref.texture < 0 || ref.texture >= static_cast<int>(textures_.size())) return false;
   const Entry& entry = textures_[ref.texture];
   const int index = colorSpace == ColorSpace::Srgb ? entry.srgb : entry.linear;
@@ -374,11 +415,12 @@ bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm:
     lod += area > 0.0f ? 0.5f * std::log2(area) : -std::numeric_limits<float>::infinity();
   }
   if (lod != lod) lod = -std::numeric_limits<float>::infinity();  // -inf + inf: a zero footprint
-  sampleChainInto(chains_[index], entry.sampler, applyTransform(ref.transform, uv), lod, value);
+  sampleChainInto<kChannels>(chains_[index], entry.sampler, applyTransform(ref.transform, uv), lod, value);
   return true;
 }
 
-glm::vec4 SceneTextures::sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float footprintUv) const {
+glm::vec4 SceneTextures::sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
+                                float footprintUv) const {
   glm::vec4 value(1.0f);
   trySample(ref, colorSpace, uv, log2Footprint(footprintUv), value);
   return value;

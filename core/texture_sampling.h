@@ -12,9 +12,8 @@
 // The footprint rule of the reference (ray cones) is in docs/material-model.md "Texture filtering".
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "core/material.h"
 #include "core/texture.h"
@@ -81,6 +80,15 @@ class SceneTextures {
   bool trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
                  glm::vec4& value) const;
 
+  // Channel masks for trySample's `channels` (bit k: channel k, R G B A): a slot that uses only
+  // some channels (glTF 2.0 section 3.9: metallic-roughness G and B, occlusion R, normal and
+  // emissive RGB) skips the other texels' loads and decodes in the common REPEAT power-of-two
+  // LINEAR path. The channels read are the same values as with kRgba; the others are
+  // unspecified (0 on the fast path, the texel's elsewhere).
+  static constexpr unsigned kRed = 0x1, kGreenBlue = 0x6, kRgb = 0x7, kAlpha = 0x8, kRgba = 0xF;
+  bool trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
+                 glm::vec4& value, unsigned channels) const;
+
  private:
   struct Entry {
     TextureSampler sampler;
@@ -89,6 +97,9 @@ class SceneTextures {
   std::vector<Entry> textures_;
   std::vector<MipChain> chains_;
   std::vector<float> chainLog2Size_;  // per chain: log2(sqrt(width * height)) of level 0
+  template <unsigned kChannels>
+  bool trySampleChannels(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
+                         glm::vec4& value) const;
 };
 
 }  // namespace iblkit

@@ -22,8 +22,12 @@ std::uint64_t mixIn(std::uint64_t h, float value) { return mixBits(h ^ std::bit_
 }  // namespace
 
 float textureFootprint(float width, float uvPerWorldArea, float cosine) {
+  return textureFootprintFromLength(width, std::sqrt(uvPerWorldArea), cosine);
+}
+
+float textureFootprintFromLength(float width, float uvPerWorldLength, float cosine) {
   const float c = std::max(std::abs(cosine), 1.0f / kMaxTextureAnisotropy);
-  return width * std::sqrt(uvPerWorldArea) / c;
+  return width * uvPerWorldLength / c;
 }
 
 float uvPerWorldArea(const Mesh& mesh, std::size_t triangle, int set) {

@@ -59,6 +59,11 @@ inline constexpr float kMaxTextureAnisotropy = 16.0f;
 // supersamples the pixel averages along it too, so the cosine is clamped where GL's anisotropy is.
 float textureFootprint(float width, float uvPerWorldArea, float cosine);
 
+// textureFootprint with sqrt(uvPerWorldArea) given (`uvPerWorldLength`): a caller that keeps it
+// per triangle (RenderScene) skips the sqrt and the triangle's corners per hit. Same arithmetic,
+// so the same value as textureFootprint(width, uvPerWorldLength^2 as computed, cosine).
+float textureFootprintFromLength(float width, float uvPerWorldLength, float cosine);
+
 // The ratio uv area / world area of triangle `triangle` of `mesh` in texCoord set `set` (0 when
 // the mesh has no such set or the triangle no area), for textureFootprint.
 float uvPerWorldArea(const Mesh& mesh, std::size_t triangle, int set);

@@ -1,5 +1,6 @@
 #include "reference/render_scene.h"
 
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -57,6 +58,15 @@ RenderScene::RenderScene(Scene scene, unsigned textureSlots) : scene_(std::move(
     lobes_.push_back(brdfLobes(material));
     textured_.push_back(shadesWithTextures(material, slots_));
   }
+  uvPerWorldLength_.resize(scene_.meshes.size());
+  for (unsigned i = 0; i < scene_.meshes.size(); ++i) {
+    const Mesh& mesh = scene_.meshes[i];
+    if (mesh.triangleCount() == 0 || !textured_[static_cast<std::size_t>(mesh.material)]) continue;
+    std::vector<glm::vec2>& lengths = uvPerWorldLength_[i];
+    lengths.resize(mesh.triangleCount());
+    for (std::size_t t = 0; t < lengths.size(); ++t)
+      lengths[t] = glm::vec2(std::sqrt(uvPerWorldArea(mesh, t, 0)), std::sqrt(uvPerWorldArea(mesh, t, 1)));
+  }
 }
 
 SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, const RayCone& cone) const {
@@ -106,8 +116,9 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
     const float width = cone.widthAt(hit.t);
     if (width > 0.0f) {
       const float cosine = glm::dot(wo, point.geometricNormal);
+      const glm::vec2 lengths = uvPerWorldLength_[meshOfGeometry_[hit.geomId]][hit.primId];
       for (int set = 0; set < 2; ++set)
-        inputs.footprintUv[set] = textureFootprint(width, uvPerWorldArea(mesh, hit.primId, set), cosine);
+        inputs.footprintUv[set] = textureFootprintFromLength(width, lengths[set], cosine);
     }
     const SurfaceMaterial surface = evaluateSurfaceMaterial(material, *textures_, inputs);
     point.baseColor = surface.material.baseColor;

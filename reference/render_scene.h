@@ -66,6 +66,10 @@ class RenderScene {
   std::vector<unsigned> meshOfGeometry_;  // Embree geometry id -> index into scene_.meshes
   std::vector<BrdfLobes> lobes_;          // per material
   std::vector<bool> textured_;            // per material: a shading slot (not occlusion) reads a texture
+  // Per mesh (empty for meshes whose material reads no texture), per triangle:
+  // sqrt(uvPerWorldArea) of uv sets 0 and 1, the ray-cone footprint's per-triangle part
+  // (textureFootprintFromLength), computed once rather than from the corners at every hit.
+  std::vector<std::vector<glm::vec2>> uvPerWorldLength_;
   std::shared_ptr<const SceneTextures> textures_;
   unsigned slots_ = kAllTextureSlots;
 };

@@ -61,8 +61,10 @@ TEST(BuildMipChain, LevelSizesFollowGlFloorRule) {
   using Sizes = std::vector<glm::ivec2>;
   EXPECT_EQ(levelSizes(buildMipChain(makeImage(8, 4, constant), ColorSpace::Linear)),
             (Sizes{{8, 4}, {4, 2}, {2, 1}, {1, 1}}));
-  EXPECT_EQ(levelSizes(buildMipChain(makeImage(5, 3, constant), ColorSpace::Linear)), (Sizes{{5, 3}, {2, 1}, {1, 1}}));
-  EXPECT_EQ(levelSizes(buildMipChain(makeImage(7, 1, constant), ColorSpace::Srgb)), (Sizes{{7, 1}, {3, 1}, {1, 1}}));
+  EXPECT_EQ(levelSizes(buildMipChain(makeImage(5, 3, constant), ColorSpace::Linear)),
+            (Sizes{{5, 3}, {2, 1}, {1, 1}}));
+  EXPECT_EQ(levelSizes(buildMipChain(makeImage(7, 1, constant), ColorSpace::Srgb)),
+            (Sizes{{7, 1}, {3, 1}, {1, 1}}));
   EXPECT_EQ(levelSizes(buildMipChain(makeImage(1, 1, constant), ColorSpace::Linear)), (Sizes{{1, 1}}));
   // A constant image stays constant at every level.
   for (const MipLevel& level : buildMipChain(makeImage(5, 3, constant), ColorSpace::Srgb).levels)
@@ -129,7 +131,8 @@ TEST(SampleMipChain, NearestWrapsAtTheEdges) {
   EXPECT_FLOAT_EQ(rampAt(Repeat, nearest, -0.25f), t3);
   EXPECT_FLOAT_EQ(rampAt(ClampToEdge, nearest, -0.25f), t0);
   EXPECT_FLOAT_EQ(rampAt(MirroredRepeat, nearest, -0.25f), t0);
-  for (TextureWrap wrap : {Repeat, ClampToEdge, MirroredRepeat}) EXPECT_FLOAT_EQ(rampAt(wrap, nearest, 0.0f), t0);
+  for (TextureWrap wrap : {Repeat, ClampToEdge, MirroredRepeat})
+    EXPECT_FLOAT_EQ(rampAt(wrap, nearest, 0.0f), t0);
   EXPECT_FLOAT_EQ(rampAt(Repeat, nearest, 1.0f), t0);
   EXPECT_FLOAT_EQ(rampAt(ClampToEdge, nearest, 1.0f), t3);
   EXPECT_FLOAT_EQ(rampAt(MirroredRepeat, nearest, 1.0f), t3);
@@ -160,7 +163,8 @@ TEST(SampleMipChain, LinearWrapsAtTheEdges) {
 }
 
 TEST(SampleMipChain, WrapModesArePerAxis) {
-  const TextureImage image = makeImage(2, 2, [](int x, int y) { return glm::u8vec4(100 * x, 100 * y, 0, 255); });
+  const TextureImage image =
+      makeImage(2, 2, [](int x, int y) { return glm::u8vec4(100 * x, 100 * y, 0, 255); });
   const MipChain chain = buildMipChain(image, ColorSpace::Linear);
   TextureSampler sampler = samplerWith(TextureWrap::ClampToEdge, TextureFilter::Nearest);
   sampler.wrapT = TextureWrap::Repeat;
@@ -179,8 +183,8 @@ TEST(SampleMipChain, BilinearMatchesHandComputedValue) {
   // uv (0.375, 0.625): texel space (0.75, 1.25), minus the half texel (0.25, 0.75).
   const float expected = (0.25f * (0.75f * 0 + 0.25f * 100) + 0.75f * (0.75f * 200 + 0.25f * 255)) / 255.0f;
   EXPECT_NEAR(sampleMipChain(chain, sampler, glm::vec2(0.375f, 0.625f), -1.0f).r, expected, 1e-6f);
-  EXPECT_NEAR(sampleMipChain(chain, sampler, glm::vec2(0.5f, 0.5f), -1.0f).r, (0 + 100 + 200 + 255) / 4.0f / 255.0f,
-              1e-6f);
+  EXPECT_NEAR(sampleMipChain(chain, sampler, glm::vec2(0.5f, 0.5f), -1.0f).r,
+              (0 + 100 + 200 + 255) / 4.0f / 255.0f, 1e-6f);
   // sRGB chains filter the decoded values.
   const MipChain srgb = buildMipChain(image, ColorSpace::Srgb);
   EXPECT_NEAR(sampleMipChain(srgb, sampler, glm::vec2(0.5f, 0.5f), -1.0f).r,
@@ -193,7 +197,8 @@ MipChain levelsChain() {
   for (int i = 0; i < 3; ++i) {
     MipLevel level;
     level.width = level.height = 4 >> i;
-    level.rgba.assign(static_cast<std::size_t>(level.width) * level.height * 4, static_cast<std::uint8_t>(100 * i));
+    level.rgba.assign(static_cast<std::size_t>(level.width) * level.height * 4,
+                      static_cast<std::uint8_t>(100 * i));
     chain.levels.push_back(level);
   }
   return chain;
@@ -210,7 +215,7 @@ TEST(SampleMipChain, SelectsMipLevelsByLod) {
   EXPECT_NEAR(at(trilinear, 1.0f), 100.0f, 1e-4f);
   EXPECT_NEAR(at(trilinear, 1.25f), 125.0f, 1e-4f);
   EXPECT_NEAR(at(trilinear, 7.0f), 200.0f, 1e-4f);  // beyond the last level
-  TextureSampler nearestMip;                          // LINEAR_MIPMAP_NEAREST
+  TextureSampler nearestMip;                        // LINEAR_MIPMAP_NEAREST
   nearestMip.mipFilter = TextureFilter::Nearest;
   EXPECT_NEAR(at(nearestMip, 0.4f), 0.0f, 1e-4f);
   EXPECT_NEAR(at(nearestMip, 0.6f), 100.0f, 1e-4f);
@@ -228,7 +233,8 @@ TEST(SampleMipChain, MagnificationAndMinificationUseTheirFilters) {
   sampler.mipmaps = false;
   // At u = 0.5 LINEAR averages the two texels, NEAREST takes texel 1.
   EXPECT_FLOAT_EQ(sampleMipChain(chain, sampler, glm::vec2(0.5f, 0.5f), -1.0f).r, 0.5f);
-  EXPECT_FLOAT_EQ(sampleMipChain(chain, sampler, glm::vec2(0.5f, 0.5f), 0.0f).r, 0.5f);  // lambda <= 0 magnifies
+  EXPECT_FLOAT_EQ(sampleMipChain(chain, sampler, glm::vec2(0.5f, 0.5f), 0.0f).r,
+                  0.5f);  // lambda <= 0 magnifies
   EXPECT_FLOAT_EQ(sampleMipChain(chain, sampler, glm::vec2(0.5f, 0.5f), 1.0f).r, 1.0f);
 }
 
@@ -282,7 +288,8 @@ TEST(SceneTextures, SamplesThroughTheSlotsTransform) {
   texture.image = 0;
   texture.sampler = samplerWith(TextureWrap::ClampToEdge, TextureFilter::Nearest);
   const SceneTextures textures({texture}, {quadrants()}, {material});
-  for (glm::vec2 uv : {glm::vec2(0.1f, 0.1f), glm::vec2(0.9f, 0.2f), glm::vec2(0.5f, 0.5f), glm::vec2(0.2f, 0.9f)})
+  for (glm::vec2 uv :
+       {glm::vec2(0.1f, 0.1f), glm::vec2(0.9f, 0.2f), glm::vec2(0.5f, 0.5f), glm::vec2(0.2f, 0.9f)})
     EXPECT_FLOAT_EQ(textures.sample(material.occlusionTexture, ColorSpace::Linear, uv, 0.0f).r, 30 / 255.0f)
         << uv.x << " " << uv.y;
 }
@@ -324,6 +331,39 @@ TEST(SceneTextures, FootprintSelectsTheLevelAndScalesWithTheTransform) {
   scaled.transform.scale = glm::vec2(4.0f);
   scaled.transform.offset = glm::vec2(-0.75f);
   EXPECT_FLOAT_EQ(textures.sample(scaled, ColorSpace::Linear, uv, 0.5f).r, 25 / 255.0f);
+}
+
+// A channel mask reads the same values of its channels as the full lookup, at every lod (the
+// trilinear REPEAT power-of-two fast path, magnification, the coarsest level), and on that path
+// skips the others (0, their texels not loaded).
+TEST(SceneTextures, ChannelMaskReadsItsChannelsAsTheFullLookup) {
+  Material material;
+  material.baseColorTexture.texture = 0;  // sRGB chain
+  material.occlusionTexture.texture = 0;  // linear chain
+  Texture texture;
+  texture.image = 0;
+  const TextureImage image = makeImage(16, 16, [](int x, int y) {
+    return glm::u8vec4((x * 37 + y * 11) % 256, (x * 5 + y * 71) % 256, (x * 93 + y * 29) % 256,
+                       (x * y * 13) % 256);
+  });
+  const SceneTextures textures({texture}, {image}, {material});
+  for (ColorSpace space : {ColorSpace::Srgb, ColorSpace::Linear})
+    for (unsigned mask :
+         {SceneTextures::kRed, SceneTextures::kGreenBlue, SceneTextures::kRgb, SceneTextures::kAlpha})
+      for (float footprint : {0.0f, 0.01f, 0.09f, 0.3f, 2.0f})
+        for (glm::vec2 uv : {glm::vec2(0.13f, 0.71f), glm::vec2(-1.37f, 2.2f), glm::vec2(0.5f, 0.03f)}) {
+          const float lf = SceneTextures::log2Footprint(footprint);
+          glm::vec4 full(-1.0f), masked(-1.0f);
+          ASSERT_TRUE(textures.trySample(material.baseColorTexture, space, uv, lf, full));
+          ASSERT_TRUE(textures.trySample(material.baseColorTexture, space, uv, lf, masked, mask));
+          for (int c = 0; c < 4; ++c) {
+            if (mask & (1u << c))
+              EXPECT_EQ(masked[c], full[c])
+                  << "mask " << mask << " channel " << c << " footprint " << footprint;
+            else
+              EXPECT_EQ(masked[c], 0.0f) << "mask " << mask << " channel " << c << " footprint " << footprint;
+          }
+        }
 }
 
 }  // namespace
