@@ -19,7 +19,7 @@ const RayQuery kCamera{RayKind::Camera, {}};
 struct FilteredScene {
   Scene scene;
   std::shared_ptr<AlphaFilter> filter;
-  RayScene rays;
+  RayScene rays{std::string()};
 
   void build(bool cameraRays = true) {
     std::vector<const Mesh*> meshes;
