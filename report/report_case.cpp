@@ -38,6 +38,8 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
   const CaseInputs inputs = caseInputs(sceneFile, environmentFile);
   ReportSettings caseSettings = settings;  // the stages below score caseSettings.modes
   caseSettings.modes = caseModes(settings.modes, inputs.occlusionTexture);
+  // Textured frames without sample shading (ReportSettings::engineSampleShading says why).
+  if (inputs.textured) caseSettings.engineSampleShading = false;
 
   const StageRun baked = runStage(cache, "bake-" + caseName, bakeCommand(caseSettings, inputs));
   result.bakeSeconds = baked.seconds;

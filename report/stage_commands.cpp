@@ -53,9 +53,10 @@ StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, c
                        {}};
   std::vector<std::string>& arguments = command.arguments;
   appendSize(settings, arguments);
-  if (settings.engineSamples > 1)
-    arguments.insert(arguments.end(),
-                     {"--samples", std::to_string(settings.engineSamples), "--sample-shading"});
+  if (settings.engineSamples > 1) {
+    arguments.insert(arguments.end(), {"--samples", std::to_string(settings.engineSamples)});
+    if (settings.engineSampleShading) arguments.push_back("--sample-shading");
+  }
   if (settings.engineSupersample > 1)
     arguments.insert(arguments.end(), {"--supersample", std::to_string(settings.engineSupersample)});
   arguments.insert(arguments.end(), {"--anisotropy", std::to_string(settings.engineAnisotropy)});

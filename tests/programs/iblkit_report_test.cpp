@@ -176,6 +176,17 @@ TEST(IblkitReport, GltfOcclusionModesOnlyOnScenesWithAnOcclusionTexture) {
       modes.push_back(mode["mode"]);
       EXPECT_FALSE(mode.contains("failure")) << entry["scene"] << " " << mode["mode"] << ": " << mode["failure"];
     }
+    // A textured scene's frames are rendered without --sample-shading (ReportSettings::
+    // engineSampleShading), an untextured scene's with it.
+    int views = 0, sampleShaded = 0;
+    for (const json& command : entry["commands"]) {
+      const std::string text = command.get<std::string>();
+      if (text.find("iblkit-view") == std::string::npos) continue;
+      ++views;
+      if (text.find("--sample-shading") != std::string::npos) ++sampleShaded;
+    }
+    EXPECT_GT(views, 0) << entry["scene"];
+    EXPECT_EQ(sampleShaded, entry["scene"] == "card" ? 0 : views) << entry["scene"];
     if (entry["scene"] == "card") {
       EXPECT_EQ(modes, (std::vector<std::string>{"full", "full-gltf-ao", "full-both-ao"}));
       // The texture darkens half the card: glTF occlusion changes the frame, so its score differs.

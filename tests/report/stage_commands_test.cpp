@@ -56,7 +56,8 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   const std::vector<std::function<void(ReportSettings&)>> viewChanges = {
       [](ReportSettings& s) { s.width = 64; }, [](ReportSettings& s) { s.height = 36; },
       [](ReportSettings& s) { s.engineSamples = 1; }, [](ReportSettings& s) { s.engineSupersample = 4; },
-      [](ReportSettings& s) { s.benchFrames = 0; }, [](ReportSettings& s) { s.engineAnisotropy = 16; }};
+      [](ReportSettings& s) { s.benchFrames = 0; }, [](ReportSettings& s) { s.engineAnisotropy = 16; },
+      [](ReportSettings& s) { s.engineSampleShading = false; }};
   for (std::size_t i = 0; i < viewChanges.size(); ++i) {
     ReportSettings changed = fixture.settings;
     viewChanges[i](changed);
@@ -74,6 +75,12 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   ASSERT_NE(anisotropy, view.end());
   ASSERT_NE(anisotropy + 1, view.end());
   EXPECT_EQ(*(anisotropy + 1), "1");
+  EXPECT_NE(std::find(view.begin(), view.end(), "--sample-shading"), view.end());
+  ReportSettings textured = fixture.settings;
+  textured.engineSampleShading = false;
+  const std::vector<std::string> texturedView = viewCommand(textured, bake, "sh").arguments;
+  EXPECT_EQ(std::find(texturedView.begin(), texturedView.end(), "--sample-shading"), texturedView.end());
+  EXPECT_NE(std::find(texturedView.begin(), texturedView.end(), "--samples"), texturedView.end());
   const std::vector<std::function<void(ReportSettings&)>> traceChanges = {
       [](ReportSettings& s) { s.width = 64; }, [](ReportSettings& s) { s.passSpp = 32; },
       [](ReportSettings& s) { s.referenceIntegrator = "direct"; }};
