@@ -227,15 +227,7 @@ TEST(IblkitView, BakesASceneFileInMemory) {
 TEST(IblkitView, TextureSlotsSwitchTheMaterialTextures) {
   const fs::path dir = test::scratchDir();
   test::GltfBuilder builder;
-  const std::vector<glm::vec3> positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  const std::vector<glm::vec3> normals(4, glm::vec3(0, 0, 1));
-  const std::vector<glm::vec2> uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
-  builder.addPrimitiveNode({{"attributes",
-                             {{"POSITION", builder.addFloats(positions)},
-                              {"NORMAL", builder.addFloats(normals)},
-                              {"TEXCOORD_0", builder.addFloats(uvs)}}},
-                            {"indices", builder.addIndices({0, 1, 2, 0, 2, 3})},
-                            {"material", 0}});
+  builder.addQuadNode();
   const std::vector<std::uint8_t> checker = {255, 0, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 255, 0, 0, 255};
   builder.addImage(test::encodePng(2, 2, checker), "image/png");
   builder.document()["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9728}}};  // NEAREST

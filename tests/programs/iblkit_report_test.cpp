@@ -142,15 +142,8 @@ TEST(IblkitReport, GltfOcclusionModesOnlyOnScenesWithAnOcclusionTexture) {
     if (i % 8 < 4) rgba[4 * i] = 40;  // R, the occlusion channel
   test::writeFileBytes(dir / "ao.png", test::encodePng(8, 8, rgba));
   test::GltfBuilder builder;
-  const std::vector<glm::vec3> positions = {{-1, 0, 0}, {1, 0, 0}, {1, 2, 0}, {-1, 2, 0}};
-  const std::vector<glm::vec3> normals(4, glm::vec3(0, 0, 1));
-  const std::vector<glm::vec2> uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
-  builder.addPrimitiveNode({{"attributes",
-                             {{"POSITION", builder.addFloats(positions)},
-                              {"NORMAL", builder.addFloats(normals)},
-                              {"TEXCOORD_0", builder.addFloats(uvs)}}},
-                            {"indices", builder.addIndices({0, 1, 2, 0, 2, 3})},
-                            {"material", 0}});
+  const int card = builder.addQuadNode();  // [-1, 1]^2, lifted to stand on the ground at y = 0
+  builder.document()["nodes"][card]["translation"] = {0.0, 1.0, 0.0};
   builder.document()["images"] = {{{"uri", "ao.png"}}};
   builder.document()["textures"] = {{{"source", 0}}};
   builder.document()["materials"] = {

@@ -96,32 +96,6 @@ void addTexturedMaterial(GltfBuilder& builder, const std::vector<std::uint8_t>& 
   document["materials"] = {material};
 }
 
-// The square [-1, 1]^2 at z = 0 facing +z, uv (0, 0) at its top left seen from +z, no TANGENT
-// (the loader generates MikkTSpace tangents, the same for both programs).
-void addQuad(GltfBuilder& builder, float halfSize = 1.0f, float uvScale = 1.0f, int cells = 1) {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec2> uvs;
-  for (int i = 0; i <= cells; ++i)
-    for (int j = 0; j <= cells; ++j) {
-      const float x = static_cast<float>(j) / cells, y = static_cast<float>(i) / cells;
-      positions.emplace_back(halfSize * (2.0f * x - 1.0f), halfSize * (2.0f * y - 1.0f), 0.0f);
-      uvs.emplace_back(uvScale * x, uvScale * (1.0f - y));
-    }
-  const std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 0, 1));
-  std::vector<std::uint32_t> indices;
-  for (int i = 0; i < cells; ++i)
-    for (int j = 0; j < cells; ++j) {
-      const std::uint32_t a = i * (cells + 1) + j, b = a + cells + 1;
-      for (std::uint32_t c : {a, a + 1, b + 1, a, b + 1, b}) indices.push_back(c);
-    }
-  builder.addPrimitiveNode({{"attributes",
-                             {{"POSITION", builder.addFloats(positions)},
-                              {"NORMAL", builder.addFloats(normals)},
-                              {"TEXCOORD_0", builder.addFloats(uvs)}}},
-                            {"indices", builder.addIndices(indices)},
-                            {"material", 0}});
-}
-
 // A UV sphere of radius 1 (u around +Y from +X, v = 0 at the north pole), exact normals.
 void addSphere(GltfBuilder& builder, int rings, int segments) {
   std::vector<glm::vec3> positions, normals;
@@ -222,7 +196,7 @@ TEST_F(TextureAgreement, CheckerQuadHeadOnFlipAtMost002) {
     return ((x / 4 + y / 4) % 2) ? glm::u8vec4(230, 140, 40, 255) : glm::u8vec4(30, 60, 200, 255);
   });
   GltfBuilder builder;
-  addQuad(builder);
+  builder.addQuadNode();
   addTexturedMaterial(builder, test::encodePng(64, 64, checker), "baseColorTexture",
                       {{"metallicFactor", 0.0}, {"roughnessFactor", 1.0}},
                       {{"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.0}}}}}});
@@ -253,7 +227,7 @@ TEST_F(TextureAgreement, CheckerQuadHeadOnFlipAtMost002) {
 // the cosine lobe and add SH9's truncation of the sun, which is not the texture path's error.
 TEST_F(TextureAgreement, NormalMappedQuadUnderSunFlipAtMost002) {
   GltfBuilder builder;
-  addQuad(builder);
+  builder.addQuadNode();
   addTexturedMaterial(builder, test::encodePng(128, 128, bumpNormalMap(128, 4, 1.2f)), "normalTexture",
                       {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}}, {"metallicFactor", 1.0}, {"roughnessFactor", 0.0}});
   builder.write(dir / "quad.glb", GltfBuilder::Storage::Glb);
@@ -351,7 +325,7 @@ TEST_F(TextureAgreement, MaskedHoleShowsTheEnvironmentOnTheSamePixels) {
     return glm::u8vec4(10, 10, 10, dx * dx + dy * dy < 14.0f * 14.0f ? 0 : 255);
   });
   GltfBuilder builder;
-  addQuad(builder);
+  builder.addQuadNode();
   addTexturedMaterial(builder, test::encodePng(64, 64, holed), "baseColorTexture",
                       {{"metallicFactor", 0.0}, {"roughnessFactor", 1.0}},
                       {{"alphaMode", "MASK"}, {"alphaCutoff", 0.5}});
@@ -397,7 +371,7 @@ TEST_F(TextureAgreement, GrazingCheckerPlaneMeasured) {
     return ((x / 32 + y / 32) % 2) ? glm::u8vec4(230, 140, 40, 255) : glm::u8vec4(30, 60, 200, 255);
   });
   GltfBuilder builder;
-  addQuad(builder, 10.0f, 10.0f, 20);  // 20 x 20, the texture repeated 10 times: 2 x 2 checks a unit
+  builder.addQuadNode(10.0f, 10.0f, 20);  // 20 x 20, the texture repeated 10 times: 2 x 2 checks a unit
   builder.document()["nodes"][0]["rotation"] = {-0.70710678, 0.0, 0.0, 0.70710678};  // facing +y
   addTexturedMaterial(builder, test::encodePng(256, 256, checker), "baseColorTexture",
                       {{"metallicFactor", 0.0}, {"roughnessFactor", 1.0}},

@@ -117,6 +117,31 @@ int GltfBuilder::addPrimitiveNode(const nlohmann::json& primitive) {
   return addNode({{"mesh", addMesh(nlohmann::json::array({primitive}))}});
 }
 
+int GltfBuilder::addQuadNode(float halfSize, float uvScale, int cells, int material) {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec2> uvs;
+  for (int i = 0; i <= cells; ++i)
+    for (int j = 0; j <= cells; ++j) {
+      const float x = static_cast<float>(j) / cells, y = static_cast<float>(i) / cells;
+      positions.emplace_back(halfSize * (2.0f * x - 1.0f), halfSize * (2.0f * y - 1.0f), 0.0f);
+      uvs.emplace_back(uvScale * x, uvScale * (1.0f - y));
+    }
+  const std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 0, 1));
+  std::vector<std::uint32_t> indices;
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j) {
+      const std::uint32_t a = static_cast<std::uint32_t>(i * (cells + 1) + j);
+      const std::uint32_t b = a + static_cast<std::uint32_t>(cells + 1);
+      for (std::uint32_t c : {a, a + 1, b + 1, a, b + 1, b}) indices.push_back(c);
+    }
+  return addPrimitiveNode({{"attributes",
+                            {{"POSITION", addFloats(positions)},
+                             {"NORMAL", addFloats(normals)},
+                             {"TEXCOORD_0", addFloats(uvs)}}},
+                           {"indices", addIndices(indices)},
+                           {"material", material}});
+}
+
 void GltfBuilder::write(const std::filesystem::path& path, Storage storage) const {
   nlohmann::json document = document_;
   if (!buffer_.empty()) {

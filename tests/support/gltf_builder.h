@@ -47,6 +47,10 @@ class GltfBuilder {
   int addNode(const nlohmann::json& node, bool root = true);
   // A mesh with one primitive on a root node: the common case.
   int addPrimitiveNode(const nlohmann::json& primitive);
+  // The square [-halfSize, halfSize]^2 at z = 0 facing +z as cells x cells quads of two triangles,
+  // on a root node: POSITION, NORMAL (+z) and TEXCOORD_0 from (0, 0) at its top left seen from +z
+  // to (uvScale, uvScale), no TANGENT, material `material`. Returns the node's index.
+  int addQuadNode(float halfSize = 1.0f, float uvScale = 1.0f, int cells = 1, int material = 0);
 
   // Writes the document to `path`; Storage::BinFile puts the buffer in "<stem>.bin" beside it.
   void write(const std::filesystem::path& path, Storage storage) const;
