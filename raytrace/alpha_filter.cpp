@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/surface_material.h"
+#include "raytrace/ray_scene.h"
 
 namespace iblkit {
 
@@ -92,9 +93,7 @@ bool AlphaFilter::accept(unsigned geometry, unsigned primitive, glm::vec2 baryce
     inputs.slots = slots_;
     if (uvs.size() == mesh.positions.size()) {
       const std::uint32_t* corner = &mesh.indices[3 * std::size_t(primitive)];
-      const float u = barycentrics.x, v = barycentrics.y;
-      inputs.texcoords[ref.texCoord == 1 ? 1 : 0] =
-          (1.0f - u - v) * uvs[corner[0]] + u * uvs[corner[1]] + v * uvs[corner[2]];
+      inputs.texcoords[ref.texCoord == 1 ? 1 : 0] = interpolateAtHit(uvs, corner, barycentrics);
     }
     const float width = query.cone.widthAt(t * glm::length(direction));
     if (width > 0.0f) {

@@ -36,6 +36,15 @@ struct Hit {
   glm::vec3 geometricNormal{0.0f};
 };
 
+// A per-vertex attribute at a hit: Embree's barycentric weights (Hit::barycentrics) applied to the
+// values of the triangle's three corners (`corner` points at its three indices). The one
+// interpolation the tracer's shading and the alpha filter both use.
+template <class T>
+T interpolateAtHit(const std::vector<T>& values, const std::uint32_t* corner, glm::vec2 barycentrics) {
+  const float u = barycentrics.x, v = barycentrics.y;
+  return (1.0f - u - v) * values[corner[0]] + u * values[corner[1]] + v * values[corner[2]];
+}
+
 class RayScene {
  public:
   struct Bounds {

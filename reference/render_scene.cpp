@@ -20,11 +20,6 @@ bool shadesWithTextures(const Material& m, unsigned slots) {
          ((slots & kSlotEmissive) && m.emissiveTexture.present());
 }
 
-template <class T>
-T interpolate(const std::vector<T>& values, const std::uint32_t* corner, float u, float v) {
-  return (1.0f - u - v) * values[corner[0]] + u * values[corner[1]] + v * values[corner[2]];
-}
-
 }  // namespace
 
 RenderScene::RenderScene(Scene scene, unsigned textureSlots) : scene_(std::move(scene)), slots_(textureSlots) {
@@ -72,8 +67,7 @@ RenderScene::RenderScene(Scene scene, unsigned textureSlots) : scene_(std::move(
 SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, const RayCone& cone) const {
   const Mesh& mesh = scene_.meshes[meshOfGeometry_[hit.geomId]];
   const std::uint32_t* corner = &mesh.indices[3 * static_cast<std::size_t>(hit.primId)];
-  const float u = hit.barycentrics.x, v = hit.barycentrics.y;
-  const glm::vec3 interpolated = interpolate(mesh.normals, corner, u, v);
+  const glm::vec3 interpolated = interpolateAtHit(mesh.normals, corner, hit.barycentrics);
 
   SurfacePoint point;
   point.position = rays_.surfacePoint(hit);
@@ -95,12 +89,12 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
   } else {
     SurfaceInputs inputs;
     inputs.slots = slots_ & ~unsigned(kSlotOcclusion);  // not applied: no need to read it
-    if (mesh.texcoords.size() == mesh.positions.size()) inputs.texcoords[0] = interpolate(mesh.texcoords, corner, u, v);
+    if (mesh.texcoords.size() == mesh.positions.size()) inputs.texcoords[0] = interpolateAtHit(mesh.texcoords, corner, hit.barycentrics);
     if (mesh.texcoords1.size() == mesh.positions.size())
-      inputs.texcoords[1] = interpolate(mesh.texcoords1, corner, u, v);
+      inputs.texcoords[1] = interpolateAtHit(mesh.texcoords1, corner, hit.barycentrics);
     inputs.normal = shading;
     if (mesh.tangents.size() == mesh.positions.size()) {
-      const glm::vec4 t = interpolate(mesh.tangents, corner, u, v);
+      const glm::vec4 t = interpolateAtHit(mesh.tangents, corner, hit.barycentrics);
       // Normalised but not re-orthogonalised: perturbNormal uses the interpolated frame as it
       // is, as MikkTSpace's notes and shaders/material.glsl do.
       glm::vec3 tangent(t);
