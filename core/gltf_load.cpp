@@ -83,6 +83,8 @@ glm::vec2 extensionVec2(const tinygltf::Value& extension, const char* key, glm::
   const std::vector<double> v = extensionNumbers(extension, key, {fallback.x, fallback.y}, what, file);
   if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1]))
     fail(file, what + "." + key + " must be 2 finite numbers");
+  if (std::abs(v[0]) > kMaxTextureTransformValue || std::abs(v[1]) > kMaxTextureTransformValue)
+    fail(file, what + "." + key + " must lie within +-1e6");
   return glm::vec2(float(v[0]), float(v[1]));
 }
 
@@ -112,7 +114,8 @@ TextureRef textureRef(const Info& info, const std::string& what, std::size_t tex
     ref.transform.offset = extensionVec2(t, "offset", glm::vec2(0.0f), ext, file);
     ref.transform.scale = extensionVec2(t, "scale", glm::vec2(1.0f), ext, file);
     const double rotation = extensionNumber(t, "rotation", 0.0, ext, file);
-    if (!std::isfinite(rotation)) fail(file, ext + ".rotation must be a finite number");
+    if (!std::isfinite(rotation) || std::abs(rotation) > kMaxTextureTransformValue)
+      fail(file, ext + ".rotation must be a finite number within +-1e6");
     ref.transform.rotation = float(rotation);
     // The extension's texCoord overrides the textureInfo's (KHR_texture_transform README).
     if (t.Has("texCoord")) {
@@ -171,7 +174,8 @@ Material convertMaterial(const tinygltf::Material& source, int index, std::size_
   material.normalTexture = textureRef(source.normalTexture, what + " normalTexture", textureCount, file);
   material.occlusionTexture = textureRef(source.occlusionTexture, what + " occlusionTexture", textureCount, file);
   material.emissiveTexture = textureRef(source.emissiveTexture, what + " emissiveTexture", textureCount, file);
-  if (!std::isfinite(source.normalTexture.scale)) fail(file, what + " normalTexture.scale must be finite");
+  if (!std::isfinite(source.normalTexture.scale) || std::abs(source.normalTexture.scale) > kMaxTextureTransformValue)
+    fail(file, what + " normalTexture.scale must be a finite number within +-1e6");
   material.normalScale = float(source.normalTexture.scale);
   material.occlusionStrength = unitFactor(source.occlusionTexture.strength, what + " occlusionTexture.strength", file);
 

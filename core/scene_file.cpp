@@ -198,14 +198,16 @@ void applyTextureOverride(const ObjectReader& m, const char* key, TextureRef& re
     const json& value = t.at("uvScale");
     const auto v = value.is_number() ? ObjectReader::numbers(json::array({value, value}), 2)
                                      : ObjectReader::numbers(value, 2);
-    if (!v || (*v)[0] == 0.0 || (*v)[1] == 0.0)
-      t.wrongValue("uvScale", "a nonzero number or an array of 2 nonzero numbers");
+    const auto usable = [](double x) { return x != 0.0 && std::abs(x) <= kMaxTextureTransformValue; };
+    if (!v || !usable((*v)[0]) || !usable((*v)[1]))
+      t.wrongValue("uvScale", "a nonzero number or an array of 2 nonzero numbers, within +-1e6");
     result.transform.scale = glm::vec2(float((*v)[0]), float((*v)[1]));
   }
   if (factorKey) {
     // glTF: normalTexture.scale is any number; occlusionTexture.strength is in [0, 1].
     const bool normal = std::string(factorKey) == "scale";
-    *factor = float(t.number(factorKey, 1.0, normal ? -kInfinity : 0.0, normal ? kInfinity : 1.0));
+    *factor = float(t.number(factorKey, 1.0, normal ? -kMaxTextureTransformValue : 0.0,
+                             normal ? kMaxTextureTransformValue : 1.0));
   }
   ref = result;
 }

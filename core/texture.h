@@ -70,6 +70,11 @@ struct TextureTransform {
   glm::vec2 apply(glm::vec2 uv) const;
 };
 
+// The largest |offset|, |rotation| (radians), |scale| of a texture transform and |normalTexture
+// scale| the loaders accept: far beyond any tiling or bump strength, and small enough that uv *
+// scale and the ray cones' footprints stay finite in float (1e300 in a file would become Inf).
+inline constexpr double kMaxTextureTransformValue = 1e6;
+
 // A material slot's texture reference (glTF textureInfo). texture < 0: the slot has no texture.
 struct TextureRef {
   int texture = -1;   // index into Scene::textures

@@ -776,6 +776,24 @@ TEST_F(GltfLoad, SlotsTexCoordsAndKhrTextureTransform) {
                 "model.gltf: material 0 emissiveTexture KHR_texture_transform.offset must be 2 finite numbers"),
             std::string::npos)
       << loadError(builder);
+  // Finite doubles that are infinite floats.
+  edited["emissiveTexture"]["extensions"]["KHR_texture_transform"]["offset"] = {0.0, 0.0};
+  edited["emissiveTexture"]["extensions"]["KHR_texture_transform"]["scale"] = {1e39, 1.0};
+  EXPECT_NE(loadError(builder).find(
+                "model.gltf: material 0 emissiveTexture KHR_texture_transform.scale must lie within +-1e6"),
+            std::string::npos)
+      << loadError(builder);
+  edited["emissiveTexture"]["extensions"]["KHR_texture_transform"]["scale"] = {1.0, 1.0};
+  edited["emissiveTexture"]["extensions"]["KHR_texture_transform"]["rotation"] = 1e39;
+  EXPECT_NE(loadError(builder).find("model.gltf: material 0 emissiveTexture KHR_texture_transform.rotation must be a "
+                                    "finite number within +-1e6"),
+            std::string::npos)
+      << loadError(builder);
+  edited["emissiveTexture"]["extensions"]["KHR_texture_transform"].erase("rotation");
+  edited["normalTexture"]["scale"] = 1e39;
+  EXPECT_NE(loadError(builder).find("model.gltf: material 0 normalTexture.scale must be a finite number within +-1e6"),
+            std::string::npos)
+      << loadError(builder);
 }
 
 TEST_F(GltfLoad, AlphaModesAndDoubleSided) {

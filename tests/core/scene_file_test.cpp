@@ -349,7 +349,14 @@ TEST_F(SceneFile, BadTextureOverridesNameTheKey) {
             "models[0].material.normalTexture.strength: unknown key (expected one of: file, uvScale, texCoord, scale)");
   test::writeFileBytes(root / "normals" / "flat.png", test::encodePng(2, 2, test::quadPixels()));
   EXPECT_EQ(error(withNormal({{"file", "../normals/flat.png"}, {"uvScale", {0, 1}}})),
-            "models[0].material.normalTexture.uvScale: expected a nonzero number or an array of 2 nonzero numbers");
+            "models[0].material.normalTexture.uvScale: expected a nonzero number or an array of 2 nonzero numbers, "
+            "within +-1e6");
+  // 1e39 is a finite double but an infinite float scale.
+  EXPECT_EQ(error(withNormal({{"file", "../normals/flat.png"}, {"uvScale", 1e39}})),
+            "models[0].material.normalTexture.uvScale: expected a nonzero number or an array of 2 nonzero numbers, "
+            "within +-1e6");
+  EXPECT_NE(error(withNormal({{"file", "../normals/flat.png"}, {"scale", 1e39}})).find("models[0].material.normalTexture.scale"),
+            std::string::npos);
   EXPECT_EQ(error(withNormal({{"file", "../normals/flat.png"}, {"texCoord", 2}})),
             "models[0].material.normalTexture.texCoord: expected an integer in [0, 1]");
   EXPECT_EQ(error({{"models", {{{"shape", "sphere"}, {"material", {{"alphaMode", "CLIP"}}}}}}}),
