@@ -10,6 +10,9 @@
 //   env/irradiance.exr  brute-force irradiance cube (irradiance_exr.h)
 //   env/specular.exr    GGX-prefiltered specular cube chain (specular_exr.h)
 //   env/brdf_lut.exr    split-sum DFG table (brdf_lut_exr.h)
+//   env/lights.json     extracted suns and median-cut lights (environment_lights_json.h)
+//   env/residual_sh9.json, env/residual_specular.exr
+//                       SH9 and specular chain of the map without its suns
 // The env/ files exist only when the bake had an environment map.
 
 #include <filesystem>
@@ -26,6 +29,9 @@ inline constexpr const char* kBakeSh9File = "env/sh9.json";
 inline constexpr const char* kBakeIrradianceFile = "env/irradiance.exr";
 inline constexpr const char* kBakeSpecularFile = "env/specular.exr";
 inline constexpr const char* kBakeBrdfLutFile = "env/brdf_lut.exr";
+inline constexpr const char* kBakeLightsFile = "env/lights.json";
+inline constexpr const char* kBakeResidualSh9File = "env/residual_sh9.json";
+inline constexpr const char* kBakeResidualSpecularFile = "env/residual_specular.exr";
 
 // `file`, a file of a bake folder that a reader needs. Throws Error("<file>: missing (incomplete
 // bake folder?)") unless it is a regular file.

@@ -9,6 +9,7 @@
 #include "bakefile/bake_record.h"
 #include "bakefile/specular_exr.h"
 #include "core/cube_map.h"
+#include "core/environment_lights.h"
 #include "core/image.h"
 #include "core/spherical_harmonics.h"
 
@@ -33,6 +34,13 @@ struct EnvironmentStages {
   Image brdfLut;
   // Brute-force irradiance per texel (size 0: not computed; the viewer's in-memory stages skip it).
   CubeMap irradiance;
+  // Dominant lights (core/environment_lights.h), world space like sh9; empty when not computed.
+  EnvironmentLights lights;
+  // The residual: the map with lights.suns taken out (ExtractedSuns::residual), its windowed SH9
+  // (the same cutoff) and its specular chain; residualSpecular.levels empty when not computed.
+  // lights.suns plus the residual integrate to the map exactly.
+  SphericalHarmonics9 residualSh9;
+  SpecularCube residualSpecular;
 };
 
 // Writes env/sh9.json (sh9 and shWindowCutoff), env/irradiance.exr (when computed),
