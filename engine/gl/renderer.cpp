@@ -108,6 +108,9 @@ float Renderer::textureAnisotropy() const { return impl_->materialTextures.aniso
 void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width,
                       int height) {
   Impl& r = *impl_;
+  if (usesIrradianceCube(settings.mode) && settings.layer == FrameLayer::Radiance && r.irradiance.id() == 0)
+    throw Error(std::string(shadingModeName(settings.mode)) +
+                " mode: the environment stages have no irradiance cube (env/irradiance.exr)");
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -128,9 +131,6 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   glBindTextureUnit(kTextureUnitLatLong, r.latLong.id());
   glBindTextureUnit(kTextureUnitSpecular, r.specular.id());
   glBindTextureUnit(kTextureUnitBrdfLut, r.brdfLut.id());
-  if (usesIrradianceCube(settings.mode) && settings.layer == FrameLayer::Radiance && r.irradiance.id() == 0)
-    throw Error(std::string(shadingModeName(settings.mode)) +
-                " mode: the environment stages have no irradiance cube (env/irradiance.exr)");
   glBindTextureUnit(kTextureUnitIrradiance, r.irradiance.id());
 
   if (settings.drawSky && settings.layer == FrameLayer::Radiance) {
