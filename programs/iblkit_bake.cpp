@@ -131,10 +131,11 @@ float sunThreshold(const std::string& choice) {
   failUsage("--sun-threshold", "expected auto or a positive luminance, got '" + choice + "'");
 }
 
-// The environment stages (baker/environment_stages.h), written into `folder`'s env/; returns
-// bake.json's "environment" section.
-json bakeEnvironment(const EnvironmentMap& environment, const Options& options, std::optional<float> windowCutoff,
-                     const fs::path& folder, json& timings) {
+// The environment stages (baker/environment_stages.h), their seconds added to `timings`. Computed
+// before the output's temporary folder exists, so that an interrupt during the long stages finds
+// nothing to clean up, and the folder lives only while files are written into it.
+EnvironmentStages bakeEnvironment(const EnvironmentMap& environment, const Options& options,
+                                  std::optional<float> windowCutoff, json& timings) {
   EnvironmentStageOptions stageOptions;
   stageOptions.shWindowCutoff = windowCutoff;
   stageOptions.specularSamples = options.specularSamples;
@@ -144,9 +145,8 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   stageOptions.suns.maxLights = options.maxSuns;
   stageOptions.medianCutLevels = options.medianCutLevels;
   EnvironmentStageTimes times;
-  const EnvironmentStages stages =
+  EnvironmentStages stages =
       computeEnvironmentStages(environment, stageOptions, progressBar("environment"), &times);
-  writeEnvironmentStages(folder, stages);
   timings["sh9_s"] = times.sh9;
   timings["irradiance_s"] = times.irradiance;
   timings["specular_s"] = times.specular;
@@ -154,6 +154,11 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   timings["lights_s"] = times.lights;
   timings["residual_sh9_s"] = times.residualSh9;
   timings["residual_specular_s"] = times.residualSpecular;
+  return stages;
+}
+
+// bake.json's "environment" section.
+json environmentRecord(const EnvironmentStages& stages, const Options& options) {
   const IrradianceError shError = shIrradianceError(stages.irradiance, stages.sh9);
   return {{"sh_window_cutoff", stages.shWindowCutoff},
           {"irradiance_cube_size", stages.irradiance.size},
@@ -222,13 +227,20 @@ int bake(const Options& options) {
                           .environmentFormat = options.envFormat,
                           .environmentRotationDegrees = environment.rotationDegrees,
                           .environmentIntensity = environment.intensity};
+  std::optional<EnvironmentStages> stages;
+  if (environmentMap) {
+    stages = bakeEnvironment(*environmentMap, options, windowCutoff, timings);
+    stopwatch.lap();  // the stages timed themselves
+  }
   writeDirectoryAtomically(options.output, [&](const fs::path& folder) {
     writeSceneGlb(scene, folder / kBakeSceneFile);
     timings["write_scene_s"] = stopwatch.lap();
     json outputs = {kBakeSceneFile, kBakeRecordFile};
     json environmentReport = nullptr;
-    if (environmentMap) {
-      environmentReport = bakeEnvironment(*environmentMap, options, windowCutoff, folder, timings);
+    if (stages) {
+      writeEnvironmentStages(folder, *stages);
+      timings["write_environment_s"] = stopwatch.lap();
+      environmentReport = environmentRecord(*stages, options);
       for (const char* file : {kBakeSh9File, kBakeIrradianceFile, kBakeSpecularFile, kBakeBrdfLutFile,
                                kBakeLightsFile, kBakeResidualSh9File, kBakeResidualSpecularFile})
         outputs.push_back(file);
