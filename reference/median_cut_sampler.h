@@ -64,8 +64,9 @@ class MedianCutSampler {
   bool compensated_ = false;
   std::vector<EnvironmentLight> regions_;
   std::vector<PiecewiseConstant2D> regionTexels_;  // per region, over its own texels
-  PiecewiseConstant1D regionDistribution_{
-      std::vector<float>{1.0f}};         // over the regions, by their summed weights
+  // Over the regions, by their summed weights; built in the constructor's body, after the
+  // regions' own distributions, from the same pass over the texel weights.
+  PiecewiseConstant1D regionDistribution_{std::vector<float>{1.0f}};
   std::vector<std::uint16_t> regionOf_;  // per texel (row by row): its region
 };
 
