@@ -69,6 +69,8 @@ std::string sharedConstants() {
                        {{"kShadingModeUnlit", int(ShadingMode::Unlit)},
                         {"kShadingModeMirror", int(ShadingMode::Mirror)},
                         {"kShadingModeSh", int(ShadingMode::Sh)},
+                        {"kShadingModeIrradiance", int(ShadingMode::Irradiance)},
+                        {"kShadingModeIrradianceAoBent", int(ShadingMode::IrradianceAoBent)},
                         {"kShadingModeShAo", int(ShadingMode::ShAo)},
                         {"kShadingModeShAoBent", int(ShadingMode::ShAoBent)},
                         {"kShadingModePrt", int(ShadingMode::Prt)},
@@ -106,7 +108,8 @@ std::string sharedConstants() {
                         {"kTextureUnitMetallicRoughness", kTextureUnitMetallicRoughness},
                         {"kTextureUnitNormal", kTextureUnitNormal},
                         {"kTextureUnitOcclusion", kTextureUnitOcclusion},
-                        {"kTextureUnitEmissive", kTextureUnitEmissive}});
+                        {"kTextureUnitEmissive", kTextureUnitEmissive},
+                        {"kTextureUnitIrradiance", kTextureUnitIrradiance}});
   text += intConstants("iblkit::TextureSlot (core/texture.h)",
                        {{"kSlotBaseColor", int(kSlotBaseColor)},
                         {"kSlotMetallicRoughness", int(kSlotMetallicRoughness)},

@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "core/error.h"
 #include "core/sh_rotation.h"
 #include "engine/gl/gpu_mesh.h"
 #include "engine/gl/gpu_textures.h"
@@ -24,6 +25,10 @@ namespace {
 glm::vec2 inverseRotation(float degrees) {
   const float radians = -glm::radians(degrees);
   return {std::cos(radians), std::sin(radians)};
+}
+
+bool usesIrradianceCube(ShadingMode mode) {
+  return mode == ShadingMode::Irradiance || mode == ShadingMode::IrradianceAoBent;
 }
 
 }  // namespace
@@ -42,6 +47,7 @@ struct Renderer::Impl {
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
   GLuint emptyVertexArray = 0;  // the fullscreen triangle needs a bound VAO but no attributes
   GlTexture latLong, specular, brdfLut;
+  GlTexture irradiance;  // the irradiance modes' cube; id 0 when the stages have none
   SphericalHarmonics9 sh9;
   float rotationDegrees = 0.0f, intensity = 1.0f;
   int specularLevels = 1;
@@ -82,6 +88,7 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
   impl_->latLong = uploadLatLong(env.latLong);
   impl_->specular = uploadCubeLevels(env.specular.levels);
   impl_->brdfLut = uploadTable(env.brdfLut);
+  impl_->irradiance = env.irradiance.size > 0 ? uploadCubeLevels({env.irradiance}) : GlTexture();
   impl_->sh9 = env.sh9;
   impl_->rotationDegrees = env.rotationDegrees;
   impl_->intensity = env.intensity;
@@ -101,6 +108,9 @@ float Renderer::textureAnisotropy() const { return impl_->materialTextures.aniso
 void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width,
                       int height) {
   Impl& r = *impl_;
+  if (usesIrradianceCube(settings.mode) && settings.layer == FrameLayer::Radiance && r.irradiance.id() == 0)
+    throw Error(std::string(shadingModeName(settings.mode)) +
+                " mode: the environment stages have no irradiance cube (env/irradiance.exr)");
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -121,6 +131,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   glBindTextureUnit(kTextureUnitLatLong, r.latLong.id());
   glBindTextureUnit(kTextureUnitSpecular, r.specular.id());
   glBindTextureUnit(kTextureUnitBrdfLut, r.brdfLut.id());
+  glBindTextureUnit(kTextureUnitIrradiance, r.irradiance.id());
 
   if (settings.drawSky && settings.layer == FrameLayer::Radiance) {
     const ShaderProgram& sky = r.skyProgram;

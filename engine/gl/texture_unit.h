@@ -21,6 +21,7 @@ enum TextureUnit : unsigned {
   kTextureUnitNormal = 9,
   kTextureUnitOcclusion = 10,
   kTextureUnitEmissive = 11,
+  kTextureUnitIrradiance = 12,  // mesh.frag: the brute-force irradiance cube (the irradiance modes)
 };
 
 }  // namespace iblkit
