@@ -8,12 +8,15 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 
 #include "cli/program.h"
 #include "core/error.h"
+#include "core/environment_map_file.h"
 #include "core/file_io.h"
 #include "core/usage_error.h"
 #include "report/report_case.h"
+#include "report/map_kind.h"
 #include "report/report_claims.h"
 #include "report/report_writer.h"
 
@@ -75,6 +78,7 @@ int report(Options& options) {
 
   ReportSummary summary;
   summary.modes = settings.modes;
+  std::map<fs::path, MapConcentration> concentrations;  // each map read once, for its kind
   for (const std::string& scene : options.scenes) {
     if (!fs::is_regular_file(scene)) fail(scene, "scene file does not exist");
     for (const std::string& name : options.environments) {
@@ -82,6 +86,10 @@ int report(Options& options) {
       if (!fs::is_regular_file(environment)) fail(environment, "environment map does not exist");
       const int before = cache.misses();
       CaseResult result = runCase(settings, cache, scene, environment);
+      if (!concentrations.contains(environment))
+        concentrations[environment] = mapConcentration(loadEnvironmentMap(environment));
+      result.concentration = concentrations[environment];
+      result.mapKind = classifyMap(result.concentration);
       std::fprintf(stderr, "iblkit-report: %s under %s: reference %d spp (relMSE %.2g, %s)%s\n",
                    result.scene.c_str(), result.environment.c_str(), result.referenceSpp,
                    result.referenceRelMse, result.referenceConverged ? "converged" : "not converged",
