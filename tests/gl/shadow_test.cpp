@@ -25,6 +25,7 @@
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
 #include "gl/test_context.h"
+#include "support/gltf_builder.h"
 #include "support/test_paths.h"
 
 namespace iblkit {
@@ -48,8 +49,9 @@ glm::vec3 sunDirection(float azimuthDegrees, float elevationDegrees) {
   return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
 }
 
-// The map (1024 x 512, 4 x 4 samples per texel: the disk's rim antialiased) and scene.json.
-SunScene writeSunScene(const std::string& name, glm::vec3 sun, float sphereY) {
+// The map (1024 x 512, 4 x 4 samples per texel: the disk's rim antialiased) and scene.json with
+// `models`, by default the sphere of radius 0.5 at height sphereY.
+SunScene writeSunScene(const std::string& name, glm::vec3 sun, float sphereY, nlohmann::json models = nullptr) {
   SunScene s{test::scratchDir() / name, {}, sun, sphereY};
   fs::create_directories(s.dir);
   const float cosRadius = std::cos(glm::radians(kSunRadiusDegrees));
@@ -58,7 +60,8 @@ SunScene writeSunScene(const std::string& name, glm::vec3 sun, float sphereY) {
   });
   writeExr(s.dir / "sun.exr", map, {.pixelType = PixelType::Float, .envmap = EnvmapLayout::LatLong});
   const nlohmann::json scene = {
-      {"models", {{{"shape", "sphere"}, {"translation", {0.0, sphereY, 0.0}}, {"scale", 0.5}}}},
+      {"models", models.is_null() ? nlohmann::json{{{"shape", "sphere"}, {"translation", {0.0, sphereY, 0.0}}, {"scale", 0.5}}}
+                                  : models},
       {"ground", {{"height", 0.0}, {"size", 6.0}}},
       {"environment", {{"file", "sun.exr"}}},
       {"camera", {{"position", {0.0, 2.6, 5.0}}, {"target", {0.3, 0.3, 0.0}}, {"yfov", 40.0}}},
@@ -164,8 +167,6 @@ TEST_F(ShadowTest, SphereShadowEdgesAndPenumbraMatchTheReference) {
   Renderer renderer(bake);
   const Image engine = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
   const Image reference = renderTrace(s);
-  writePng(s.dir / "engine.png", engine, {});
-  writePng(s.dir / "reference.png", reference, {});
   const glm::vec2 centre = project(bake, {1.0f / std::tan(glm::radians(55.0f)), 0.0f, 0.0f});
   const int row = int(centre.y);
   const std::vector<float> a = rowProfile(engine, row), b = rowProfile(reference, row);
@@ -177,6 +178,101 @@ TEST_F(ShadowTest, SphereShadowEdgesAndPenumbraMatchTheReference) {
     EXPECT_NEAR(e.position, r.position, 2.0f);
     EXPECT_NEAR(e.width, r.width, 2.0f);
   }
+}
+
+// Where the camera ray through pixel (x, y)'s centre meets the ground y = 0 (false above the horizon).
+bool groundPoint(const BakedScene& bake, int x, int y, glm::vec3& point) {
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  const Ray ray = camera.primaryRay(glm::vec2(x + 0.5f, y + 0.5f), kWidth, kHeight);
+  if (ray.direction.y >= 0.0f) return false;
+  point = ray.origin - ray.direction * (ray.origin.y / ray.direction.y);
+  return true;
+}
+
+// Whether the whole sun is visible from `p` with a margin: the angle between the sun and the sphere
+// (radius 0.5 at (0, sphereY, 0)) exceeds the sphere's angular radius plus the sun's plus 2 degrees.
+bool wholeSunVisible(const SunScene& s, const glm::vec3& p) {
+  const glm::vec3 toSphere = glm::vec3(0.0f, s.sphereY, 0.0f) - p;
+  const float distance = glm::length(toSphere);
+  if (distance <= 0.5f) return false;
+  const float angle = std::acos(std::clamp(glm::dot(toSphere / distance, s.sun), -1.0f, 1.0f));
+  return angle > std::asin(0.5f / distance) + glm::radians(kSunRadiusDegrees + 2.0f);
+}
+
+struct AcneCheck {
+  int pixels = 0;
+  float minRatio = 1.0f, meanRatio = 0.0f;
+};
+
+// Shadowed over unshadowed radiance on the ground pixels (and the sphere's, lit side) that see the
+// whole sun: 1 without acne.
+AcneCheck shadowedOverUnshadowedWhereLit(const SunScene& s, const BakedScene& bake, Renderer& renderer) {
+  const Image shadowed = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
+  const Image unshadowed = renderEngine(renderer, bake, ShadingMode::Lights);
+  AcneCheck check;
+  // Pixels whose 3 x 3 neighbourhood is ground only (no silhouette of the sphere).
+  auto groundOnly = [&](int x, int y) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const glm::vec4 c = unshadowed.at(x + dx, y + dy);
+        if (c.a != 0.0f || luminance(glm::vec3(c)) <= 0.0f) return false;
+      }
+    return true;
+  };
+  for (int y = 1; y + 1 < kHeight; ++y)
+    for (int x = 1; x + 1 < kWidth; ++x) {
+      glm::vec3 p;
+      if (!groundOnly(x, y) || !groundPoint(bake, x, y, p) || !wholeSunVisible(s, p)) continue;
+      const float ratio = luminance(glm::vec3(shadowed.at(x, y))) / luminance(glm::vec3(unshadowed.at(x, y)));
+      check.minRatio = std::min(check.minRatio, ratio);
+      check.meanRatio += ratio;
+      ++check.pixels;
+    }
+  if (check.pixels) check.meanRatio /= float(check.pixels);
+  return check;
+}
+
+TEST_F(ShadowTest, NoAcneOnTheLitGroundFromHighAndGrazingSun) {
+  for (float elevation : {55.0f, 10.0f}) {
+    const SunScene s = writeSunScene("acne_" + std::to_string(int(elevation)), sunDirection(-60.0f, elevation), 1.0f);
+    const BakedScene bake = bakeWithSun(s);
+    Renderer renderer(bake);
+    const AcneCheck check = shadowedOverUnshadowedWhereLit(s, bake, renderer);
+    std::cout << "sun " << elevation << " degrees up: " << check.pixels << " lit ground pixels, shadowed / unshadowed min "
+              << check.minRatio << " mean " << check.meanRatio << '\n';
+    EXPECT_GT(check.pixels, 10000);
+    EXPECT_GT(check.minRatio, 0.99f);
+    EXPECT_GT(check.meanRatio, 0.999f);
+  }
+}
+
+// A wall (a 1 m double-sided square standing on the ground, facing the camera) with the sun behind
+// it, 20 degrees up: its shadow starts at its base. The ground 1 to 20 cm in front of the base, in
+// the umbra, must be dark (a peter-panning gap would leave a lit line along the base).
+TEST_F(ShadowTest, ShadowStartsAtTheContact) {
+  const glm::vec3 sun = sunDirection(160.0f, 20.0f);
+  const SunScene s = writeSunScene("contact", sun, 0.0f, {{{"file", "wall.gltf"}, {"translation", {0.0, 0.5, 0.0}}}});
+  test::GltfBuilder builder;
+  builder.addQuadNode(0.5f);
+  builder.document()["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}}},
+                                      {"doubleSided", true}}};
+  builder.write(s.dir / "wall.gltf", test::GltfBuilder::Storage::BinFile);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  const Image shadowed = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
+  const Image unshadowed = renderEngine(renderer, bake, ShadingMode::Lights);
+  int checked = 0;
+  for (float t = 0.01f; t <= 0.2f; t += 0.01f) {
+    const glm::vec2 pixel = project(bake, glm::vec3(0.0f, 0.0f, t));
+    const int x = int(pixel.x), y = int(pixel.y);
+    const glm::vec4 lit = unshadowed.at(x, y);
+    if (lit.a != 0.0f) continue;  // the sphere hides this point
+    const float ratio = luminance(glm::vec3(shadowed.at(x, y))) / luminance(glm::vec3(lit));
+    std::cout << "contact + " << t << " m: shadowed / unshadowed " << ratio << '\n';
+    EXPECT_LT(ratio, 0.25f) << t;
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
 }
 
 }  // namespace
