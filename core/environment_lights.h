@@ -36,8 +36,13 @@ struct EnvironmentLight {
   // Sum over its texels of (radiance carried) x (texel solid angle): the irradiance it gives a
   // surface facing it when it is small (Debevec's "power"), per RGB channel.
   glm::vec3 irradiance{0.0f};
-  // Sum of its texels' solid angles (sr), and the angular radius of the disk with that solid angle,
+  // Its solid angle (sr), and the angular radius of the disk with that solid angle,
   // 2 pi (1 - cos r) = solidAngle: the penumbra's source size for the engine's shadows.
+  // MedianCut: the sum of its texels' solid angles. Sun: the solid angle of the uniform disk whose
+  // spread matches that of the energy it carries (its mean cosine to `direction`, each texel's own
+  // extent included): a thresholded region is larger than the sun inside it, and the disk of the
+  // same spread is what gives the right irradiance across a surface's horizon (sunIrradiance;
+  // docs/dominant-lights.md). A single texel gives its own solid angle.
   float solidAngle = 0.0f;
   float angularRadius = 0.0f;
   // irradiance / solidAngle: the uniform radiance of that disk.
@@ -56,10 +61,14 @@ struct EnvironmentLight {
 // std::invalid_argument otherwise.
 std::vector<EnvironmentLight> medianCutLights(const EnvironmentMap& map, int levels);
 
+// The automatic threshold's peak-to-mean ratio k (automaticSunThreshold).
+inline constexpr float kSunPeakToMean = 64.0f;
+
 struct SunExtractionOptions {
-  // Luminance (intensity applied) above which texels belong to a light. <= 0: automatic, chosen
-  // from the map (docs/dominant-lights.md says how).
+  // Luminance (intensity applied) above which texels belong to a light. <= 0: automatic,
+  // automaticSunThreshold(map, peakToMean).
   float threshold = 0.0f;
+  float peakToMean = kSunPeakToMean;
   // The most lights kept, brightest (largest irradiance luminance) first.
   int maxLights = 4;
   // Regions carrying less than this fraction of the map's energy stay in the residual.
@@ -74,7 +83,34 @@ struct ExtractedSuns {
   float threshold = 0.0f;  // the threshold used (intensity applied)
 };
 
+// The suns of `map`: the texels with luminance above the threshold form regions, connected through
+// their 8 neighbours, across the longitude seam (column W-1 touches column 0) and around each pole
+// (all the texels of the top row touch at +Y, those of the bottom row at -Y). A region's light
+// carries texel x (1 - t / luminance) of each of its texels (chroma kept); the residual keeps
+// texel x t / luminance. The options.maxLights regions of largest irradiance luminance that carry
+// at least options.minEnergyFraction of the map's energy (sum of luminance x solid angle) become
+// lights; the texels of the others stay whole in the residual. So residual + lights == map.
+// Throws std::invalid_argument for a non-finite threshold, maxLights < 0, minEnergyFraction
+// outside [0, 1] or peakToMean < 1 (when automatic).
 ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions& options = {});
+
+// The automatic sun threshold (docs/dominant-lights.md): the largest t with
+//   t = peakToMean x mean over the sphere of min(luminance, t),
+// so the residual's brightest texel is peakToMean times the residual's mean luminance: the part
+// of the map SH9 cannot hold (a peak far above its surroundings) goes to the lights, what is
+// left has a bounded dynamic range. Intensity applied, scale-invariant. A map whose brightest
+// texel is within peakToMean of its mean gets peakToMean x mean (>= the brightest: no sun); a map
+// black but for less than 1/peakToMean of the sphere gets 0 (every lit texel is a light's).
+// Exact (the root of a piecewise-linear function of t over the sorted luminances), O(N log N).
+// Throws std::invalid_argument unless peakToMean >= 1.
+float automaticSunThreshold(const EnvironmentMap& map, float peakToMean = kSunPeakToMean);
+
+// Irradiance that `light`, taken as a disk of uniform radiance light.radiance and angular radius
+// light.angularRadius centred on light.direction, gives a surface of unit normal n:
+// light.radiance x uniformDiskIrradiance(dot(n, direction), angularRadius) (core/disk_irradiance.h:
+// pi sin^2 r cos(theta) above the horizon, the exact clipped-disk formula across it, 0 below).
+// The engine's GLSL twin and the reference's biased mode evaluate the same.
+glm::vec3 sunIrradiance(const EnvironmentLight& light, const glm::vec3& n);
 
 // What a bake folder's env/lights.json holds (bakefile/environment_lights_json.h) and the engine
 // draws: the extracted suns and the median-cut regions of the same map.

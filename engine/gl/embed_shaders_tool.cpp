@@ -23,12 +23,14 @@
 #include <string>
 #include <vector>
 
+#include "core/brdf.h"
 #include "core/material.h"
 #include "core/relative_squared_error.h"
 #include "core/texture.h"
 #include "core/tone_curve.h"
 #include "engine/gl/frame_layer.h"
 #include "engine/gl/gpu_mesh_attribute.h"
+#include "engine/gl/light_constants.h"
 #include "engine/gl/shading_mode.h"
 #include "engine/gl/texture_unit.h"
 
@@ -73,6 +75,8 @@ std::string sharedConstants() {
                         {"kShadingModeShAoBent", int(ShadingMode::ShAoBent)},
                         {"kShadingModePrt", int(ShadingMode::Prt)},
                         {"kShadingModeFull", int(ShadingMode::Full)},
+                        {"kShadingModeLights", int(ShadingMode::Lights)},
+                        {"kShadingModeLightsShadowed", int(ShadingMode::LightsShadowed)},
                         {"kShadingModeFullGltfAo", int(ShadingMode::FullGltfAo)},
                         {"kShadingModeFullBothAo", int(ShadingMode::FullBothAo)}});
   text += intConstants("iblkit::FrameLayer (engine/gl/frame_layer.h)",
@@ -106,7 +110,12 @@ std::string sharedConstants() {
                         {"kTextureUnitMetallicRoughness", kTextureUnitMetallicRoughness},
                         {"kTextureUnitNormal", kTextureUnitNormal},
                         {"kTextureUnitOcclusion", kTextureUnitOcclusion},
-                        {"kTextureUnitEmissive", kTextureUnitEmissive}});
+                        {"kTextureUnitEmissive", kTextureUnitEmissive},
+                        {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
+                        {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
+                        {"kTextureUnitShadowCompare", kTextureUnitShadowCompare}});
+  text += intConstants("iblkit::kMaxEngineLights (engine/gl/light_constants.h)",
+                       {{"kMaxEngineLights", kMaxEngineLights}});
   text += intConstants("iblkit::TextureSlot (core/texture.h)",
                        {{"kSlotBaseColor", int(kSlotBaseColor)},
                         {"kSlotMetallicRoughness", int(kSlotMetallicRoughness)},
@@ -131,6 +140,7 @@ std::string sharedConstants() {
                         {"kAlphaModeBlend", int(AlphaMode::Blend)}});
   text += "// iblkit::kRelMseEpsilon (core/relative_squared_error.h)\nconst float kRelMseEpsilon = " +
           floatLiteral(float(kRelMseEpsilon)) + ";\n";
+  text += "// iblkit::kDeltaAlpha (core/brdf.h)\nconst float kDeltaAlpha = " + floatLiteral(kDeltaAlpha) + ";\n";
   return text + "#endif\n";
 }
 

@@ -21,6 +21,11 @@ enum TextureUnit : unsigned {
   kTextureUnitNormal = 9,
   kTextureUnitOcclusion = 10,
   kTextureUnitEmissive = 11,
+  // mesh.frag's lights modes: the residual's specular chain, and the shadow maps (one depth texture
+  // array, bound twice: raw depths for the blocker search, compare mode for PCF).
+  kTextureUnitResidualSpecular = 12,
+  kTextureUnitShadowDepth = 13,
+  kTextureUnitShadowCompare = 14,
 };
 
 }  // namespace iblkit

@@ -1,0 +1,228 @@
+// extractSuns and automaticSunThreshold (core/environment_lights.h, docs/dominant-lights.md).
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <glm/gtc/constants.hpp>
+#include <numeric>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "core/environment_lights.h"
+
+namespace iblkit {
+namespace {
+
+// Union-find over texel indices (path halving, union by index: the smaller index is the root, so
+// the labelling does not depend on the order of the unions).
+class TexelRegions {
+ public:
+  explicit TexelRegions(std::size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0); }
+  std::size_t root(std::size_t i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+  void join(std::size_t a, std::size_t b) {
+    a = root(a);
+    b = root(b);
+    if (a < b) parent_[b] = a;
+    if (b < a) parent_[a] = b;
+  }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+struct Region {
+  std::vector<std::size_t> texels;  // y * width + x
+  double energy = 0.0;              // luminance of the light's irradiance
+};
+
+// The shortest run of columns (wrapping) holding every column in `used` (sorted, unique): starts
+// after the widest gap between consecutive used columns. Returns [x0, x1), x1 may exceed width.
+std::pair<int, int> wrappedColumnSpan(const std::vector<int>& used, int width) {
+  if (int(used.size()) == width) return {0, width};
+  int widestGap = -1, start = used.front();
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    const int next = i + 1 < used.size() ? used[i + 1] : used.front() + width;
+    const int gap = next - used[i] - 1;
+    if (gap > widestGap) {
+      widestGap = gap;
+      start = next % width;
+    }
+  }
+  return {start, start + width - widestGap};
+}
+
+// The light a region's texels make, and their residual texels written into `residual`.
+EnvironmentLight regionLight(const EnvironmentMap& map, const Region& region, float threshold,
+                             Image& residual) {
+  const int width = map.width();
+  EnvironmentLight light;
+  light.kind = EnvironmentLightKind::Sun;
+  glm::dvec3 centroid(0.0), irradiance(0.0);
+  double energy = 0.0, texelSpread = 0.0;  // sums of luminance x solid angle, and x solid angle^2
+  std::vector<int> columns;
+  light.y0 = map.height();
+  light.y1 = 0;
+  glm::vec3 brightestDirection(0.0f, 1.0f, 0.0f);
+  float brightest = -1.0f;
+  for (const std::size_t index : region.texels) {
+    const int x = int(index % std::size_t(width)), y = int(index / std::size_t(width));
+    const glm::vec4 texel = map.image().at(x, y);
+    const float lum = map.texelLuminance(x, y);
+    // Stored units (intensity not applied); the light's part is what the residual does not keep,
+    // so the two add up to the texel.
+    const glm::vec3 kept = glm::vec3(texel) * (threshold / lum);
+    residual.at(x, y) = glm::vec4(kept, texel.a);
+    const glm::vec3 carried = map.intensity() * (glm::vec3(texel) - kept);
+    const float dOmega = map.texelSolidAngle(y);
+    const glm::vec3 direction = map.texelDirection(x, y);
+    // Unit to double precision, so that a single texel's centroid has length 1 (spread 0).
+    const glm::dvec3 unit = glm::normalize(glm::dvec3(direction));
+    irradiance += glm::dvec3(carried) * double(dOmega);
+    const double weight = double(luminance(carried)) * dOmega;
+    centroid += unit * weight;
+    energy += weight;
+    texelSpread += weight * dOmega;
+    light.sh9.accumulate(direction, carried, dOmega);
+    columns.push_back(x);
+    light.y0 = std::min(light.y0, y);
+    light.y1 = std::max(light.y1, y + 1);
+    if (lum > brightest) {
+      brightest = lum;
+      brightestDirection = direction;
+    }
+  }
+  // A region symmetric about the centre of the sphere (a band all around) has no centroid: its
+  // brightest texel stands for it.
+  const double length = glm::length(centroid);
+  light.direction = length > 1e-6 * energy ? glm::vec3(centroid / length) : brightestDirection;
+  light.irradiance = glm::vec3(irradiance);
+  // The disk of the same spread: a uniform disk of solid angle W has mean cosine to its centre
+  // 1 - W / (4 pi), so W = 4 pi (1 - |centroid| / energy) for the spread of the texel centres, plus
+  // the energy-weighted mean solid angle of a texel for the spread within each texel (second
+  // moments add). A single texel gives its own solid angle.
+  const double pi = glm::pi<double>();
+  const double solidAngle =
+      std::min(4.0 * pi * std::max(0.0, 1.0 - length / energy) + texelSpread / energy, 4.0 * pi);
+  light.solidAngle = float(solidAngle);
+  light.angularRadius = float(std::acos(std::clamp(1.0 - solidAngle / (2.0 * pi), -1.0, 1.0)));
+  light.radiance = light.irradiance / light.solidAngle;
+  std::sort(columns.begin(), columns.end());
+  columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+  std::tie(light.x0, light.x1) = wrappedColumnSpan(columns, width);
+  return light;
+}
+
+}  // namespace
+
+float automaticSunThreshold(const EnvironmentMap& map, float peakToMean) {
+  if (!(peakToMean >= 1.0f)) throw std::invalid_argument("automaticSunThreshold: peakToMean must be >= 1");
+  const int width = map.width(), height = map.height();
+  // (luminance, solid angle) of every texel, brightest first.
+  std::vector<std::pair<float, float>> texels;
+  texels.reserve(std::size_t(width) * std::size_t(height));
+  double lit = 0.0, sphere = 0.0;  // sum of luminance x solid angle; the solid angle (4 pi)
+  for (int y = 0; y < height; ++y) {
+    const float dOmega = map.texelSolidAngle(y);
+    for (int x = 0; x < width; ++x) {
+      const float lum = map.texelLuminance(x, y);
+      texels.emplace_back(lum, dOmega);
+      lit += double(lum) * dOmega;
+      sphere += dOmega;
+    }
+  }
+  std::sort(texels.begin(), texels.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  const double k = peakToMean;
+  // g(t) = k mean(min(lum, t)) - t is concave with g(0) = 0, so g >= 0 exactly on [0, t*]. Between
+  // the i-th and (i+1)-th brightest luminance, mean(min(lum, t)) = (below + t above) / sphere with
+  // `above` the solid angle of the i brightest texels and `below` the energy of the others: g is
+  // linear there and its root t = k below / (sphere - k above). The largest root is in the first
+  // interval (from the top) that holds its own root.
+  if (k * lit / sphere >= double(texels.front().first)) return float(k * lit / sphere);
+  double above = 0.0, below = lit;
+  for (std::size_t i = 0; i < texels.size(); ++i) {
+    // t in [texels[i].first, previous luminance]: texels 0..i-1 above t.
+    const double upper = i == 0 ? INFINITY : double(texels[i - 1].first);
+    const double lower = texels[i].first;
+    const double denominator = sphere - k * above;
+    if (denominator <= 0.0) return 0.0f;  // g falls for every t below: the root is 0
+    const double root = k * below / denominator;
+    if (root >= lower && root <= upper) return float(root);
+    above += texels[i].second;
+    below -= double(texels[i].first) * texels[i].second;
+    below = std::max(below, 0.0);
+  }
+  return 0.0f;
+}
+
+ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions& options) {
+  if (!std::isfinite(options.threshold)) throw std::invalid_argument("extractSuns: threshold must be finite");
+  if (options.maxLights < 0) throw std::invalid_argument("extractSuns: maxLights must be >= 0");
+  if (!(options.minEnergyFraction >= 0.0f && options.minEnergyFraction <= 1.0f))
+    throw std::invalid_argument("extractSuns: minEnergyFraction must be in [0, 1]");
+  ExtractedSuns result;
+  result.threshold =
+      options.threshold > 0.0f ? options.threshold : automaticSunThreshold(map, options.peakToMean);
+  result.residual = map.image();
+  const int width = map.width(), height = map.height();
+  const std::size_t count = std::size_t(width) * std::size_t(height);
+  std::vector<char> above(count, 0);
+  double mapEnergy = 0.0;
+  for (int y = 0; y < height; ++y) {
+    const float dOmega = map.texelSolidAngle(y);
+    for (int x = 0; x < width; ++x) {
+      const float lum = map.texelLuminance(x, y);
+      above[std::size_t(y) * std::size_t(width) + std::size_t(x)] = lum > result.threshold;
+      mapEnergy += double(lum) * dOmega;
+    }
+  }
+  TexelRegions regions(count);
+  auto index = [width](int x, int y) { return std::size_t(y) * std::size_t(width) + std::size_t(x); };
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      if (!above[index(x, y)]) continue;
+      // Half of the 8 neighbours (the other half joins from their side), longitude wrapping.
+      const int right = (x + 1) % width;
+      if (above[index(right, y)]) regions.join(index(x, y), index(right, y));
+      if (y + 1 < height)
+        for (const int nx : {(x + width - 1) % width, x, right})
+          if (above[index(nx, y + 1)]) regions.join(index(x, y), index(nx, y + 1));
+    }
+  // The texels of the top row all touch at the pole (+Y), those of the bottom row at -Y.
+  for (const int y : {0, height - 1}) {
+    int first = -1;
+    for (int x = 0; x < width; ++x) {
+      if (!above[index(x, y)]) continue;
+      if (first < 0) first = x;
+      regions.join(index(first, y), index(x, y));
+    }
+  }
+  std::vector<Region> found;
+  std::vector<std::size_t> regionOfRoot(count, count);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!above[i]) continue;
+    const std::size_t root = regions.root(i);
+    if (regionOfRoot[root] == count) {
+      regionOfRoot[root] = found.size();
+      found.emplace_back();
+    }
+    Region& region = found[regionOfRoot[root]];
+    region.texels.push_back(i);
+    const int x = int(i % std::size_t(width)), y = int(i / std::size_t(width));
+    region.energy += double(map.texelLuminance(x, y) - result.threshold) * map.texelSolidAngle(y);
+  }
+  // Brightest first; ties by first texel, so the order is the same on every run.
+  std::stable_sort(found.begin(), found.end(),
+                   [](const Region& a, const Region& b) { return a.energy > b.energy; });
+  for (const Region& region : found) {
+    if (int(result.suns.size()) >= options.maxLights) break;
+    if (region.energy < double(options.minEnergyFraction) * mapEnergy || region.energy <= 0.0) break;
+    result.suns.push_back(regionLight(map, region, result.threshold, result.residual));
+  }
+  return result;
+}
+
+}  // namespace iblkit

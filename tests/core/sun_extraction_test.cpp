@@ -1,0 +1,306 @@
+// extractSuns and automaticSunThreshold: single-light maps with known answers, lights + residual
+// equal to the map (texel sums, SH9 and brute-force irradiance), regions across the seam and the
+// poles, and what the rule finds in the bundled maps.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <glm/gtc/constants.hpp>
+#include <stdexcept>
+
+#include "core/environment_lights.h"
+#include "core/environment_map_file.h"
+#include "core/environment_sh.h"
+#include "core/latlong.h"
+#include "support/sun_map.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+using test::SunDisk;
+using test::sunnySky;
+
+constexpr float kPi = glm::pi<float>();
+
+// The residual as a map in the same world frame as `map`.
+EnvironmentMap residualMap(const EnvironmentMap& map, const ExtractedSuns& suns) {
+  EnvironmentMap residual = EnvironmentMap::fromImage(suns.residual, "residual");
+  residual.setRotationDegrees(map.rotationDegrees());
+  residual.setIntensity(map.intensity());
+  return residual;
+}
+
+// Sum over texels of radiance x solid angle (intensity applied), in double.
+glm::dvec3 integral(const EnvironmentMap& map) {
+  glm::dvec3 sum(0.0);
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x)
+      sum += glm::dvec3(map.texelRadiance(x, y)) * double(map.texelSolidAngle(y));
+  return sum;
+}
+
+glm::vec3 fromSpherical(float latitudeDegrees, float longitudeDegrees) {
+  const float lat = glm::radians(latitudeDegrees), lon = glm::radians(longitudeDegrees);
+  return {std::cos(lat) * std::sin(lon), std::sin(lat), std::cos(lat) * std::cos(lon)};
+}
+
+TEST(SunExtraction, OneHotPixelIsOneLightInItsDirectionWithItsPower) {
+  for (const auto& [x, y] : {std::pair{10, 8}, std::pair{0, 0}, std::pair{63, 31}}) {
+    EnvironmentMap map = EnvironmentMap::hotPixel(64, x, y, glm::vec3(1e3f, 2e3f, 3e3f));
+    map.setRotationDegrees(30.0f);
+    map.setIntensity(2.0f);
+    const ExtractedSuns extracted = extractSuns(map);
+    // Black but for one texel: the automatic threshold is 0, the texel goes to the light whole.
+    EXPECT_EQ(extracted.threshold, 0.0f);
+    ASSERT_EQ(extracted.suns.size(), 1u) << x << " " << y;
+    const EnvironmentLight& sun = extracted.suns.front();
+    EXPECT_EQ(sun.kind, EnvironmentLightKind::Sun);
+    const glm::vec3 direction = map.texelDirection(x, y);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sun.direction[c], direction[c], 1e-6f);
+    const glm::vec3 power = map.texelRadiance(x, y) * map.texelSolidAngle(y);
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(sun.irradiance[c], power[c]);
+    EXPECT_FLOAT_EQ(sun.solidAngle, map.texelSolidAngle(y));
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(sun.radiance[c], map.texelRadiance(x, y)[c]);
+    EXPECT_NEAR(2.0f * kPi * (1.0f - std::cos(sun.angularRadius)), sun.solidAngle, 1e-3f * sun.solidAngle);
+    EXPECT_EQ(sun.x0, x);
+    EXPECT_EQ(sun.x1, x + 1);
+    EXPECT_EQ(sun.y0, y);
+    EXPECT_EQ(sun.y1, y + 1);
+    for (const glm::vec4& texel : extracted.residual.pixels()) EXPECT_EQ(glm::vec3(texel), glm::vec3(0.0f));
+    // Its SH9 is the map's.
+    const SphericalHarmonics9 projection = projectEnvironmentSh9(map);
+    for (int k = 0; k < kShCoefficients; ++k)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(sun.sh9.coefficients[k][c], projection.coefficients[k][c],
+                    1e-5f * std::abs(projection.coefficients[0][c]));
+  }
+}
+
+TEST(SunExtraction, ConstantAndSoftMapsHaveNoSun) {
+  const EnvironmentMap constant = EnvironmentMap::constant(glm::vec3(0.7f, 0.5f, 0.3f), 64);
+  const ExtractedSuns none = extractSuns(constant);
+  EXPECT_TRUE(none.suns.empty());
+  // The threshold is k x the mean, above every texel.
+  EXPECT_NEAR(none.threshold, kSunPeakToMean * constant.texelLuminance(0, 0), 1e-3f);
+  EXPECT_EQ(none.residual.pixels(), constant.image().pixels());
+  const EnvironmentMap soft = sunnySky(128, {});
+  EXPECT_TRUE(extractSuns(soft).suns.empty());
+}
+
+TEST(SunExtraction, TheAutomaticThresholdIsPeakToMeanTimesTheResidualsMean) {
+  const EnvironmentMap map = sunnySky(128, {SunDisk{.direction = fromSpherical(40.0f, 20.0f)}});
+  const float t = automaticSunThreshold(map);
+  // t = k mean(min(lum, t)): the fixed point, to float precision.
+  double clamped = 0.0;
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x)
+      clamped += double(std::min(map.texelLuminance(x, y), t)) * map.texelSolidAngle(y);
+  EXPECT_NEAR(t, kSunPeakToMean * clamped / (4.0 * glm::pi<double>()), 1e-4 * t);
+  // Above the sky, below the sun.
+  EXPECT_GT(t, luminance(test::softSkyRadiance({0.0f, 1.0f, 0.0f})));
+  EXPECT_LT(t, luminance(SunDisk{}.radiance));
+  // Scale-invariant.
+  EnvironmentMap brighter = map;
+  brighter.setIntensity(8.0f);
+  EXPECT_NEAR(automaticSunThreshold(brighter), 8.0f * t, 1e-4f * t);
+  EXPECT_THROW(automaticSunThreshold(map, 0.5f), std::invalid_argument);
+}
+
+TEST(SunExtraction, ASunIsOneLightAtItsCentreAndTheResidualIsClampedToTheThreshold) {
+  const glm::vec3 centre = fromSpherical(35.0f, -60.0f);
+  EnvironmentMap map = sunnySky(256, {SunDisk{.direction = centre, .angularRadius = 0.04f}});
+  map.setRotationDegrees(25.0f);
+  const ExtractedSuns extracted = extractSuns(map);
+  ASSERT_EQ(extracted.suns.size(), 1u);
+  const EnvironmentLight& sun = extracted.suns.front();
+  const glm::vec3 world = map.toWorldDirection(centre);
+  EXPECT_GT(glm::dot(sun.direction, world), std::cos(0.002f));
+  // The disk's solid angle and radius, to the texel resolution (1.4 degrees).
+  EXPECT_NEAR(sun.angularRadius, 0.04f, 0.006f);
+  EXPECT_NEAR(sun.solidAngle, 2.0f * kPi * (1.0f - std::cos(0.04f)), 0.3f * sun.solidAngle);
+  // The residual keeps texel x t / luminance: its light texels sit at the threshold, chroma kept.
+  const EnvironmentMap residual = residualMap(map, extracted);
+  for (int y = sun.y0; y < sun.y1; ++y)
+    for (int x = sun.x0; x < sun.x1; ++x) {
+      const int xw = x % map.width();
+      const float before = map.texelLuminance(xw, y), after = residual.texelLuminance(xw, y);
+      if (before > extracted.threshold) {
+        EXPECT_NEAR(after, extracted.threshold, 1e-5f * extracted.threshold);
+        const glm::vec3 a = map.texelRadiance(xw, y), b = residual.texelRadiance(xw, y);
+        EXPECT_NEAR(a.r / a.b, b.r / b.b, 1e-5f * a.r / a.b);
+      } else {
+        EXPECT_EQ(after, before);
+      }
+    }
+}
+
+TEST(SunExtraction, ResidualPlusLightsIsTheMapExactly) {
+  EnvironmentMap map = sunnySky(128, {SunDisk{.direction = fromSpherical(50.0f, 120.0f)},
+                                      SunDisk{.direction = fromSpherical(10.0f, -30.0f),
+                                              .angularRadius = 0.06f,
+                                              .radiance = glm::vec3(3e3f, 3e3f, 4e3f)}});
+  map.setRotationDegrees(-70.0f);
+  map.setIntensity(1.5f);
+  const ExtractedSuns extracted = extractSuns(map);
+  ASSERT_EQ(extracted.suns.size(), 2u);
+  const EnvironmentMap residual = residualMap(map, extracted);
+  // Texel by texel, the residual is at most the map.
+  for (std::size_t i = 0; i < extracted.residual.pixelCount(); ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_LE(extracted.residual.pixels()[i][c], map.image().pixels()[i][c]);
+  glm::dvec3 lights(0.0);
+  SphericalHarmonics9 lightsSh;
+  for (const EnvironmentLight& sun : extracted.suns) {
+    lights += glm::dvec3(sun.irradiance);
+    lightsSh += sun.sh9;
+  }
+  const glm::dvec3 whole = integral(map), rest = integral(residual);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(rest[c] + lights[c], whole[c], 1e-6 * whole[c]);
+  // SH is linear: the map's projection minus the lights' is the residual's.
+  const SphericalHarmonics9 mapSh = projectEnvironmentSh9(map), residualSh = projectEnvironmentSh9(residual);
+  for (int k = 0; k < kShCoefficients; ++k)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(residualSh.coefficients[k][c] + lightsSh.coefficients[k][c], mapSh.coefficients[k][c],
+                  1e-5f * mapSh.coefficients[0][c])
+          << k;
+}
+
+// The irradiance test of the issue: lights (by sunIrradiance) plus the residual (brute force)
+// against the brute-force irradiance of the map, at 100 directions.
+void expectIrradianceOfLightsPlusResidual(const EnvironmentMap& map, const ExtractedSuns& extracted,
+                                          double tolerance) {
+  const std::vector<glm::vec3> normals = fibonacciSphere(100);
+  const std::vector<glm::vec3> whole = bruteForceIrradiance(map, normals);
+  const std::vector<glm::vec3> rest = bruteForceIrradiance(residualMap(map, extracted), normals);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < normals.size(); ++i) {
+    glm::vec3 e = rest[i];
+    for (const EnvironmentLight& sun : extracted.suns) e += sunIrradiance(sun, normals[i]);
+    for (int c = 0; c < 3; ++c) {
+      const double error = std::abs(double(e[c]) - whole[i][c]) / whole[i][c];
+      worst = std::max(worst, error);
+      EXPECT_LT(error, tolerance) << "normal " << i << " channel " << c;
+    }
+  }
+  std::printf("lights + residual vs brute force, 100 normals: worst relative error %.4f%%\n", 100.0 * worst);
+}
+
+TEST(SunExtraction, LightsPlusResidualIrradianceIsTheMapsOnASyntheticSun) {
+  // About half of the energy in the sun, as in sky.exr (56%).
+  EnvironmentMap map = sunnySky(256, {SunDisk{.direction = fromSpherical(30.0f, 75.0f),
+                                              .angularRadius = 0.02f,
+                                              .radiance = glm::vec3(5e3f)}});
+  map.setRotationDegrees(40.0f);
+  const ExtractedSuns extracted = extractSuns(map);
+  ASSERT_EQ(extracted.suns.size(), 1u);
+  expectIrradianceOfLightsPlusResidual(map, extracted, 0.005);
+}
+
+TEST(SunExtraction, LightsPlusResidualIrradianceIsTheMapsOnSky) {
+  const std::filesystem::path file = test::assetsDir() / "hdri" / "sky.exr";
+  if (!std::filesystem::is_regular_file(file)) GTEST_SKIP() << "assets not fetched: " << file;
+  const EnvironmentMap map = loadEnvironmentMap(file);
+  const ExtractedSuns extracted = extractSuns(map);
+  ASSERT_EQ(extracted.suns.size(), 1u);
+  expectIrradianceOfLightsPlusResidual(map, extracted, 0.005);
+}
+
+TEST(SunExtraction, ASunAcrossTheLongitudeSeamIsOneLight) {
+  // Longitude 180 degrees (-Z) is u = 0 = 1: the disk covers the first and the last columns.
+  const EnvironmentMap map =
+      sunnySky(128, {SunDisk{.direction = fromSpherical(20.0f, 180.0f), .angularRadius = 0.08f}});
+  const ExtractedSuns extracted = extractSuns(map);
+  ASSERT_EQ(extracted.suns.size(), 1u);
+  const EnvironmentLight& sun = extracted.suns.front();
+  EXPECT_GT(glm::dot(sun.direction, fromSpherical(20.0f, 180.0f)), std::cos(0.01f));
+  // The box starts left of the seam and runs past the width.
+  EXPECT_GT(sun.x0, map.width() / 2);
+  EXPECT_GT(sun.x1, map.width());
+  EXPECT_LT(sun.x1 - sun.x0, 10);
+}
+
+TEST(SunExtraction, ASunOverThePoleIsOneLight) {
+  for (const float latitude : {90.0f, -90.0f}) {
+    const EnvironmentMap map =
+        sunnySky(128, {SunDisk{.direction = fromSpherical(latitude, 0.0f), .angularRadius = 0.1f}});
+    const ExtractedSuns extracted = extractSuns(map);
+    ASSERT_EQ(extracted.suns.size(), 1u) << latitude;
+    const EnvironmentLight& sun = extracted.suns.front();
+    EXPECT_GT(std::abs(sun.direction.y), std::cos(0.005f));
+    EXPECT_EQ(sun.x1 - sun.x0, map.width());  // all the way round
+  }
+  // Two texels of the top row on opposite sides of the pole touch there.
+  Image image(64, 32);
+  image.at(3, 0) = image.at(35, 0) = glm::vec4(1e3f);
+  EXPECT_EQ(extractSuns(EnvironmentMap::fromImage(image, "poles")).suns.size(), 1u);
+}
+
+TEST(SunExtraction, KeepsTheBrightestAboveTheEnergyFloorAndLeavesTheOthersWhole) {
+  const SunDisk bright{.direction = fromSpherical(40.0f, 0.0f), .angularRadius = 0.05f};
+  const SunDisk dim{
+      .direction = fromSpherical(40.0f, 90.0f), .angularRadius = 0.05f, .radiance = glm::vec3(2e3f)};
+  const EnvironmentMap map = sunnySky(128, {bright, dim});
+  const ExtractedSuns both =
+      extractSuns(map, {.threshold = 10.0f, .maxLights = 4, .minEnergyFraction = 0.0f});
+  ASSERT_EQ(both.suns.size(), 2u);
+  EXPECT_GT(luminance(both.suns[0].irradiance), luminance(both.suns[1].irradiance));
+  EXPECT_GT(glm::dot(both.suns[0].direction, bright.direction), 0.999f);
+  const ExtractedSuns one = extractSuns(map, {.threshold = 10.0f, .maxLights = 1, .minEnergyFraction = 0.0f});
+  ASSERT_EQ(one.suns.size(), 1u);
+  EXPECT_EQ(one.suns[0].irradiance, both.suns[0].irradiance);
+  // The dim sun's texels stay whole in the residual.
+  const EnvironmentLight& dimLight = both.suns[1];
+  for (int y = dimLight.y0; y < dimLight.y1; ++y)
+    for (int x = dimLight.x0; x < dimLight.x1; ++x)
+      EXPECT_EQ(one.residual.at(x % map.width(), y), map.image().at(x % map.width(), y));
+  // An energy floor above the dim sun's share drops it.
+  double energy = 0.0;
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x) energy += double(map.texelLuminance(x, y)) * map.texelSolidAngle(y);
+  const float dimShare = float(luminance(dimLight.irradiance) / energy);
+  EXPECT_EQ(extractSuns(map, {.threshold = 10.0f, .maxLights = 4, .minEnergyFraction = 1.5f * dimShare})
+                .suns.size(),
+            1u);
+  EXPECT_TRUE(extractSuns(map, {.threshold = 10.0f, .maxLights = 0}).suns.empty());
+}
+
+TEST(SunExtraction, RefusesBadOptions) {
+  const EnvironmentMap map = EnvironmentMap::constant(glm::vec3(1.0f), 8);
+  EXPECT_THROW(extractSuns(map, {.threshold = NAN}), std::invalid_argument);
+  EXPECT_THROW(extractSuns(map, {.maxLights = -1}), std::invalid_argument);
+  EXPECT_THROW(extractSuns(map, {.minEnergyFraction = 1.5f}), std::invalid_argument);
+  EXPECT_THROW(extractSuns(map, {.peakToMean = 0.0f}), std::invalid_argument);
+}
+
+// What the automatic rule extracts from the report's six maps (docs/dominant-lights.md records the
+// table): the sun of sky and esplanade and the studio's lamps, nothing from the soft maps.
+TEST(SunExtraction, BundledMapsGetSunsWhereTheyHaveThem) {
+  const std::filesystem::path folder = test::assetsDir() / "hdri";
+  if (!std::filesystem::is_directory(folder)) GTEST_SKIP() << "assets not fetched: " << folder;
+  for (const char* name : {"sky", "esplanade", "studio", "city", "forest", "sunset"}) {
+    const EnvironmentMap map = loadEnvironmentMap(folder / (std::string(name) + ".exr"));
+    const ExtractedSuns extracted = extractSuns(map);
+    double energy = 0.0;
+    for (int y = 0; y < map.height(); ++y)
+      for (int x = 0; x < map.width(); ++x)
+        energy += double(map.texelLuminance(x, y)) * map.texelSolidAngle(y);
+    std::printf("%-10s threshold %8.3f, %zu sun(s)\n", name, extracted.threshold, extracted.suns.size());
+    for (const EnvironmentLight& sun : extracted.suns)
+      std::printf("    direction (%6.3f, %6.3f, %6.3f), angular radius %.2f degrees, %.1f%% of the energy\n",
+                  sun.direction.x, sun.direction.y, sun.direction.z, glm::degrees(sun.angularRadius),
+                  100.0 * luminance(sun.irradiance) / energy);
+    const std::string map_name = name;
+    if (map_name == "sky" || map_name == "esplanade" || map_name == "studio") {
+      ASSERT_FALSE(extracted.suns.empty()) << name;
+      EXPECT_GT(luminance(extracted.suns.front().irradiance) / energy, 0.3) << name;
+      EXPECT_LT(extracted.suns.front().angularRadius, glm::radians(5.0f)) << name;
+    } else {
+      EXPECT_TRUE(extracted.suns.empty()) << name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace iblkit
