@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "core/environment_map_file.h"
@@ -64,6 +65,7 @@ TEST(MapKind, SunsSourcesAndSoftMaps) {
   EXPECT_EQ(classifyMap(mapConcentration(skyWithDisk(30.0f, 0.5))), MapKind::Soft);
 }
 
+// The table of docs/report.md "Kinds of map" (printed).
 TEST(MapKind, BundledMaps) {
   const std::pair<const char*, MapKind> expected[] = {{"sky", MapKind::Sunny},   {"esplanade", MapKind::Sunny},
                                                       {"studio", MapKind::Studio}, {"city", MapKind::Soft},
@@ -71,6 +73,7 @@ TEST(MapKind, BundledMaps) {
   for (const auto& [name, kind] : expected) {
     const MapConcentration shares =
         mapConcentration(loadEnvironmentMap(test::assetsDir() / "hdri" / (std::string(name) + ".exr")));
+    std::printf("%-10s sun share %.3f, source share %.3f\n", name, shares.sunShare, shares.sourceShare);
     EXPECT_EQ(mapKindName(classifyMap(shares)), mapKindName(kind))
         << name << ": sunShare " << shares.sunShare << ", sourceShare " << shares.sourceShare;
   }
