@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
   // full-gltf-ao and full-both-ao run only on scenes with a glTF occlusion texture (report/case_modes.h).
   // lights and lights-shadowed (the dominant lights plus the residual, issue 15) after full, which
   // they are measured against (report_claims.h).
-  settings.modes = {"mirror", "sh",     "sh-ao",           "sh-ao-bent",   "prt",
+  settings.modes = {"mirror", "sh",     "irradiance",      "sh-ao",        "sh-ao-bent",  "prt",
                     "full",   "lights", "lights-shadowed", "full-gltf-ao", "full-both-ao"};
   CLI::App app{"Scores every real-time mode against the path-traced reference", kProgram};
   app.add_option("scenes", options.scenes, "scene files (.json, .gltf, .glb)");

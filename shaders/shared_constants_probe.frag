@@ -15,7 +15,8 @@ const float kValues[] = float[](
     kTextureUnitReference, kTextureUnitColorMap, kRelMseEpsilon, kAttributeTexcoord0, kAttributeTexcoord1,
     kAttributeTangent, kTextureUnitBaseColor, kTextureUnitMetallicRoughness, kTextureUnitNormal,
     kTextureUnitOcclusion, kTextureUnitEmissive, kSlotBaseColor, kSlotMetallicRoughness, kSlotNormal, kSlotOcclusion,
-    kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend);
+    kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend, kShadingModeIrradiance,
+    kShadingModeIrradianceAoBent, kTextureUnitIrradiance);
 
 void main() {
   int i = int(gl_FragCoord.x);

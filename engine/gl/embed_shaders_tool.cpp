@@ -71,6 +71,8 @@ std::string sharedConstants() {
                        {{"kShadingModeUnlit", int(ShadingMode::Unlit)},
                         {"kShadingModeMirror", int(ShadingMode::Mirror)},
                         {"kShadingModeSh", int(ShadingMode::Sh)},
+                        {"kShadingModeIrradiance", int(ShadingMode::Irradiance)},
+                        {"kShadingModeIrradianceAoBent", int(ShadingMode::IrradianceAoBent)},
                         {"kShadingModeShAo", int(ShadingMode::ShAo)},
                         {"kShadingModeShAoBent", int(ShadingMode::ShAoBent)},
                         {"kShadingModePrt", int(ShadingMode::Prt)},
@@ -113,7 +115,8 @@ std::string sharedConstants() {
                         {"kTextureUnitEmissive", kTextureUnitEmissive},
                         {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
                         {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
-                        {"kTextureUnitShadowCompare", kTextureUnitShadowCompare}});
+                        {"kTextureUnitShadowCompare", kTextureUnitShadowCompare},
+                         {"kTextureUnitIrradiance", kTextureUnitIrradiance}});
   text += intConstants("iblkit::kMaxEngineLights (engine/gl/light_constants.h)",
                        {{"kMaxEngineLights", kMaxEngineLights}});
   text += intConstants("iblkit::TextureSlot (core/texture.h)",

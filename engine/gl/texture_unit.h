@@ -26,6 +26,7 @@ enum TextureUnit : unsigned {
   kTextureUnitResidualSpecular = 12,
   kTextureUnitShadowDepth = 13,
   kTextureUnitShadowCompare = 14,
+  kTextureUnitIrradiance = 15,  // mesh.frag: the brute-force irradiance cube (the irradiance modes)
 };
 
 }  // namespace iblkit

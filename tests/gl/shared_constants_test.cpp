@@ -37,7 +37,8 @@ const std::vector<float> kCppValues = {
     float(kTextureUnitNormal),    float(kTextureUnitOcclusion), float(kTextureUnitEmissive),
     float(kSlotBaseColor),        float(kSlotMetallicRoughness), float(kSlotNormal),
     float(kSlotOcclusion),        float(kSlotEmissive),         float(kAllTextureSlots),
-    float(AlphaMode::Opaque),     float(AlphaMode::Mask),       float(AlphaMode::Blend)};
+    float(AlphaMode::Opaque),     float(AlphaMode::Mask),       float(AlphaMode::Blend),
+    float(ShadingMode::Irradiance), float(ShadingMode::IrradianceAoBent), float(kTextureUnitIrradiance)};
 
 TEST(SharedConstants, GlslValuesEqualTheCppOnes) {
   const int n = int(kCppValues.size()) + 1;  // one texel past the table: the probe's -1
@@ -87,6 +88,9 @@ TEST(SharedConstants, SamplersReadTheTextureUnitsTheCppBinds) {
   const ShaderProgram mesh("mesh.vert", "mesh.frag");
   EXPECT_EQ(samplerUnit(mesh, "specularCube"), GLint(kTextureUnitSpecular));
   EXPECT_EQ(samplerUnit(mesh, "brdfLut"), GLint(kTextureUnitBrdfLut));
+  const ShaderProgram irradiance("mesh.vert", "mesh.frag",
+                                 "#define SHADING_MODE " + std::to_string(int(ShadingMode::Irradiance)));
+  EXPECT_EQ(samplerUnit(irradiance, "irradianceCube"), GLint(kTextureUnitIrradiance));
   // The material's slots are read in the textured variant (renderer.cpp's TEXTURED 1); the glTF
   // occlusion by the modes that use it.
   const ShaderProgram textured("mesh.vert", "mesh.frag",

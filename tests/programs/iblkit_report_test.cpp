@@ -60,9 +60,9 @@ TEST(IblkitReport, LoneSpheresScoreEveryModeHoldTheirClaimsAndRerunFromTheCache)
   for (const json& entry : document["cases"]) {
     EXPECT_GT(entry["reference"]["spp"].get<int>(), 0);
     EXPECT_GT(entry["scoredPixels"].get<int>(), 100) << entry["scene"];
-    // mirror, sh, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed (the glTF occlusion modes
+    // mirror, sh, irradiance, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed (the glTF occlusion modes
     // need an occlusion texture).
-    ASSERT_EQ(entry["modes"].size(), 8u);
+    ASSERT_EQ(entry["modes"].size(), 9u);
     // The map's kind (report/map_kind.h): sky has a sun, studio softboxes.
     EXPECT_EQ(entry["mapKind"], entry["environment"] == "sky" ? "sunny" : "studio") << entry["environment"];
     for (const json& mode : entry["modes"]) {
