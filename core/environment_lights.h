@@ -61,6 +61,9 @@ struct EnvironmentLight {
 // std::invalid_argument otherwise.
 std::vector<EnvironmentLight> medianCutLights(const EnvironmentMap& map, int levels);
 
+// The bake's median-cut levels unless told otherwise: 16 regions.
+inline constexpr int kDefaultMedianCutLevels = 4;
+
 // The automatic threshold's peak-to-mean ratio k (automaticSunThreshold).
 inline constexpr float kSunPeakToMean = 64.0f;
 
