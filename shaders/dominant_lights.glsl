@@ -4,11 +4,12 @@
 // have the terms.
 
 // The first lightCount suns (renderer.cpp: the world direction towards each, its uniform radiance,
-// cos and sin of its angular radius), and the residual: its SH9 radiance (with the suns not drawn
+// its angular radius and that angle's cos and sin), and the residual: its SH9 radiance (with the suns not drawn
 // added back) and its specular chain (the same levels and rotation as the map's).
 uniform int lightCount;
 uniform vec3 lightDirection[kMaxEngineLights];
 uniform vec3 lightRadiance[kMaxEngineLights];
+uniform float lightAngularRadius[kMaxEngineLights];
 uniform vec2 lightCosSin[kMaxEngineLights];
 uniform vec3 residualShRadiance[9];
 layout(binding = kTextureUnitResidualSpecular) uniform samplerCube residualSpecularCube;
@@ -23,7 +24,7 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 posit
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, specularWeight, specularColor);
   for (int i = 0; i < lightCount; ++i) {
     vec3 l = lightDirection[i];
-    vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightCosSin[i]);
+    vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightAngularRadius[i], lightCosSin[i]);
     if (shadowed && maxComponent(lit) > 0.0) {
       vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
       lit *= shadowVisibilityPcss(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));

@@ -50,54 +50,48 @@ vec3 evalBrdf(BrdfLobes lobes, vec3 n, vec3 v, vec3 l) {
   return f;
 }
 
-// Irradiance on a surface of normal n from a uniform disk (spherical cap) of radiance 1 and angular
-// radius sigma whose centre is at angle theta from n (cosTheta = n.l), partly below the horizon
-// too: Snyder 1996, "Area Light Sources for Real-Time Graphics" (the sphere light's form factor), as
-// Lagarde and de Rousiers 2014 write it ("Moving Frostbite to PBR", section 4.7.2, listing 7):
-//   cos^2 theta > sin^2 sigma:  pi sin^2 sigma cos theta          (the whole disk above the horizon)
-//   else:  (cos theta acos(y) - x sin theta sqrt(1 - y^2)) sin^2 sigma + atan(sin theta sqrt(1 - y^2) / x)
-//          with x = sqrt(1 / sin^2 sigma - 1), y = -x cot theta.
-float diskIrradianceSnyder(float cosTheta, float sinSigma2) {
-  if (cosTheta * cosTheta > sinSigma2) return kPi * sinSigma2 * max(cosTheta, 0.0);
-  float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-  float x = sqrt(max(1.0 / sinSigma2 - 1.0, 0.0));
-  float y = clamp(-x * cosTheta / max(sinTheta, 1e-7), -1.0, 1.0);
-  float sinThetaSqrtY = sinTheta * sqrt(1.0 - y * y);
-  float e = (cosTheta * acos(y) - x * sinThetaSqrtY) * sinSigma2 + atan(sinThetaSqrtY, x);
+// uniformDiskIrradiance of core/disk_irradiance.h: irradiance on a surface of normal n from a
+// uniform disk (spherical cap) of radiance 1 and angular radius r whose centre is at angle theta
+// from n (cosTheta = n.l), across the horizon too (Snyder 1996, "Area Light Sources for Real-Time
+// Graphics", as Lagarde and de Rousiers 2014 write it, "Moving Frostbite to PBR", section 4.7):
+//   cos^2 theta > sin^2 r:  pi sin^2 r max(cos theta, 0)
+//   else:  (cos theta acos(y) - x sin theta sqrt(1 - y^2)) sin^2 r + atan(sin theta sqrt(1 - y^2) / x)
+//          with x = cot r, y = -x cot theta.
+float uniformDiskIrradiance(float cosTheta, float angularRadius) {
+  float r = clamp(angularRadius, 0.0, 0.5 * kPi);
+  float c = clamp(cosTheta, -1.0, 1.0);
+  float sinRadius = sin(r);
+  float sinSquared = sinRadius * sinRadius;
+  if (sinSquared <= 0.0) return 0.0;
+  if (c * c > sinSquared) return kPi * sinSquared * max(c, 0.0);
+  float x = max(cos(r) / sinRadius, 1e-7);
+  float sinTheta = max(sqrt(max(0.0, 1.0 - c * c)), 1e-7);
+  float y = clamp(-x * c / sinTheta, -1.0, 1.0);
+  float sinThetaSqrtY = sinTheta * sqrt(max(0.0, 1.0 - y * y));
+  float e = (c * acos(y) - x * sinThetaSqrtY) * sinSquared + atan(sinThetaSqrtY / x);
   return max(e, 0.0);
 }
 
-// The disk's direction closest to the mirror direction r: r itself inside the disk, else the point
-// of its rim towards r (the representative point of Karis 2013, "Real Shading in Unreal Engine 4",
-// "Sphere lights", for a distant disk as Filament's sun does; cosSin = cos, sin of the radius).
-vec3 diskRepresentativeDirection(vec3 l, vec3 r, vec2 cosSin) {
-  float LoR = dot(l, r);
-  if (LoR >= cosSin.x) return r;
-  vec3 s = r - LoR * l;
-  float length2 = dot(s, s);
-  return length2 > 1e-12 ? normalize(cosSin.x * l + cosSin.y * s * inversesqrt(length2)) : l;
-}
-
-// One disk light of radiance `radiance`, direction l, angular radius with cos, sin = cosSin, on the
-// material `lobes` at (n, v), without visibility: the core's BRDF times the disk's irradiance E.
-//   diffuse  = brdfDiffuse(v, l) E(n.l)
-//   specular = F D V (alpha) at the representative direction l', times Karis 2013's energy
-//              normalisation (alpha / alpha')^2 with alpha' = min(alpha + tan(sigma) / 2, 1), times E(n.l)
-// For a rough lobe (alpha >> sigma) this is f(v, l) E: the disk's exact irradiance times the BRDF at
-// its centre. For a smooth one the representative point keeps the highlight the disk's size, and
-// the normalisation its energy: a mirror facing the disk head-on reflects F L (D = 1 / (pi alpha'^2),
-// V = 1/4, E = pi sin^2(sigma) L, alpha' = tan(sigma) / 2), the exact answer; the constant 2 in
-// alpha' is chosen for that.
-vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, vec2 cosSin) {
-  float irradiance = diskIrradianceSnyder(dot(n, l), cosSin.y * cosSin.y);
+// One disk light of radiance `radiance`, direction l, angular radius r (cos, sin = cosSin), on the
+// material `lobes` at (n, v), without visibility: the core's BRDF times the disk's irradiance
+// E = radiance uniformDiskIrradiance(n.l, r) (sunIrradiance of core/environment_lights.h),
+//   diffuse  = brdfDiffuse(v, l) E
+//   specular = F D V (v, l; alpha') E,   alpha' = min(sqrt(alpha^2 + (tan(r) / 2)^2), 1)
+// The specular lobe is widened by the disk (roughness widening, as in Karis 2013, "Real Shading in
+// Unreal Engine 4", "Area lights", where alpha' grows with the source's angular size): a lobe
+// convolved with the disk, whose widths add in quadrature. D stays normalised, so no energy is
+// gained; for alpha >> r this is f(v, l) E, the disk's exact irradiance times the BRDF at its centre,
+// and a mirror facing the disk head-on reflects F L cos^2(r) (D = 1 / (pi alpha'^2), V = 1/4,
+// E = pi sin^2(r) L, alpha' = tan(r) / 2), the exact answer F L to 0.3% at r = 3 degrees: the
+// factor 1/2 in alpha' is chosen for that. tests/gl/lights_test.cpp measures it against quadrature.
+vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, float angularRadius, vec2 cosSin) {
+  float irradiance = uniformDiskIrradiance(dot(n, l), angularRadius);
   if (irradiance <= 0.0 || dot(n, v) <= 0.0) return vec3(0.0);
   vec3 result = brdfDiffuse(lobes, v, l);
   if (maxComponent(lobes.f90) > 0.0) {
-    vec3 lr = diskRepresentativeDirection(l, reflect(-v, n), cosSin);
-    float alpha = max(lobes.alpha, 1e-4);
-    float widened = min(alpha + 0.5 * cosSin.y / max(cosSin.x, 1e-4), 1.0);
-    float normalisation = (alpha / widened) * (alpha / widened);
-    result += brdfSpecular(lobes, n, v, lr, alpha) * normalisation;
+    float spread = 0.5 * cosSin.y / max(cosSin.x, 1e-4);
+    float widened = min(sqrt(lobes.alpha * lobes.alpha + spread * spread), 1.0);
+    result += brdfSpecular(lobes, n, v, l, widened);
   }
   return result * radiance * irradiance;
 }

@@ -207,6 +207,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       const EnvironmentLight& light = drawn.lights[i];
       program.set(uniformElement("lightDirection", i).c_str(), light.direction);
       program.set(uniformElement("lightRadiance", i).c_str(), light.radiance);
+      program.set(uniformElement("lightAngularRadius", i).c_str(), light.angularRadius);
       program.set(uniformElement("lightCosSin", i).c_str(),
                   glm::vec2(std::cos(light.angularRadius), std::sin(light.angularRadius)));
     }
