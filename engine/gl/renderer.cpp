@@ -135,6 +135,9 @@ float Renderer::textureAnisotropy() const { return impl_->materialTextures.aniso
 void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width,
                       int height) {
   Impl& r = *impl_;
+  if (usesIrradianceCube(settings.mode) && settings.layer == FrameLayer::Radiance && r.irradiance.id() == 0)
+    throw Error(std::string(shadingModeName(settings.mode)) +
+                " mode: the environment stages have no irradiance cube (env/irradiance.exr)");
   // The lights modes: lights-shadowed without shadows is lights. The shadow maps are rendered here,
   // before the frame's target is bound, and only when a light's direction changed.
   const bool lightsMode = settings.mode == ShadingMode::Lights || settings.mode == ShadingMode::LightsShadowed;
@@ -172,9 +175,6 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   glBindTextureUnit(kTextureUnitLatLong, r.latLong.id());
   glBindTextureUnit(kTextureUnitSpecular, r.specular.id());
   glBindTextureUnit(kTextureUnitBrdfLut, r.brdfLut.id());
-  if (usesIrradianceCube(settings.mode) && settings.layer == FrameLayer::Radiance && r.irradiance.id() == 0)
-    throw Error(std::string(shadingModeName(settings.mode)) +
-                " mode: the environment stages have no irradiance cube (env/irradiance.exr)");
   glBindTextureUnit(kTextureUnitIrradiance, r.irradiance.id());
 
   if (settings.drawSky && settings.layer == FrameLayer::Radiance) {

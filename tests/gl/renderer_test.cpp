@@ -15,6 +15,7 @@
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/render_target.h"
 #include "gl/test_context.h"
+#include "support/error_capture.h"
 #include "support/bake_fixture.h"
 
 namespace iblkit {
@@ -190,6 +191,24 @@ TEST(Renderer, IrradianceModeMatchesTheCpuBruteForceIrradiance) {
     std::cout << "irradiance (rotation " << rotation << "): " << sphere.pixels << " pixels, max "
               << sphere.maxError << " mean " << sphere.meanError << '\n';
   }
+}
+
+// Stages without an irradiance cube (a bake folder without env/irradiance.exr) render every mode
+// but the two that need it, which refuse with one line before drawing anything.
+TEST(Renderer, IrradianceModesNeedTheCube) {
+  BakedScene bake = test::makeTestBake({.sphereMaterial = lambertWhite(), .rings = 4, .segments = 8});
+  bake.env.irradiance = CubeMap();
+  test::glContext();
+  Renderer renderer(bake);
+  RenderTarget target(kWidth, kHeight, 1);
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  FrameSettings settings;
+  settings.mode = ShadingMode::Sh;
+  EXPECT_NO_THROW(renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight));
+  settings.mode = ShadingMode::IrradianceAoBent;
+  EXPECT_EQ(test::errorMessage([&] { renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight); }),
+            "irradiance-ao-bent mode: the environment stages have no irradiance cube (env/irradiance.exr)");
+  checkGlErrors("after the refused frame");
 }
 
 // Under a peaked map (a small sun over a dim sky) `sh` and `irradiance` differ by the SH9
