@@ -284,6 +284,15 @@ relMSE, estimated from two independent halves, is at most )"
          << fixed(claim.bound, 4) << "</td><td class=" << (claim.holds ? "ok>yes" : "no>no") << "</td><td class=l>"
          << escape(claim.detail) << "</td></tr>\n";
   html << "</table>\n";
+  if (std::any_of(summary.claims.begin(), summary.claims.end(), [](const Claim& claim) {
+        return !claim.holds && claim.statement.find(std::string(": ") + kLightClaimMode + " mean FLIP") != std::string::npos;
+      }))
+    html << "<p class=why><b>Where the dominant lights lose to <code>" << kLightBaselineMode << "</code>:</b> compare the <code>"
+         << kLightClaimMode << "</code> heat maps with <code>" << kLightBaselineMode
+         << "</code>'s below. docs/report.md (\"The dominant lights measured\") says what they showed when these claims "
+            "were first measured: the suns' light bounced off the ground is missing on the bunny, the residual is shaded "
+            "without the PRT transfer where no sun is extracted, and the shadow map darkens the lone sphere's lit side "
+            "near the terminator.</p>\n";
   for (const Claim& claim : summary.claims) {
     if (claim.holds) continue;
     if (claim.statement.rfind("diffuse_sphere: sh mode mean relative error", 0) == 0)

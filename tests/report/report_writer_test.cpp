@@ -91,6 +91,15 @@ TEST(ReportWriter, KindsOfMapAreShownWithTheirMeans) {
             std::string::npos);
   EXPECT_NE(html.find("<tr><td class=l>bunny</td><td class=l>sh-ao</td><td>0.1000</td><td>&ndash;</td></tr>", table),
             std::string::npos);
+  // A light claim that fails is explained once, above the tables.
+  EXPECT_EQ(html.find("Where the dominant lights lose"), std::string::npos);  // no light claim here
+  summary.claims = {Claim{"bunny on sunny maps (sky): lights-shadowed mean FLIP at most 0.5 x full's on each map",
+                          0.6, 0.5, false, ""}};
+  writeReportHtml(htmlFile, summary);
+  EXPECT_NE(readText(htmlFile).find("Where the dominant lights lose to <code>full</code>"), std::string::npos);
+  summary.claims[0].holds = true;
+  writeReportHtml(htmlFile, summary);
+  EXPECT_EQ(readText(htmlFile).find("Where the dominant lights lose"), std::string::npos);
   // Without kinds, no table.
   writeReportHtml(htmlFile, summaryWithOneFailure());
   EXPECT_EQ(readText(htmlFile).find("By kind of map"), std::string::npos);
