@@ -114,8 +114,10 @@ std::string sharedConstants() {
                         {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
                         {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
                         {"kTextureUnitShadowCompare", kTextureUnitShadowCompare}});
-  text += intConstants("iblkit::kMaxEngineLights (engine/gl/light_constants.h)",
-                       {{"kMaxEngineLights", kMaxEngineLights}});
+  text += intConstants("iblkit::kMaxEngineLights, kBlockerSearchTaps, kPcfTaps (engine/gl/light_constants.h)",
+                       {{"kMaxEngineLights", kMaxEngineLights},
+                        {"kBlockerSearchTaps", kBlockerSearchTaps},
+                        {"kPcfTaps", kPcfTaps}});
   text += intConstants("iblkit::TextureSlot (core/texture.h)",
                        {{"kSlotBaseColor", int(kSlotBaseColor)},
                         {"kSlotMetallicRoughness", int(kSlotMetallicRoughness)},
