@@ -15,7 +15,9 @@ const float kValues[] = float[](
     kTextureUnitReference, kTextureUnitColorMap, kRelMseEpsilon, kAttributeTexcoord0, kAttributeTexcoord1,
     kAttributeTangent, kTextureUnitBaseColor, kTextureUnitMetallicRoughness, kTextureUnitNormal,
     kTextureUnitOcclusion, kTextureUnitEmissive, kSlotBaseColor, kSlotMetallicRoughness, kSlotNormal, kSlotOcclusion,
-    kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend);
+    kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend, kShadingModeLights,
+    kShadingModeLightsShadowed, kTextureUnitResidualSpecular, kTextureUnitShadowDepth, kTextureUnitShadowCompare,
+    kMaxEngineLights, kBlockerSearchTaps, kPcfTaps, kDeltaAlpha);
 
 void main() {
   int i = int(gl_FragCoord.x);
