@@ -213,9 +213,9 @@ int runHeadless(const Options& options) {
     if (unlit > 0.0 && full > 0.0)
       std::cout << "  full / unlit = " << std::setprecision(2) << full / unlit << '\n';
     const auto shadowed = std::find(modes.begin(), modes.end(), ShadingMode::LightsShadowed);
-    if (shadowed != modes.end() && settings.shadows) {
+    const int lights = drawnLightCount(bake.env, settings.lightCount);
+    if (shadowed != modes.end() && settings.shadows && lights > 0) {
       const double cached = times[std::size_t(shadowed - modes.begin())].cpuMs;
-      const int lights = drawnLightCount(bake.env, settings.lightCount);
       const FrameTimes fresh =
           benchmark(renderer, target, camera, settings, {ShadingMode::LightsShadowed}, options.bench, true).front();
       std::cout << "  lights-shadowed with its " << lights << " shadow map(s) of " << kShadowMapSize << "^2 rendered "
