@@ -32,6 +32,9 @@ EnvironmentStages readEnvironmentStages(const fs::path& folder, const BakeInputs
   env.sh9 = readSh9Json(requireBakeFile(folder / kBakeSh9File), &env.shWindowCutoff);
   env.specular = readSpecularCubeExr(requireBakeFile(folder / kBakeSpecularFile));
   env.brdfLut = readBrdfLutExr(requireBakeFile(folder / kBakeBrdfLutFile));
+  // The baker writes the irradiance cube unless its size is 0: without the file the cube is absent
+  // (size 0), and only the irradiance modes need it.
+  if (fs::exists(folder / kBakeIrradianceFile)) env.irradiance = readIrradianceCubeExr(folder / kBakeIrradianceFile);
   return env;
 }
 

@@ -32,7 +32,8 @@ struct EnvironmentStages {
   SpecularCube specular;
   // The DFG table (brdf_lut.h): R = A, G = B, B = E; NoV along x, roughness along y.
   Image brdfLut;
-  // Brute-force irradiance per texel (size 0: not computed; the viewer's in-memory stages skip it).
+  // Brute-force irradiance per texel, world space like sh9 (size 0: not computed): the engine's
+  // `irradiance` modes look it up along the normal.
   CubeMap irradiance;
   // Dominant lights (core/environment_lights.h), world space like sh9; empty when not computed.
   EnvironmentLights lights;
@@ -48,7 +49,7 @@ struct EnvironmentStages {
 void writeEnvironmentStages(const std::filesystem::path& folder, const EnvironmentStages& stages);
 
 // Reads them back from `folder`, with the lat-long map, its rotation and intensity from the bake's
-// `inputs`. Throws Error("<file>: ...") naming the file that is missing or invalid, and
+// `inputs`; env/irradiance.exr only where it exists (else irradiance.size is 0). Throws Error("<file>: ...") naming the file that is missing or invalid, and
 // Error("<folder>/bake.json: the bake has no environment stages ...") when `inputs` has none.
 EnvironmentStages readEnvironmentStages(const std::filesystem::path& folder, const BakeInputs& inputs);
 

@@ -24,9 +24,10 @@ struct EnvironmentStageOptions {
 };
 
 // iblkit-view's stages of a map switched to at run time or baked in memory: about 1 s of CPU for
-// a 512 x 256 map (the specular chain's samples and the table are a quarter of the baker's).
+// a 512 x 256 map (the specular chain's samples and the table are a quarter of the baker's), the
+// irradiance cube (the `irradiance` modes) at the baker's size, about 0.2 s of it (docs/benchmarks.md).
 inline constexpr EnvironmentStageOptions kViewerEnvironmentStages{
-    .shWindowCutoff = std::nullopt, .specularSamples = 256, .lutSize = 64, .lutSamples = 256, .irradianceCubeSize = 0};
+    .shWindowCutoff = std::nullopt, .specularSamples = 256, .lutSize = 64, .lutSamples = 256, .irradianceCubeSize = 16};
 
 // Seconds each stage took.
 struct EnvironmentStageTimes {

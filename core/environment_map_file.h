@@ -25,7 +25,9 @@ ProbeFormat parseProbeFormat(const std::string& name, const std::string& what = 
 // Reads `file` as a lat-long map (an OpenEXR file whose envmap attribute says cube is converted
 // from its cube faces), or converts a square mirror-ball / angular-map probe. Converted maps are
 // `latLongWidth` x latLongWidth/2 (0: twice the source's height, or 4x a cube face's size).
-// Bad input throws Error("<file>: <problem>"); NaN/negative pixels are repaired by the reader.
+// Bad input throws Error("<file>: <problem>"). NaN and Inf values become 0; negative ones (DWAB
+// ringing) are repaired keeping the map's integral (repairNegativeRadiance, after any conversion,
+// which sees them as stored); one warning naming the file says what moved.
 EnvironmentMap loadEnvironmentMap(const std::filesystem::path& file,
                                   ProbeFormat format = ProbeFormat::LatLong, int latLongWidth = 0);
 

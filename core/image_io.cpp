@@ -46,21 +46,37 @@ PixelRepairCounts countInvalidPixels(const Image& image) {
   return counts;
 }
 
+PixelRepairCounts repairNonFinitePixels(Image& image) {
+  PixelRepairCounts counts;
+  for (glm::vec4& pixel : image.pixels())
+    for (int c = 0; c < 4; ++c)
+      if (!std::isfinite(pixel[c])) {
+        ++(std::isnan(pixel[c]) ? counts.nan : counts.inf);
+        pixel[c] = 0.0f;
+      }
+  return counts;
+}
+
+std::string pixelRepairSummary(const PixelRepairCounts& counts) {
+  std::vector<std::string> parts;
+  if (counts.nan) parts.push_back(std::to_string(counts.nan) + " NaN");
+  if (counts.inf) parts.push_back(std::to_string(counts.inf) + " Inf");
+  if (counts.negative) parts.push_back(std::to_string(counts.negative) + " negative");
+  if (parts.empty()) return "";
+  std::string list = parts.front();
+  for (std::size_t i = 1; i < parts.size(); ++i) list += (i + 1 == parts.size() ? " and " : ", ") + parts[i];
+  const bool single = counts.nan + counts.inf + counts.negative == 1;
+  return list + (single ? " pixel value set to 0" : " pixel values set to 0");
+}
+
 PixelRepairCounts repairPixels(const std::filesystem::path& file, std::span<Image> images) {
   PixelRepairCounts counts;
   for (Image& image : images)
     for (glm::vec4& pixel : image.pixels())
       for (int c = 0; c < 4; ++c)
         if (countIfInvalid(pixel[c], counts)) pixel[c] = 0.0f;
-  std::vector<std::string> parts;
-  if (counts.nan) parts.push_back(std::to_string(counts.nan) + " NaN");
-  if (counts.inf) parts.push_back(std::to_string(counts.inf) + " Inf");
-  if (counts.negative) parts.push_back(std::to_string(counts.negative) + " negative");
-  if (parts.empty()) return counts;
-  std::string list = parts.front();
-  for (std::size_t i = 1; i < parts.size(); ++i) list += (i + 1 == parts.size() ? " and " : ", ") + parts[i];
-  const bool single = counts.nan + counts.inf + counts.negative == 1;
-  warn(file, list + (single ? " pixel value set to 0" : " pixel values set to 0"));
+  const std::string summary = pixelRepairSummary(counts);
+  if (!summary.empty()) warn(file, summary);
   return counts;
 }
 

@@ -3,7 +3,8 @@
 // Y), Radiance .hdr (RGBE, RLE), and 8-bit sRGB PNG through the tone curve.
 // Loaders check what they read: NaN, Inf and negative pixels are repaired (set to 0) with a
 // warning naming the file and the count, unless PixelRepair::Keep asks for the values as stored
-// (the scorer reports such values itself); anything unreadable throws Error("<file>: <problem>").
+// (the scorer reports such values itself; loadEnvironmentMap repairs negatives keeping the map's
+// energy instead, energy_preserving_repair.h); anything unreadable throws Error("<file>: <problem>").
 
 #include <cstddef>
 #include <cstdint>
@@ -84,6 +85,13 @@ struct PixelRepairCounts {
 PixelRepairCounts repairPixels(const std::filesystem::path& file, std::span<Image> images);
 // Counts what repairPixels would repair, changing nothing and warning nothing.
 PixelRepairCounts countInvalidPixels(const Image& image);
+// Sets NaN and infinite components to 0 and counts them (.negative stays 0), warning nothing:
+// the first step of loadEnvironmentMap, whose negative values are repaired keeping the map's
+// energy (energy_preserving_repair.h) rather than clamped.
+PixelRepairCounts repairNonFinitePixels(Image& image);
+// "3 NaN, 1 Inf and 2 negative pixel values set to 0" ("1 negative pixel value set to 0" for a
+// single one), or "" when the counts are all 0: the text of repairPixels' warning.
+std::string pixelRepairSummary(const PixelRepairCounts& counts);
 
 // The largest image a loader accepts: 2^28 pixels (16384 x 16384, 4 GiB as RGBA float). A header
 // claiming more is far more likely corrupt than real, and must not make us allocate it.

@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
   Options options;
   ReportSettings& settings = options.settings;
   // full-gltf-ao and full-both-ao run only on scenes with a glTF occlusion texture (report/case_modes.h).
-  settings.modes = {"mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full", "full-gltf-ao", "full-both-ao"};
+  settings.modes = {"mirror", "sh", "irradiance", "sh-ao", "sh-ao-bent", "prt", "full", "full-gltf-ao", "full-both-ao"};
   CLI::App app{"Scores every real-time mode against the path-traced reference", kProgram};
   app.add_option("scenes", options.scenes, "scene files (.json, .gltf, .glb)");
   app.add_option("--envs", options.environments, "environment map names (files ENV-DIR/NAME.exr) or paths")

@@ -121,6 +121,26 @@ std::vector<Claim> evaluateClaims(const std::vector<CaseResult>& cases) {
     if (!worst.empty()) claims.back().detail = "largest under " + worst + " (error beyond SH9 on 16x16-pixel blocks)";
   }
 
+  if (hasMode(cases, "diffuse_sphere", "sh") && hasMode(cases, "diffuse_sphere", "irradiance")) {
+    // SH9 against the brute-force irradiance cube on the same sphere: the cube has no truncation.
+    int shFailures = 0, cubeFailures = 0;
+    const double sh = meanOverEnvironments(cases, "diffuse_sphere", "sh", Metric::MeanRelativeError, &shFailures);
+    const double cube =
+        meanOverEnvironments(cases, "diffuse_sphere", "irradiance", Metric::MeanRelativeError, &cubeFailures);
+    addClaim(claims, cases, "diffuse_sphere",
+             "diffuse_sphere: irradiance mode (the cube) mean relative error < sh mode's (" + format(cube) + " < " +
+                 format(sh) + ")",
+             cube, sh, false, true, shFailures + cubeFailures);
+    std::string perMap;
+    for (const CaseResult& result : cases) {
+      if (result.scene != "diffuse_sphere") continue;
+      const double mapSh = meanOverEnvironments({result}, "diffuse_sphere", "sh", Metric::MeanRelativeError);
+      const double mapCube = meanOverEnvironments({result}, "diffuse_sphere", "irradiance", Metric::MeanRelativeError);
+      perMap += "; " + result.environment + " " + format(mapCube) + " vs " + format(mapSh);
+    }
+    claims.back().detail += perMap;
+  }
+
   const char* ladder[] = {"sh", "sh-ao", "sh-ao-bent", "prt"};
   for (int rung = 0; rung + 1 < 4; ++rung) {
     if (!hasMode(cases, "bunny", ladder[rung]) || !hasMode(cases, "bunny", ladder[rung + 1])) continue;

@@ -2,6 +2,8 @@
 // What the demo's numbers must show (issue 6), checked by the report itself on its own results:
 //  - the lone mirror sphere's `mirror` frames: mean FLIP at most 0.02, averaged over environments;
 //  - the lone diffuse sphere's `sh` frames: mean relative error at most 3%, averaged likewise;
+//  - the lone diffuse sphere's `irradiance` frames (the brute-force cube): mean relative error below
+//    the `sh` frames', averaged likewise (the detail lists both per map);
 //  - the white bunny on its ground: the approximation ladder sh > sh-ao > sh-ao-bent >= prt in
 //    mean FLIP averaged over environments, each rung a claim of its own.
 // A claim whose scene or modes are not in the report is left out; a claim whose frames failed

@@ -59,11 +59,16 @@ layout(binding = kTextureUnitLatLong) uniform sampler2D latLongMap;
 uniform vec2 latLongRotation;  // cos, sin of -(scene + extra rotation)
 uniform float latLongIntensity;
 layout(binding = kTextureUnitSpecular) uniform samplerCube specularCube;
-uniform vec2 specularRotation;  // cos, sin of -(extra rotation)
+uniform vec2 specularRotation;  // cos, sin of -(extra rotation); the irradiance cube's too
 uniform float specularLevels;   // number of levels n; level i has roughness i / (n - 1)
 layout(binding = kTextureUnitBrdfLut) uniform sampler2D brdfLut;
+// The brute-force irradiance cube (env/irradiance.exr), world space like the specular chain.
+layout(binding = kTextureUnitIrradiance) uniform samplerCube irradianceCube;
 
 layout(location = 0) out vec4 fragColor;
+
+// Irradiance along the unit direction n from the cube, bilinear between its texel centres.
+vec3 irradianceFromCube(vec3 n) { return textureLod(irradianceCube, rotateAboutY(n, specularRotation), 0.0).rgb; }
 
 // The shading normal on the viewer's side, as iblkit-trace chooses it (docs/reference-tracer.md):
 // `n` (the interpolated or normal-mapped normal) turned towards the viewer, or the geometric
@@ -162,6 +167,10 @@ void main() {
     radiance = latLongIntensity * sampleLatLongBilinear(latLongMap, latLongUv(rotateAboutY(reflect(-v, n), latLongRotation)));
   } else if (mode == kShadingModeSh) {
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, n);
+  } else if (mode == kShadingModeIrradiance) {
+    radiance = albedo / kPi * irradianceFromCube(n);
+  } else if (mode == kShadingModeIrradianceAoBent) {
+    radiance = albedo / kPi * irradianceFromCube(normalize(vertexIn.bentNormal)) * ao;
   } else if (mode == kShadingModeShAo) {
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, n) * ao;
   } else if (mode == kShadingModeShAoBent) {

@@ -15,9 +15,10 @@ const float kValues[] = float[](
     kTextureUnitReference, kTextureUnitColorMap, kRelMseEpsilon, kAttributeTexcoord0, kAttributeTexcoord1,
     kAttributeTangent, kTextureUnitBaseColor, kTextureUnitMetallicRoughness, kTextureUnitNormal,
     kTextureUnitOcclusion, kTextureUnitEmissive, kSlotBaseColor, kSlotMetallicRoughness, kSlotNormal, kSlotOcclusion,
-    kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend, kShadingModeLights,
-    kShadingModeLightsShadowed, kTextureUnitResidualSpecular, kTextureUnitShadowDepth, kTextureUnitShadowCompare,
-    kMaxEngineLights, kBlockerSearchTaps, kPcfTaps, kDeltaAlpha);
+    kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend, kShadingModeIrradiance,
+    kShadingModeIrradianceAoBent, kTextureUnitIrradiance, kShadingModeLights, kShadingModeLightsShadowed,
+    kTextureUnitResidualSpecular, kTextureUnitShadowDepth, kTextureUnitShadowCompare, kMaxEngineLights,
+    kBlockerSearchTaps, kPcfTaps, kDeltaAlpha);
 
 void main() {
   int i = int(gl_FragCoord.x);

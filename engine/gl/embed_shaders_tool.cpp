@@ -71,6 +71,8 @@ std::string sharedConstants() {
                        {{"kShadingModeUnlit", int(ShadingMode::Unlit)},
                         {"kShadingModeMirror", int(ShadingMode::Mirror)},
                         {"kShadingModeSh", int(ShadingMode::Sh)},
+                        {"kShadingModeIrradiance", int(ShadingMode::Irradiance)},
+                        {"kShadingModeIrradianceAoBent", int(ShadingMode::IrradianceAoBent)},
                         {"kShadingModeShAo", int(ShadingMode::ShAo)},
                         {"kShadingModeShAoBent", int(ShadingMode::ShAoBent)},
                         {"kShadingModePrt", int(ShadingMode::Prt)},
@@ -111,6 +113,7 @@ std::string sharedConstants() {
                         {"kTextureUnitNormal", kTextureUnitNormal},
                         {"kTextureUnitOcclusion", kTextureUnitOcclusion},
                         {"kTextureUnitEmissive", kTextureUnitEmissive},
+                        {"kTextureUnitIrradiance", kTextureUnitIrradiance},
                         {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
                         {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
                         {"kTextureUnitShadowCompare", kTextureUnitShadowCompare}});

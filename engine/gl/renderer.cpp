@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "core/error.h"
 #include "core/sh_rotation.h"
 #include "engine/gl/drawn_lights.h"
 #include "engine/gl/light_constants.h"
@@ -29,6 +30,10 @@ glm::vec2 inverseRotation(float degrees) {
   return {std::cos(radians), std::sin(radians)};
 }
 
+bool usesIrradianceCube(ShadingMode mode) {
+  return mode == ShadingMode::Irradiance || mode == ShadingMode::IrradianceAoBent;
+}
+
 }  // namespace
 
 float envRotationFromBake(const EnvironmentStages& env, std::optional<float> degrees) {
@@ -45,6 +50,7 @@ struct Renderer::Impl {
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
   GLuint emptyVertexArray = 0;  // the fullscreen triangle needs a bound VAO but no attributes
   GlTexture latLong, specular, brdfLut, residualSpecular;
+  GlTexture irradiance;  // the irradiance modes' cube; id 0 when the stages have none
   SphericalHarmonics9 sh9;
   // The lights modes' inputs (drawn_lights.h): the stages without the images.
   EnvironmentStages lightStages;
@@ -88,6 +94,7 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
   impl_->latLong = uploadLatLong(env.latLong);
   impl_->specular = uploadCubeLevels(env.specular.levels);
   impl_->brdfLut = uploadTable(env.brdfLut);
+  impl_->irradiance = env.irradiance.size > 0 ? uploadCubeLevels({env.irradiance}) : GlTexture();
   impl_->sh9 = env.sh9;
   impl_->rotationDegrees = env.rotationDegrees;
   impl_->intensity = env.intensity;
@@ -126,6 +133,9 @@ float Renderer::textureAnisotropy() const { return impl_->materialTextures.aniso
 void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width,
                       int height) {
   Impl& r = *impl_;
+  if (usesIrradianceCube(settings.mode) && settings.layer == FrameLayer::Radiance && r.irradiance.id() == 0)
+    throw Error(std::string(shadingModeName(settings.mode)) +
+                " mode: the environment stages have no irradiance cube (env/irradiance.exr)");
   // The lights modes: lights-shadowed without shadows is lights. The shadow maps are rendered here,
   // before the frame's target is bound, and only when a light's direction changed.
   const bool lightsMode = settings.mode == ShadingMode::Lights || settings.mode == ShadingMode::LightsShadowed;
@@ -163,6 +173,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   glBindTextureUnit(kTextureUnitLatLong, r.latLong.id());
   glBindTextureUnit(kTextureUnitSpecular, r.specular.id());
   glBindTextureUnit(kTextureUnitBrdfLut, r.brdfLut.id());
+  glBindTextureUnit(kTextureUnitIrradiance, r.irradiance.id());
 
   if (settings.drawSky && settings.layer == FrameLayer::Radiance) {
     const ShaderProgram& sky = r.skyProgram;

@@ -64,7 +64,8 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Replaces the environment (sky, SH9, specular chain, DFG table); e.g. from computeEnvironmentStages.
+  // Replaces the environment (sky, SH9, specular chain, DFG table, irradiance cube when it has
+  // one); e.g. from computeEnvironmentStages.
   // PRT keeps working: the transfer vectors do not depend on the lighting.
   void setEnvironment(const EnvironmentStages& env);
   // Overrides material `materialIndex` (an index into materials()). Throws std::out_of_range.
@@ -88,7 +89,7 @@ class Renderer {
   // Renders into `framebuffer` (0 = the default one) over the viewport (0, 0, width, height): clears
   // colour and depth, draws the sky (if settings.drawSky) and every mesh. Afterwards `framebuffer`
   // stays bound and seamless cube filtering on; program, vertex array and depth test are back to
-  // 0 / off.
+  // 0 / off. Throws Error for an irradiance mode when the environment has no irradiance cube.
   void render(const Camera& camera, const FrameSettings& settings, GLuint framebuffer, int width, int height);
 
   // Draws the linear float 2D `texture` into the viewport (x, y, w, h) of the currently bound

@@ -11,6 +11,10 @@ enum class ShadingMode {
   Unlit,     // base colour only (the cost floor for benchmarks)
   Mirror,    // the lat-long environment along reflect(-v, n): a perfect mirror, no visibility
   Sh,        // SH9 irradiance along n times albedo / pi, no visibility
+  // The brute-force irradiance cube (env/irradiance.exr) in place of SH9: the glTF Sample Viewer's
+  // diffuse, without SH9's truncation.
+  Irradiance,        // the irradiance cube along n times albedo / pi, no visibility
+  IrradianceAoBent,  // the irradiance cube along the baked bent normal, times the ambient occlusion
   ShAo,      // Sh times the baked ambient occlusion
   ShAoBent,  // SH9 irradiance along the baked bent normal, times the ambient occlusion
   Prt,       // baked SH transfer dotted with the environment's SH9 radiance, times albedo / pi
@@ -32,12 +36,14 @@ enum class ShadingMode {
 // the order of the enum: the ladder from the cost floor to the full model.
 inline constexpr EnumName<ShadingMode> kShadingModeNames[] = {
     {ShadingMode::Unlit, "unlit"}, {ShadingMode::Mirror, "mirror"},       {ShadingMode::Sh, "sh"},
+    {ShadingMode::Irradiance, "irradiance"}, {ShadingMode::IrradianceAoBent, "irradiance-ao-bent"},
     {ShadingMode::ShAo, "sh-ao"},  {ShadingMode::ShAoBent, "sh-ao-bent"}, {ShadingMode::Prt, "prt"},
     {ShadingMode::Full, "full"},   {ShadingMode::Lights, "lights"},       {ShadingMode::LightsShadowed, "lights-shadowed"},
     {ShadingMode::FullGltfAo, "full-gltf-ao"}, {ShadingMode::FullBothAo, "full-both-ao"}};
 
 // Every mode, in the order of the enum (for benchmarks, tests and the viewer's mode menu).
 inline constexpr ShadingMode kShadingModes[] = {ShadingMode::Unlit, ShadingMode::Mirror,   ShadingMode::Sh,
+                                                ShadingMode::Irradiance, ShadingMode::IrradianceAoBent,
                                                 ShadingMode::ShAo,  ShadingMode::ShAoBent, ShadingMode::Prt,
                                                 ShadingMode::Full,  ShadingMode::Lights,   ShadingMode::LightsShadowed,
                                                 ShadingMode::FullGltfAo, ShadingMode::FullBothAo};

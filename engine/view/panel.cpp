@@ -16,7 +16,7 @@ namespace iblkit {
 
 const std::vector<std::string>& viewerHelpLines() {
   static const std::vector<std::string> lines = {
-      "1..9            shading mode: unlit, mirror, sh, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed",
+      "1..9            shading mode: unlit, mirror, sh, irradiance, irradiance-ao-bent, sh-ao, sh-ao-bent, prt, full",
       "[ ]             exposure -/+ 0.5 stop",
       "left drag       orbit (arrow keys too)",
       "right/mid drag  pan (shift + arrow keys too)",

@@ -193,7 +193,8 @@ class Viewer {
   }
 
   void handleKey(int key, int mods) {
-    if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + int(std::size(kShadingModes)))
+    // Keys 1 to 9 choose the first nine modes (the panel's menu has them all).
+    if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9 && key - GLFW_KEY_1 < int(std::size(kShadingModes)))
       settings_.mode = kShadingModes[key - GLFW_KEY_1];
     switch (key) {
       case GLFW_KEY_ESCAPE:

@@ -64,6 +64,15 @@ TEST(BakedScene, ReadsBackWhatTheBakerWrote) {
   EXPECT_EQ(bake.env.latLong.at(5, 7), original.env.latLong.at(5, 7));
   EXPECT_EQ(bake.env.rotationDegrees, 30.0f);
   EXPECT_EQ(bake.env.intensity, 2.0f);
+  ASSERT_EQ(bake.env.irradiance.size, original.env.irradiance.size);
+  EXPECT_EQ(bake.env.irradiance.faces[4].pixels(), original.env.irradiance.faces[4].pixels());
+}
+
+// env/irradiance.exr is optional: without it the stages have no irradiance cube (size 0).
+TEST(BakedScene, ABakeWithoutTheIrradianceCubeReadsWithout) {
+  const fs::path folder = writeBakeFolder("bake_no_cube", test::makeTestBake({.rings = 8, .segments = 16}));
+  ASSERT_TRUE(fs::remove(folder / kBakeIrradianceFile));
+  EXPECT_EQ(readBakeFolder(folder).env.irradiance.size, 0);
 }
 
 TEST(BakedScene, MissingOrIncompleteOrWrongVersionIsAnErrorNamingTheFile) {

@@ -1,8 +1,9 @@
 // The env/ files of a bake folder read back what was written: the specular cube chain with its
-// roughness per level and the DFG table; and the specular reader's errors.
+// roughness per level, the irradiance cube and the DFG table; and the readers' errors.
 #include <gtest/gtest.h>
 
 #include "bakefile/brdf_lut_exr.h"
+#include "bakefile/irradiance_exr.h"
 #include "bakefile/specular_exr.h"
 #include "core/image_io.h"
 #include "support/error_capture.h"
@@ -46,6 +47,22 @@ TEST(SpecularExr, AnExrWithoutTheRoughnessListIsNotABakedCube) {
   writeExr(file, cubeToExrStrip(patternCube(2, 0)), {.pixelType = PixelType::Float, .envmap = EnvmapLayout::Cube});
   EXPECT_EQ(test::errorMessage([&] { readSpecularCubeExr(file); }),
             file.string() + ": no iblkit:roughnessPerLevel attribute (not an iblkit-bake cube)");
+}
+
+TEST(IrradianceExr, ReadsBackTheCube) {
+  const CubeMap cube = patternCube(4, 0);
+  const fs::path file = test::scratchDir() / "irradiance_round_trip.exr";
+  writeIrradianceCubeExr(file, cube);
+  const CubeMap read = readIrradianceCubeExr(file);
+  ASSERT_EQ(read.size, 4);
+  for (int face = 0; face < 6; ++face) EXPECT_EQ(read.faces[face].pixels(), cube.faces[face].pixels()) << face;
+}
+
+TEST(IrradianceExr, AFileThatIsNoCubeIsRefused) {
+  const fs::path file = test::scratchDir() / "flat.exr";
+  writeExr(file, Image(4, 24), {.pixelType = PixelType::Float});
+  EXPECT_EQ(test::errorMessage([&] { readIrradianceCubeExr(file); }),
+            file.string() + ": not an OpenEXR cube map (envmap attribute)");
 }
 
 TEST(BrdfLutExr, ReadsBackTheTable) {

@@ -70,7 +70,10 @@ constexpr const char* kSize = " --width 128 --height 96";
 TEST(IblkitView, RendersEveryModeToExrWithCoverageAlpha) {
   const fs::path dir = test::scratchDir();
   const Fixture fixture = makeFixture(dir);
-  for (const char* mode : {"unlit", "mirror", "sh", "sh-ao", "sh-ao-bent", "prt", "full", "lights", "lights-shadowed"}) {
+  // The irradiance modes read the bake's env/irradiance.exr.
+  for (const char* mode :
+       {"unlit", "mirror", "sh", "irradiance", "irradiance-ao-bent", "sh-ao", "sh-ao-bent", "prt", "full", "lights",
+         "lights-shadowed"}) {
     const fs::path out = dir / (std::string("view_") + mode + ".exr");
     fs::remove(out);
     const ProgramRun r = run("iblkit-view", quoted(fixture.bake) + " --headless -o " + quoted(out) + kSize +
@@ -206,8 +209,9 @@ TEST(IblkitView, BakesASceneFileInMemory) {
   std::ofstream(scene)
       << R"({"models": [{"file": "scene.glb"}], "environment": {"file": "sky.exr"}, "ground": {"enabled": false}})";
   const fs::path fromScene = dir / "from_scene.exr";
+  // The irradiance mode: the in-memory stages compute the irradiance cube too.
   const ProgramRun r = run("iblkit-view", quoted(scene) + " --headless -o " + quoted(fromScene) + kSize +
-                                              " --mode sh --ao-rays 8");
+                                              " --mode irradiance --ao-rays 8");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find(scene.string() +
                           ": a scene, not a bake folder: baking it in memory (8 visibility rays per vertex)"),
@@ -327,7 +331,8 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
 
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --mode shiny",
                 "iblkit-view: --mode: unknown shading mode 'shiny' (expected one of unlit, mirror, sh, "
-                "sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed, full-gltf-ao, full-both-ao, all)",
+                "irradiance, irradiance-ao-bent, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed, full-gltf-ao, "
+                "full-both-ao, all)",
                 out, 2);
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --texture-slots normal,albedo",
                 "iblkit-view: --texture-slots: unknown texture slot 'albedo' (expected one of base-color, "

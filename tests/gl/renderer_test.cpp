@@ -6,13 +6,16 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 
+#include "core/environment_sh.h"
 #include "core/sh_rotation.h"
 #include "core/tone_curve.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/render_target.h"
 #include "gl/test_context.h"
+#include "support/error_capture.h"
 #include "support/bake_fixture.h"
 
 namespace iblkit {
@@ -132,13 +135,23 @@ TEST(Renderer, MirrorSphereMatchesTheCpuReflectionLookup) { expectMirrorMatches(
 
 TEST(Renderer, EnvironmentRotationTurnsEveryLookup) { expectMirrorMatches(90.0f); }
 
-// `sh` against SphericalHarmonics9::irradiance at the exact normal, for a Lambert sphere; and with
-// the environment turned, against the rotated coefficients.
-TEST(Renderer, DiffuseSphereMatchesTheCpuSh9Irradiance) {
+// E(n) of `environment` by brute force (every texel a light) at one normal.
+glm::vec3 bruteForceIrradianceAt(const EnvironmentMap& environment, const glm::vec3& n) {
+  return bruteForceIrradiance(environment, std::span<const glm::vec3>(&n, 1)).front();
+}
+
+Material lambertWhite() {
   Material white;
   white.baseColor = glm::vec3(0.8f, 0.7f, 0.6f);
   white.metallic = 0.0f;
   white.specular = 0.0f;
+  return white;
+}
+
+// `sh` against SphericalHarmonics9::irradiance at the exact normal, for a Lambert sphere; and with
+// the environment turned, against the rotated coefficients.
+TEST(Renderer, DiffuseSphereMatchesTheCpuSh9Irradiance) {
+  const Material white = lambertWhite();
   const BakedScene bake = test::makeTestBake({.sphereMaterial = white});
   for (float rotation : {0.0f, 60.0f}) {
     const SphericalHarmonics9 sh = rotateShAboutY(bake.env.sh9, rotation);
@@ -154,6 +167,111 @@ TEST(Renderer, DiffuseSphereMatchesTheCpuSh9Irradiance) {
     std::cout << "sh (rotation " << rotation << "): " << sphere.pixels << " pixels, max " << sphere.maxError
               << " mean " << sphere.meanError << '\n';
   }
+}
+
+// `irradiance` on a Lambert sphere against the brute-force irradiance at the exact normal: what is
+// left is the cube's resolution (16 x 16 texels a face, bilinear between their centres), and with
+// the environment turned, the same lookup turned.
+TEST(Renderer, IrradianceModeMatchesTheCpuBruteForceIrradiance) {
+  const Material white = lambertWhite();
+  const BakedScene bake = test::makeTestBake({.sphereMaterial = white});
+  ASSERT_EQ(bake.env.irradiance.size, 16);
+  for (float rotation : {0.0f, 60.0f}) {
+    EnvironmentMap environment = test::testSky();
+    environment.setRotationDegrees(rotation);
+    FrameSettings settings;
+    settings.mode = ShadingMode::Irradiance;
+    settings.envRotationDegrees = rotation;
+    const Comparison sphere = compareSphere(bake, settings, [&](const glm::vec3& point, const glm::vec3&) {
+      return white.baseColor / glm::pi<float>() * bruteForceIrradianceAt(environment, glm::normalize(point));
+    });
+    EXPECT_GT(sphere.pixels, 1500);
+    EXPECT_LT(sphere.maxError, 0.01f) << "rotation " << rotation;
+    EXPECT_LT(sphere.meanError, 0.001f) << "rotation " << rotation;
+    std::cout << "irradiance (rotation " << rotation << "): " << sphere.pixels << " pixels, max "
+              << sphere.maxError << " mean " << sphere.meanError << '\n';
+  }
+}
+
+// Stages without an irradiance cube (a bake folder without env/irradiance.exr) render every mode
+// but the two that need it, which refuse with one line before drawing anything.
+TEST(Renderer, IrradianceModesNeedTheCube) {
+  BakedScene bake = test::makeTestBake({.sphereMaterial = lambertWhite(), .rings = 4, .segments = 8});
+  bake.env.irradiance = CubeMap();
+  test::glContext();
+  Renderer renderer(bake);
+  RenderTarget target(kWidth, kHeight, 1);
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  FrameSettings settings;
+  settings.mode = ShadingMode::Sh;
+  EXPECT_NO_THROW(renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight));
+  settings.mode = ShadingMode::IrradianceAoBent;
+  EXPECT_EQ(test::errorMessage([&] { renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight); }),
+            "irradiance-ao-bent mode: the environment stages have no irradiance cube (env/irradiance.exr)");
+  checkGlErrors("after the refused frame");
+}
+
+// Under a peaked map (a small sun over a dim sky) `sh` and `irradiance` differ by the SH9
+// truncation: on every interior pixel the GPU's difference of the two modes is the CPU's
+// albedo / pi (E_brute(n) - E_SH9(n)), within the cube's resolution; and the truncation is large.
+TEST(Renderer, ShAndIrradianceModesDifferByTheSh9Truncation) {
+  const glm::vec3 sun = glm::normalize(glm::vec3(0.4f, 0.7f, 0.6f));
+  const EnvironmentMap peaked =
+      EnvironmentMap::fromImage(latLongFromRadiance(128, 64, 2,
+                                                    [&](const glm::vec3& d) {
+                                                      return glm::dot(d, sun) > std::cos(glm::radians(4.0f))
+                                                                 ? glm::vec3(400.0f, 380.0f, 300.0f)
+                                                                 : glm::vec3(0.2f, 0.3f, 0.5f);
+                                                    }),
+                                "peaked sky");
+  const Material white = lambertWhite();
+  BakedScene bake = test::makeTestBake({.sphereMaterial = white});
+  bake.env = computeEnvironmentStages(peaked, {.shWindowCutoff = std::nullopt,
+                                               .specularSamples = 16,
+                                               .lutSize = 8,
+                                               .lutSamples = 16,
+                                               .irradianceCubeSize = 16});
+  test::glContext();
+  Renderer renderer(bake);
+  RenderTarget target(kWidth, kHeight, 1);
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  auto render = [&](ShadingMode mode) {
+    FrameSettings settings;
+    settings.mode = mode;
+    renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+    return target.readColor();
+  };
+  const Image sh = render(ShadingMode::Sh), irradiance = render(ShadingMode::Irradiance);
+  checkGlErrors("sh and irradiance");
+  const glm::vec3 brightest = white.baseColor / glm::pi<float>() * bruteForceIrradianceAt(peaked, sun);
+  std::vector<glm::ivec2> interior;
+  std::vector<glm::vec3> normals;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      if (interiorPixel(camera, x, y)) {
+        interior.emplace_back(x, y);
+        normals.push_back(glm::normalize(*hitUnitSphere(camera, glm::vec2(x, y) + 0.5f)));
+      }
+  const std::vector<glm::vec3> exact = bruteForceIrradiance(peaked, normals);
+  float maxDeviation = 0.0f;
+  double deviation = 0.0, truncation = 0.0, radiance = 0.0;
+  for (std::size_t i = 0; i < interior.size(); ++i) {
+    const int x = interior[i].x, y = interior[i].y;
+    const glm::vec3 cpu = white.baseColor / glm::pi<float>() * (exact[i] - bake.env.sh9.irradiance(normals[i]));
+    const glm::vec3 gpu = glm::vec3(irradiance.at(x, y)) - glm::vec3(sh.at(x, y));
+    maxDeviation = std::max(maxDeviation, glm::length(gpu - cpu) / glm::length(brightest));
+    deviation += glm::length(gpu - cpu);
+    truncation += glm::length(cpu);
+    radiance += glm::length(glm::vec3(irradiance.at(x, y)));
+  }
+  EXPECT_GT(interior.size(), 1500u);
+  // The cube's resolution error is largest at the sun's terminator, where E has a kink.
+  EXPECT_LT(maxDeviation, 0.015f);
+  EXPECT_LT(deviation, 0.1 * truncation);
+  EXPECT_GT(truncation / radiance, 0.03);  // the truncation matters on this map
+  std::cout << "sh vs irradiance under a 4-degree sun: " << interior.size() << " pixels, mean |E - E_SH9| / E "
+            << truncation / radiance << "; the GPU's difference off the CPU's by " << deviation / truncation
+            << " of it on average, at most " << maxDeviation << " of the brightest pixel\n";
 }
 
 // Every mode gives finite radiance everywhere and light on every object pixel (the sphere touches

@@ -40,6 +40,7 @@ const std::vector<float> kCppValues = {
     float(kSlotBaseColor),        float(kSlotMetallicRoughness), float(kSlotNormal),
     float(kSlotOcclusion),        float(kSlotEmissive),         float(kAllTextureSlots),
     float(AlphaMode::Opaque),     float(AlphaMode::Mask),       float(AlphaMode::Blend),
+    float(ShadingMode::Irradiance), float(ShadingMode::IrradianceAoBent), float(kTextureUnitIrradiance),
     float(ShadingMode::Lights),   float(ShadingMode::LightsShadowed), float(kTextureUnitResidualSpecular),
     float(kTextureUnitShadowDepth), float(kTextureUnitShadowCompare), float(kMaxEngineLights),
     float(kBlockerSearchTaps),    float(kPcfTaps),              kDeltaAlpha};
@@ -92,6 +93,9 @@ TEST(SharedConstants, SamplersReadTheTextureUnitsTheCppBinds) {
   const ShaderProgram mesh("mesh.vert", "mesh.frag");
   EXPECT_EQ(samplerUnit(mesh, "specularCube"), GLint(kTextureUnitSpecular));
   EXPECT_EQ(samplerUnit(mesh, "brdfLut"), GLint(kTextureUnitBrdfLut));
+  const ShaderProgram irradiance("mesh.vert", "mesh.frag",
+                                 "#define SHADING_MODE " + std::to_string(int(ShadingMode::Irradiance)));
+  EXPECT_EQ(samplerUnit(irradiance, "irradianceCube"), GLint(kTextureUnitIrradiance));
   // The material's slots are read in the textured variant (renderer.cpp's TEXTURED 1); the glTF
   // occlusion by the modes that use it.
   const ShaderProgram textured("mesh.vert", "mesh.frag",

@@ -73,6 +73,20 @@ TEST(ReportClaims, SphereBoundsAndFailedFrames) {
   EXPECT_EQ(claims[0].detail, "averaged over 2 environments; 1 frames failed");
 }
 
+// SH9 against the irradiance cube on the diffuse sphere: the mean over the maps decides, the detail
+// lists each map's pair.
+TEST(ReportClaims, IrradianceCubeAgainstSh9OnTheDiffuseSphere) {
+  const std::vector<CaseResult> cases = {caseOf("diffuse_sphere", "sky", {{"sh", 0.07}, {"irradiance", 0.01}}),
+                                         caseOf("diffuse_sphere", "city", {{"sh", 0.01}, {"irradiance", 0.012}})};
+  const std::vector<Claim> claims = evaluateClaims(cases);
+  ASSERT_EQ(claims.size(), 3u);
+  EXPECT_EQ(claims[2].statement, "diffuse_sphere: irradiance mode (the cube) mean relative error < sh mode's (0.011 < 0.04)");
+  EXPECT_TRUE(claims[2].holds);
+  EXPECT_EQ(claims[2].detail, "averaged over 2 environments; sky 0.01 vs 0.07; city 0.012 vs 0.01");
+  const std::vector<CaseResult> worse = {caseOf("diffuse_sphere", "city", {{"sh", 0.01}, {"irradiance", 0.012}})};
+  EXPECT_FALSE(evaluateClaims(worse)[2].holds);
+}
+
 TEST(ReportClaims, ClaimsWithoutTheirSceneOrModeAreLeftOut) {
   EXPECT_TRUE(evaluateClaims({caseOf("suzi", "sky", {{"sh", 0.1}})}).empty());
   EXPECT_TRUE(evaluateClaims({caseOf("bunny", "sky", {{"full", 0.1}})}).empty());

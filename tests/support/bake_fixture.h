@@ -58,7 +58,7 @@ inline BakedScene makeTestBake(const TestBakeOptions& options) {
   settings.rayCount = options.aoRays;
   attachVisibilityAttributes(scene.meshes, bakeVertexVisibility(scene.meshes, settings));
   bake.env = computeEnvironmentStages(
-      testSky(), {.shWindowCutoff = std::nullopt, .specularSamples = 64, .lutSize = 32, .lutSamples = 64, .irradianceCubeSize = 0});
+      testSky(), {.shWindowCutoff = std::nullopt, .specularSamples = 64, .lutSize = 32, .lutSamples = 64, .irradianceCubeSize = 16});
   return bake;
 }
 
