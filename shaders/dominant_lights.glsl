@@ -22,12 +22,13 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 posit
   vec3 irradiance = sphericalHarmonics9Irradiance(residualShRadiance, bent) * ao;
   vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, visibilityConeAxis(n, ao), irradiance);
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, specularWeight, specularColor);
+  mat2 rotation = shadowed ? shadowTapRotation() : mat2(1.0);
   for (int i = 0; i < lightCount; ++i) {
     vec3 l = lightDirection[i];
     vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightAngularRadius[i], lightCosSin[i]);
     if (shadowed && maxComponent(lit) > 0.0) {
       vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
-      lit *= shadowVisibilityPcss(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
+      lit *= shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4), rotation);
     }
     radiance += lit;
   }

@@ -17,8 +17,6 @@ uniform vec4 shadowExtent[kMaxEngineLights];
 uniform vec3 shadowRight[kMaxEngineLights];
 uniform vec3 shadowUp[kMaxEngineLights];
 
-const int kBlockerSearchTaps = 12;
-const int kPcfTaps = 16;
 // Bias, in texels of the map: a constant depth offset, and the receiver moved along its geometric
 // normal (docs/engine.md "Shadows" says how they were chosen).
 const float kShadowDepthBiasTexels = 1.0;
@@ -31,34 +29,49 @@ float interleavedGradientNoise(vec2 pixel) {
   return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
-// Tap i of n on the unit disk, uniform in area: the golden-angle (Vogel 1979) spiral turned by
-// `rotation` radians.
-vec2 vogelDiskTap(int i, int n, float rotation) {
-  float r = sqrt((float(i) + 0.5) / float(n));
-  float theta = float(i) * 2.39996323 + rotation;
-  return r * vec2(cos(theta), sin(theta));
+// The taps on the unit disk, uniform in area: golden-angle (Vogel 1979) spirals of
+// kBlockerSearchTaps and kPcfTaps points, tap i at radius sqrt((i + 0.5) / n) and angle
+// i 2.39996 (vogelDiskTaps in shadow_maps.cpp), turned per pixel by a 2 x 2 rotation.
+uniform vec2 blockerSearchTaps[kBlockerSearchTaps];
+uniform vec2 pcfTaps[kPcfTaps];
+
+// The per-pixel rotation of the taps, from interleavedGradientNoise.
+mat2 shadowTapRotation() {
+  float angle = 2.0 * kPi * interleavedGradientNoise(gl_FragCoord.xy);
+  float c = cos(angle), s = sin(angle);
+  return mat2(c, s, -s, c);
 }
 
-// The fraction of light i's disk visible from `position` (geometric normal g, facing the light:
-// g.l > 0) with angular radius sigma (tanSigma), by PCSS.
-float shadowVisibilityPcss(int i, vec3 position, vec3 g, vec3 l, float tanSigma) {
+// A receiver in light i's map: its (u, v, depth) moved along its geometric normal, and its plane's
+// depth change per unit of uv (Isidoro 2006), the slope clamped at 84 degrees.
+struct ShadowReceiver {
+  vec3 s;
+  vec2 depthPerUv;
+};
+
+ShadowReceiver shadowReceiver(int i, vec3 position, vec3 g, vec3 l) {
+  vec4 extent = shadowExtent[i];
+  ShadowReceiver r;
+  r.s = (shadowFromWorld[i] * vec4(position + g * (kShadowNormalOffsetTexels * extent.w), 1.0)).xyz;
+  float gl = max(dot(g, l), 0.1);
+  r.depthPerUv = vec2(extent.x * dot(g, shadowRight[i]), extent.y * dot(g, shadowUp[i])) / (gl * extent.z);
+  return r;
+}
+
+// PCSS (Fernando 2005) at receiver r of light i, angular radius sigma (tanSigma), the taps turned by
+// `rotation`: the fraction of the disk visible.
+float pcssVisibility(int i, ShadowReceiver r, float tanSigma, mat2 rotation) {
   vec4 extent = shadowExtent[i];
   float texel = extent.w;
-  vec3 p = position + g * (kShadowNormalOffsetTexels * texel);
-  vec3 s = (shadowFromWorld[i] * vec4(p, 1.0)).xyz;
-  // The receiver's plane: depth change per unit of uv (Isidoro 2006), its slope clamped at 84 degrees.
-  float gl = max(dot(g, l), 0.1);
-  vec2 depthPerUv = vec2(extent.x * dot(g, shadowRight[i]), extent.y * dot(g, shadowUp[i])) / (gl * extent.z);
-  float receiver = s.z - kShadowDepthBiasTexels * texel / extent.z;
-  float rotation = 2.0 * kPi * interleavedGradientNoise(gl_FragCoord.xy);
+  float receiver = r.s.z - kShadowDepthBiasTexels * texel / extent.z;
   vec2 uvPerWorld = 1.0 / extent.xy;
   // Blocker search over the largest penumbra a blocker could cast here (one at depth 0).
-  float searchWorld = max(s.z * extent.z * tanSigma, 1.5 * texel);
+  float searchWorld = max(r.s.z * extent.z * tanSigma, 1.5 * texel);
   float blockers = 0.0, blockerDepth = 0.0;
   for (int k = 0; k < kBlockerSearchTaps; ++k) {
-    vec2 offset = vogelDiskTap(k, kBlockerSearchTaps, rotation) * searchWorld * uvPerWorld;
-    float d = texture(shadowDepths, vec3(s.xy + offset, float(i))).r;
-    if (d < receiver + dot(depthPerUv, offset)) {
+    vec2 offset = (rotation * blockerSearchTaps[k]) * searchWorld * uvPerWorld;
+    float d = texture(shadowDepths, vec3(r.s.xy + offset, float(i))).r;
+    if (d < receiver + dot(r.depthPerUv, offset)) {
       blockers += 1.0;
       blockerDepth += d;
     }
@@ -66,11 +79,19 @@ float shadowVisibilityPcss(int i, vec3 position, vec3 g, vec3 l, float tanSigma)
   if (blockers == 0.0) return 1.0;
   blockerDepth /= blockers;
   // The penumbra's half width at this receiver; at least a texel (plain PCF where it is sharp).
-  float filterWorld = max((s.z - blockerDepth) * extent.z * tanSigma, texel);
+  float filterWorld = max((r.s.z - blockerDepth) * extent.z * tanSigma, texel);
   float lit = 0.0;
   for (int k = 0; k < kPcfTaps; ++k) {
-    vec2 offset = vogelDiskTap(k, kPcfTaps, rotation) * filterWorld * uvPerWorld;
-    lit += texture(shadowCompare, vec4(s.xy + offset, float(i), receiver + dot(depthPerUv, offset)));
+    vec2 offset = (rotation * pcfTaps[k]) * filterWorld * uvPerWorld;
+    lit += texture(shadowCompare, vec4(r.s.xy + offset, float(i), receiver + dot(r.depthPerUv, offset)));
   }
   return lit / float(kPcfTaps);
+}
+
+// The fraction of light i's disk visible from `position` (geometric normal g, facing the light:
+// g.l > 0), angular radius sigma (tanSigma). On llvmpipe every pixel pays the whole of it: a
+// software rasteriser runs both sides of every branch (masked), so the early return without
+// blockers saves nothing there (docs/engine.md "Shadows", the measured cost).
+float shadowVisibility(int i, vec3 position, vec3 g, vec3 l, float tanSigma, mat2 rotation) {
+  return pcssVisibility(i, shadowReceiver(i, position, g, l), tanSigma, rotation);
 }

@@ -113,12 +113,14 @@ std::string sharedConstants() {
                         {"kTextureUnitNormal", kTextureUnitNormal},
                         {"kTextureUnitOcclusion", kTextureUnitOcclusion},
                         {"kTextureUnitEmissive", kTextureUnitEmissive},
+                        {"kTextureUnitIrradiance", kTextureUnitIrradiance},
                         {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
                         {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
-                        {"kTextureUnitShadowCompare", kTextureUnitShadowCompare},
-                         {"kTextureUnitIrradiance", kTextureUnitIrradiance}});
-  text += intConstants("iblkit::kMaxEngineLights (engine/gl/light_constants.h)",
-                       {{"kMaxEngineLights", kMaxEngineLights}});
+                        {"kTextureUnitShadowCompare", kTextureUnitShadowCompare}});
+  text += intConstants("iblkit::kMaxEngineLights, kBlockerSearchTaps, kPcfTaps (engine/gl/light_constants.h)",
+                       {{"kMaxEngineLights", kMaxEngineLights},
+                        {"kBlockerSearchTaps", kBlockerSearchTaps},
+                        {"kPcfTaps", kPcfTaps}});
   text += intConstants("iblkit::TextureSlot (core/texture.h)",
                        {{"kSlotBaseColor", int(kSlotBaseColor)},
                         {"kSlotMetallicRoughness", int(kSlotMetallicRoughness)},

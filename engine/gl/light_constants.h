@@ -11,4 +11,8 @@ inline constexpr int kMaxEngineLights = 4;
 // Side of each light's square shadow map, in texels (docs/engine.md "Shadows").
 inline constexpr int kShadowMapSize = 2048;
 
+// Taps of the shadow lookups (shaders/shadow.glsl): PCSS's blocker search and its PCF.
+inline constexpr int kBlockerSearchTaps = 6;
+inline constexpr int kPcfTaps = 8;
+
 }  // namespace iblkit

@@ -112,9 +112,7 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
   invalidateShadowMaps();
 }
 
-const EnvironmentLights& Renderer::environmentLights() const { return impl_->lightStages.lights; }
-
-const SphericalHarmonics9& Renderer::environmentSh9() const { return impl_->sh9; }
+const EnvironmentStages& Renderer::lightStages() const { return impl_->lightStages; }
 
 int Renderer::shadowMapRenders() const { return impl_->shadowMaps ? impl_->shadowMaps->renderCount() : 0; }
 

@@ -75,10 +75,10 @@ class Renderer {
   const Scene& scene() const;
   // The anisotropy the trilinear texture samplers use (1 where the driver offers none).
   float textureAnisotropy() const;
-  // The environment as given to the constructor or the last setEnvironment (its suns: the
-  // viewer's light list; its lat-long map is not kept).
-  const EnvironmentLights& environmentLights() const;
-  const SphericalHarmonics9& environmentSh9() const;
+  // What the lights modes draw from the environment given to the constructor or the last
+  // setEnvironment (drawn_lights.h): its sh9, lights and residualSh9; residualSpecular has one
+  // empty level when the residual's chain was uploaded, none otherwise; no images.
+  const EnvironmentStages& lightStages() const;
   // How many times the shadow maps were rendered (ShadowMaps::renderCount; 0 before the first
   // shadowed frame), and their side in texels.
   int shadowMapRenders() const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/gl/light_constants.h"
 #include "engine/gl/texture_unit.h"
 
 namespace iblkit {
@@ -115,7 +116,21 @@ void ShadowMaps::bind() const {
   glBindSampler(kTextureUnitShadowCompare, compareSampler_);
 }
 
+std::vector<glm::vec2> vogelDiskTaps(int n) {
+  std::vector<glm::vec2> taps;
+  for (int i = 0; i < n; ++i) {
+    const float r = std::sqrt((float(i) + 0.5f) / float(n)), theta = float(i) * 2.39996323f;
+    taps.emplace_back(r * std::cos(theta), r * std::sin(theta));
+  }
+  return taps;
+}
+
 void ShadowMaps::setUniforms(const ShaderProgram& program) const {
+  static const std::vector<glm::vec2> blockerTaps = vogelDiskTaps(kBlockerSearchTaps), pcfTaps = vogelDiskTaps(kPcfTaps);
+  for (int k = 0; k < kBlockerSearchTaps; ++k)
+    program.set(uniformElement("blockerSearchTaps", std::size_t(k)).c_str(), blockerTaps[std::size_t(k)]);
+  for (int k = 0; k < kPcfTaps; ++k)
+    program.set(uniformElement("pcfTaps", std::size_t(k)).c_str(), pcfTaps[std::size_t(k)]);
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     program.set(uniformElement("shadowFromWorld", i).c_str(), frames_[i].shadowFromWorld);
     program.set(uniformElement("shadowExtent", i).c_str(), frames_[i].extent);

@@ -30,6 +30,10 @@ struct ShadowFrame {
 // real depths). Empty meshes: a unit box at the origin.
 ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const glm::vec3& towardsLight, int size);
 
+// n points on the unit disk, uniform in area: the golden-angle spiral of Vogel 1979 (tap i at
+// radius sqrt((i + 0.5) / n), angle i x 2.39996 radians), the shadow lookups' taps.
+std::vector<glm::vec2> vogelDiskTaps(int n);
+
 class ShadowMaps {
  public:
   // `size`: the side of each map in texels. Needs a current OpenGL 4.5 context.

@@ -21,12 +21,12 @@ enum TextureUnit : unsigned {
   kTextureUnitNormal = 9,
   kTextureUnitOcclusion = 10,
   kTextureUnitEmissive = 11,
+  kTextureUnitIrradiance = 12,  // mesh.frag: the brute-force irradiance cube (the irradiance modes)
   // mesh.frag's lights modes: the residual's specular chain, and the shadow maps (one depth texture
   // array, bound twice: raw depths for the blocker search, compare mode for PCF).
-  kTextureUnitResidualSpecular = 12,
-  kTextureUnitShadowDepth = 13,
-  kTextureUnitShadowCompare = 14,
-  kTextureUnitIrradiance = 15,  // mesh.frag: the brute-force irradiance cube (the irradiance modes)
+  kTextureUnitResidualSpecular = 13,
+  kTextureUnitShadowDepth = 14,
+  kTextureUnitShadowCompare = 15,
 };
 
 }  // namespace iblkit

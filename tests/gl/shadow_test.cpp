@@ -246,6 +246,67 @@ TEST_F(ShadowTest, NoAcneOnTheLitGroundFromHighAndGrazingSun) {
   }
 }
 
+// The maps depend on the lights only: frames from other cameras render none; a turned environment
+// (the light's direction moves) and a new environment render them again; unshadowed modes none.
+TEST_F(ShadowTest, ShadowMapsAreRenderedOnlyWhenALightChanges) {
+  const SunScene s = writeSunScene("renders", sunDirection(-90.0f, 55.0f), 1.0f);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  RenderTarget target(64, 36, 1);
+  FrameSettings settings;
+  settings.mode = ShadingMode::Lights;
+  Camera camera = sceneCamera(bake.scene, 16.0f / 9.0f);
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  EXPECT_EQ(renderer.shadowMapRenders(), 0);
+  settings.mode = ShadingMode::LightsShadowed;
+  for (int frame = 0; frame < 3; ++frame) {
+    camera.position += glm::vec3(0.3f, 0.1f, -0.2f);
+    renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  }
+  EXPECT_EQ(renderer.shadowMapRenders(), 1);
+  settings.envRotationDegrees = 30.0f;
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  EXPECT_EQ(renderer.shadowMapRenders(), 2);
+  settings.shadows = false;  // drawn as lights
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  settings.shadows = true;
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  EXPECT_EQ(renderer.shadowMapRenders(), 2);
+  renderer.setEnvironment(bake.env);
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  EXPECT_EQ(renderer.shadowMapRenders(), 3);
+  checkGlErrors("shadow map renders");
+}
+
+// K below the number of suns: a sun not drawn as a light keeps its diffuse light in the residual's
+// SH9 (SH is linear). With K = 0 the open ground, far from the sphere, gets the map's SH9 irradiance
+// (sky + sun) from the residual alone: within 2% of K = 1's residual + disk light.
+TEST_F(ShadowTest, SunsNotDrawnStayInTheResidual) {
+  const SunScene s = writeSunScene("k0", sunDirection(-90.0f, 55.0f), 1.0f);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  FrameSettings one, none;
+  one.mode = none.mode = ShadingMode::Lights;
+  one.drawSky = none.drawSky = false;
+  none.lightCount = 0;
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  RenderTarget target(kWidth, kHeight, 1);
+  renderer.render(camera, one, target.framebuffer(), kWidth, kHeight);
+  const Image withLight = target.readColor();
+  renderer.render(camera, none, target.framebuffer(), kWidth, kHeight);
+  const Image withoutLight = target.readColor();
+  // The ground's front corner region (bottom-left of the frame): far from the sphere, open sky.
+  float a = 0.0f, b = 0.0f;
+  for (int y = kHeight - 20; y < kHeight - 5; ++y)
+    for (int x = 5; x < 40; ++x) {
+      a += luminance(glm::vec3(withLight.at(x, y)));
+      b += luminance(glm::vec3(withoutLight.at(x, y)));
+    }
+  std::cout << "open ground, K = 0 over K = 1: " << b / a << '\n';
+  EXPECT_GT(a, 0.0f);
+  EXPECT_NEAR(b / a, 1.0f, 0.02f);
+}
+
 // A wall (a 1 m double-sided square standing on the ground, facing the camera) with the sun behind
 // it, 20 degrees up: its shadow starts at its base. The ground 1 to 20 cm in front of the base, in
 // the umbra, must be dark (a peter-panning gap would leave a lit line along the base).
