@@ -3,7 +3,7 @@
 //   iblkit-view OUTDIR|SCENE --headless -o IMAGE [--width W] [--height H] [--mode M]
 //               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
 //               [--bench N] [--no-sky] [--ao-rays N] [--texture-slots LIST | --no-textures]
-//               [--anisotropy A]
+//               [--anisotropy A] [--lights K] [--no-shadows]
 //
 // OUTDIR is an iblkit-bake folder; a .json/.gltf/.glb scene is baked in memory first. -o .exr
 // writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
@@ -30,8 +30,10 @@
 #include "core/image_io.h"
 #include "core/scene_environment.h"
 #include "core/usage_error.h"
+#include "engine/gl/drawn_lights.h"
 #include "engine/gl/gl_debug.h"
 #include "engine/gl/headless_context.h"
+#include "engine/gl/light_constants.h"
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
 #include "engine/gl/texture_slot_names.h"
@@ -62,6 +64,8 @@ struct Options {
   std::string textureSlots = "all";  // --texture-slots; --no-textures is "none"
   bool noTextures = false;
   float anisotropy = kDefaultTextureAnisotropy;
+  int lights = -1;  // --lights K; < 0: all the suns
+  bool noShadows = false;
   // The window viewer's.
   std::filesystem::path envDir, environment, reference, screenshot;
   std::string compare = "split";
@@ -108,9 +112,11 @@ struct FrameTimes {
 // turn, so that load from other processes weighs on all modes alike. CPU time runs from the first
 // GL call to glFinish; GPU time is a GL_TIME_ELAPSED query around the frame (llvmpipe's is not
 // meaningful: it renders when glFinish asks).
+// `newShadowMaps`: every frame renders the shadow maps again (their cost; otherwise they are
+// rendered once, the camera does not move them).
 std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, const Camera& camera,
                                   const FrameSettings& settings, const std::vector<ShadingMode>& modes,
-                                  int frames) {
+                                  int frames, bool newShadowMaps = false) {
   std::vector<std::vector<double>> cpu(modes.size()), gpu(modes.size());
   GLuint query = 0;
   glCreateQueries(GL_TIME_ELAPSED, 1, &query);
@@ -118,6 +124,7 @@ std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, cons
     for (std::size_t m = 0; m < modes.size(); ++m) {
       FrameSettings modeSettings = settings;
       modeSettings.mode = modes[m];
+      if (newShadowMaps) renderer.invalidateShadowMaps();
       const auto start = std::chrono::steady_clock::now();
       glBeginQuery(GL_TIME_ELAPSED, query);
       renderer.render(camera, modeSettings, target.framebuffer(), target.width(), target.height());
@@ -167,6 +174,8 @@ int runHeadless(const Options& options) {
   settings.drawSky = !options.noSky;
   settings.sampleShading = options.sampleShading;
   settings.textureSlots = options.noTextures ? 0u : parseTextureSlots(options.textureSlots);
+  settings.lightCount = options.lights;
+  settings.shadows = !options.noShadows;
 
   const BakedScene bake = loadOrBakeScene(options.input, inMemoryBake(options.aoRays));
   // No image may replace the bake folder's files, the scene, a model or the map.
@@ -195,7 +204,7 @@ int runHeadless(const Options& options) {
     const std::vector<FrameTimes> times = benchmark(renderer, target, camera, settings, modes, options.bench);
     double unlit = 0.0, full = 0.0;
     for (std::size_t m = 0; m < modes.size(); ++m) {
-      std::cout << std::fixed << std::setprecision(2) << "  " << std::left << std::setw(11)
+      std::cout << std::fixed << std::setprecision(2) << "  " << std::left << std::setw(15)
                 << shadingModeName(modes[m]) << " cpu " << times[m].cpuMs << " ms  gpu " << times[m].gpuMs
                 << " ms\n";
       if (modes[m] == ShadingMode::Unlit) unlit = times[m].cpuMs;
@@ -203,6 +212,16 @@ int runHeadless(const Options& options) {
     }
     if (unlit > 0.0 && full > 0.0)
       std::cout << "  full / unlit = " << std::setprecision(2) << full / unlit << '\n';
+    const auto shadowed = std::find(modes.begin(), modes.end(), ShadingMode::LightsShadowed);
+    const int lights = drawnLightCount(bake.env, settings.lightCount);
+    if (shadowed != modes.end() && settings.shadows && lights > 0) {
+      const double cached = times[std::size_t(shadowed - modes.begin())].cpuMs;
+      const FrameTimes fresh =
+          benchmark(renderer, target, camera, settings, {ShadingMode::LightsShadowed}, options.bench, true).front();
+      std::cout << "  lights-shadowed with its " << lights << " shadow map(s) of " << kShadowMapSize << "^2 rendered "
+                << "again each frame: cpu " << fresh.cpuMs << " ms (the maps: " << fresh.cpuMs - cached << " ms)\n";
+      if (full > 0.0) std::cout << "  lights-shadowed / full = " << cached / full << '\n';
+    }
     if (options.output.empty()) return 0;
   }
 
@@ -248,6 +267,8 @@ int runWindow(const Options& options) {
   viewer.noSky = options.noSky;
   viewer.textureSlots = options.noTextures ? 0u : parseTextureSlots(options.textureSlots);
   viewer.anisotropy = options.anisotropy;
+  viewer.lightCount = options.lights;
+  viewer.shadows = !options.noShadows;
   viewer.loadScene = [aoRays = options.aoRays](const fs::path& input) {
     return loadOrBakeScene(input, inMemoryBake(aoRays));
   };
@@ -318,6 +339,11 @@ int main(int argc, char** argv) {
                  "maximum anisotropy of the trilinear texture samplers (1: isotropic; clamped to the driver's)")
       ->check(CLI::Range(1.0f, 16.0f))
       ->capture_default_str();
+  app.add_option("--lights", options.lights,
+                 "lights and lights-shadowed modes: draw the K brightest suns as lights, the others stay in the "
+                 "residual's SH9 (default: all, at most " + std::to_string(kMaxEngineLights) + ")")
+      ->check(CLI::Range(0, kMaxEngineLights));
+  app.add_flag("--no-shadows", options.noShadows, "lights-shadowed draws its lights unshadowed (as lights)");
   app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex when baking a scene in memory")
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();

@@ -8,10 +8,12 @@
 
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "report/frame_scores.h"
+#include "report/map_kind.h"
 #include "report/report_settings.h"
 #include "report/stage_cache.h"
 
@@ -28,6 +30,10 @@ struct ModeResult {
 struct CaseResult {
   std::string scene, environment;  // names (file stems)
   std::filesystem::path sceneFile, environmentFile;
+  // The environment's kind and the shares it was told from (map_kind.h); set by the program,
+  // once per map. The claims per kind of map skip a case without one.
+  std::optional<MapKind> mapKind;
+  MapConcentration concentration;
   double bakeSeconds = 0.0, traceSeconds = 0.0;
   int referenceSpp = 0;
   double referenceRelMse = 0.0;  // estimated from the two halves

@@ -85,6 +85,102 @@ void addClaim(std::vector<Claim>& claims, const std::vector<CaseResult>& cases, 
   claims.push_back(claim);
 }
 
+const ModeResult* findMode(const CaseResult& result, const std::string& mode) {
+  for (const ModeResult& modeResult : result.modes)
+    if (modeResult.mode == mode) return &modeResult;
+  return nullptr;
+}
+
+// The cases of `kind` where both the light mode and full were run (scored or failed).
+std::vector<const CaseResult*> casesOfKind(const std::vector<CaseResult>& cases, MapKind kind,
+                                           const std::string& scene = {}) {
+  std::vector<const CaseResult*> selected;
+  for (const CaseResult& result : cases)
+    if (result.mapKind == kind && (scene.empty() || result.scene == scene) && findMode(result, kLightClaimMode) &&
+        findMode(result, kLightBaselineMode))
+      selected.push_back(&result);
+  return selected;
+}
+
+std::string mapNames(const std::vector<const CaseResult*>& cases) {
+  std::vector<std::string> names;
+  for (const CaseResult* result : cases)
+    if (std::find(names.begin(), names.end(), result->environment) == names.end()) names.push_back(result->environment);
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+// One claim over the light mode's cases of one kind: `value` of each case (NaN when it cannot be
+// measured) must be at most `bound`; the claim measures the largest value. Its detail gives each
+// case's two FLIPs, or for more than kListedCases cases the largest one's.
+constexpr std::size_t kListedCases = 4;
+
+template <class Value>
+void addLargestClaim(std::vector<Claim>& claims, const std::vector<const CaseResult*>& selected,
+                     const std::string& statement, double bound, Value value) {
+  if (selected.empty()) return;
+  Claim claim;
+  claim.statement = statement;
+  claim.bound = bound;
+  claim.measured = -std::numeric_limits<double>::infinity();
+  int unmeasured = 0;
+  std::string worst;
+  for (const CaseResult* result : selected) {
+    const ModeResult& light = *findMode(*result, kLightClaimMode);
+    const ModeResult& full = *findMode(*result, kLightBaselineMode);
+    std::string text = result->scene + " under " + result->environment + ": ";
+    double caseValue = std::numeric_limits<double>::quiet_NaN();
+    if (!light.failure.empty() || !full.failure.empty()) {
+      text += "frame failed";
+    } else {
+      caseValue = value(light.scores.meanFlip, full.scores.meanFlip);
+      text += format(light.scores.meanFlip) + " against full's " + format(full.scores.meanFlip);
+    }
+    if (!std::isfinite(caseValue)) ++unmeasured;
+    else if (caseValue > claim.measured) {
+      claim.measured = caseValue;
+      worst = text;
+    }
+    if (selected.size() <= kListedCases) claim.detail += (claim.detail.empty() ? "" : "; ") + text;
+  }
+  if (selected.size() > kListedCases)
+    claim.detail = "largest: " + (worst.empty() ? "none" : worst) + "; over " + std::to_string(selected.size()) + " cases";
+  if (unmeasured > 0) {
+    claim.measured = std::numeric_limits<double>::quiet_NaN();
+    if (selected.size() > kListedCases) claim.detail += "; " + std::to_string(unmeasured) + " not measured";
+  }
+  claim.holds = unmeasured == 0 && claim.measured <= bound;
+  claims.push_back(claim);
+}
+
+// The claims per kind of map: the light mode against full (report_claims.h).
+void addLightClaims(std::vector<Claim>& claims, const std::vector<CaseResult>& cases) {
+  const std::string light = kLightClaimMode, full = kLightBaselineMode;
+  for (const auto& [kind, name] : kMapKindNames) {
+    const std::string kindName(name);
+    if (kind != MapKind::Soft) {
+      const std::vector<const CaseResult*> bunny = casesOfKind(cases, kind, "bunny");
+      addLargestClaim(claims, bunny,
+                      "bunny on " + kindName + " maps (" + mapNames(bunny) + "): " + light +
+                          " mean FLIP at most " + format(kLightFlipRatioBound) + " x " + full + "'s on each map",
+                      kLightFlipRatioBound, [](double lightFlip, double fullFlip) {
+                        return fullFlip > 0.0 ? lightFlip / fullFlip : std::numeric_limits<double>::quiet_NaN();
+                      });
+      const std::vector<const CaseResult*> sphere = casesOfKind(cases, kind, "diffuse_sphere");
+      addLargestClaim(claims, sphere,
+                      "diffuse_sphere on " + kindName + " maps (" + mapNames(sphere) + "): " + light +
+                          " mean FLIP <= " + format(kLightDiffuseFlipBound) + " on each map",
+                      kLightDiffuseFlipBound, [](double lightFlip, double) { return lightFlip; });
+    }
+    const std::vector<const CaseResult*> every = casesOfKind(cases, kind);
+    addLargestClaim(claims, every,
+                    "every scene on " + kindName + " maps (" + mapNames(every) + "): " + light +
+                        " mean FLIP at most " + full + "'s + " + format(kLightNoWorseMargin),
+                    kLightNoWorseMargin, [](double lightFlip, double fullFlip) { return lightFlip - fullFlip; });
+  }
+}
+
 }  // namespace
 
 std::vector<Claim> evaluateClaims(const std::vector<CaseResult>& cases) {
@@ -153,6 +249,7 @@ std::vector<Claim> evaluateClaims(const std::vector<CaseResult>& cases) {
                  " (" + format(upper) + (strict ? " > " : " >= ") + format(lower) + ")",
              upper, lower, true, strict, upperFailures + lowerFailures);
   }
+  addLightClaims(claims, cases);
   return claims;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -61,6 +62,73 @@ const ModeResult* findMode(const CaseResult& result, const std::string& mode) {
   return nullptr;
 }
 
+std::string kindName(const CaseResult& result) {
+  return result.mapKind ? std::string(mapKindName(*result.mapKind)) : std::string();
+}
+
+// The scene's cases under maps of `kind`.
+std::vector<const CaseResult*> casesOfKind(const std::vector<const CaseResult*>& sceneCases, MapKind kind) {
+  std::vector<const CaseResult*> selected;
+  for (const CaseResult* result : sceneCases)
+    if (result->mapKind == kind) selected.push_back(result);
+  return selected;
+}
+
+// The mean FLIP of `mode` over `cases`; NaN when one of them failed or none scored it.
+double meanFlip(const std::vector<const CaseResult*>& cases, const std::string& mode) {
+  double sum = 0.0;
+  int count = 0;
+  for (const CaseResult* result : cases) {
+    const ModeResult* modeResult = findMode(*result, mode);
+    if (!modeResult) continue;
+    if (!modeResult->failure.empty()) return std::numeric_limits<double>::quiet_NaN();
+    sum += modeResult->scores.meanFlip;
+    ++count;
+  }
+  return count > 0 ? sum / count : std::numeric_limits<double>::quiet_NaN();
+}
+
+// One table per report: for each scene, every mode's mean FLIP averaged over the maps of each
+// kind, so that the diffuse terms (SH9, the irradiance cube) and the dominant lights stand side
+// by side per kind of lighting.
+std::string kindTable(const ReportSummary& summary, const std::vector<std::string>& scenes) {
+  std::vector<MapKind> kinds;
+  for (const auto& [kind, name] : kMapKindNames)
+    if (std::any_of(summary.cases.begin(), summary.cases.end(),
+                    [&](const CaseResult& result) { return result.mapKind == kind; }))
+      kinds.push_back(kind);
+  if (kinds.empty()) return {};
+  std::ostringstream html;
+  html << "<h2>By kind of map</h2>\n<p class=small>Mean FLIP of each mode averaged over the maps of each kind "
+          "(docs/report.md \"Kinds of map\": sunny, a sun holding a large share of the map's energy; studio, a few "
+          "bright sources a few degrees wide; soft, neither).</p>\n<table><tr><th class=l>scene</th><th class=l>mode</th>";
+  for (const MapKind kind : kinds) {
+    std::vector<std::string> names;
+    for (const CaseResult& result : summary.cases)
+      if (result.mapKind == kind && std::find(names.begin(), names.end(), result.environment) == names.end())
+        names.push_back(result.environment);
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+    html << "<th>" << mapKindName(kind) << "<br><span class=small>" << escape(list) << "</span></th>";
+  }
+  html << "</tr>\n";
+  for (const std::string& scene : scenes) {
+    std::vector<const CaseResult*> sceneCases;
+    for (const CaseResult& result : summary.cases)
+      if (result.scene == scene) sceneCases.push_back(&result);
+    for (const std::string& mode : summary.modes) {
+      if (std::none_of(sceneCases.begin(), sceneCases.end(),
+                       [&](const CaseResult* result) { return findMode(*result, mode) != nullptr; }))
+        continue;
+      html << "<tr><td class=l>" << scene << "</td><td class=l>" << mode << "</td>";
+      for (const MapKind kind : kinds) html << "<td>" << fixed(meanFlip(casesOfKind(sceneCases, kind), mode), 4) << "</td>";
+      html << "</tr>\n";
+    }
+  }
+  html << "</table>\n";
+  return html.str();
+}
+
 }  // namespace
 
 void writeReportJson(const fs::path& file, const ReportSummary& summary) {
@@ -88,6 +156,9 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                   {"environment", result.environment},
                   {"sceneFile", result.sceneFile.string()},
                   {"environmentFile", result.environmentFile.string()},
+                  {"mapKind", result.mapKind ? json(kindName(result)) : json()},
+                  {"mapSunShare", number(result.concentration.sunShare)},
+                  {"mapSourceShare", number(result.concentration.sourceShare)},
                   {"bakeSeconds", result.bakeSeconds},
                   {"traceSeconds", result.traceSeconds},
                   {"reference", {{"spp", result.referenceSpp},
@@ -213,6 +284,15 @@ relMSE, estimated from two independent halves, is at most )"
          << fixed(claim.bound, 4) << "</td><td class=" << (claim.holds ? "ok>yes" : "no>no") << "</td><td class=l>"
          << escape(claim.detail) << "</td></tr>\n";
   html << "</table>\n";
+  if (std::any_of(summary.claims.begin(), summary.claims.end(), [](const Claim& claim) {
+        return !claim.holds && claim.statement.find(std::string(": ") + kLightClaimMode + " mean FLIP") != std::string::npos;
+      }))
+    html << "<p class=why><b>Where the dominant lights lose to <code>" << kLightBaselineMode << "</code>:</b> compare the <code>"
+         << kLightClaimMode << "</code> heat maps with <code>" << kLightBaselineMode
+         << "</code>'s below. docs/report.md (\"The dominant lights measured\") says what they showed when these claims "
+            "were first measured: the suns' light bounced off the ground is missing on the bunny, the residual is shaded "
+            "without the PRT transfer where no sun is extracted, and the shadow map darkens the lone sphere's lit side "
+            "near the terminator.</p>\n";
   for (const Claim& claim : summary.claims) {
     if (claim.holds) continue;
     if (claim.statement.rfind("diffuse_sphere: sh mode mean relative error", 0) == 0)
@@ -231,6 +311,7 @@ relMSE, estimated from two independent halves, is at most )"
               "(docs/report.md).</p>\n";
   }
 
+  html << kindTable(summary, scenesInOrder(summary.cases));
   for (const std::string& scene : scenesInOrder(summary.cases)) {
     html << "<h2>" << scene << "</h2>\n";
     std::vector<const CaseResult*> sceneCases;
@@ -238,7 +319,8 @@ relMSE, estimated from two independent halves, is at most )"
       if (result.scene == scene) sceneCases.push_back(&result);
     html << "<p class=small>Mean FLIP / relMSE / mean relative error per mode and environment; the last column"
             " averages over the environments.</p>\n<table><tr><th class=l>mode</th>";
-    for (const CaseResult* result : sceneCases) html << "<th>" << result->environment << "</th>";
+    for (const CaseResult* result : sceneCases)
+      html << "<th>" << result->environment << "<br><span class=small>" << kindName(*result) << "</span></th>";
     html << "<th>mean</th><th>frame (ms)</th></tr>\n";
     // The modes some case of this scene scored: the glTF occlusion modes only where a material has
     // an occlusion texture (case_modes.h).
@@ -270,14 +352,18 @@ relMSE, estimated from two independent halves, is at most )"
            << "</td></tr>\n";
     }
     html << "</table>\n" << ladderSvg(summary.cases, scene, sceneModes);
-    html << "<table><tr><th class=l>environment</th><th>bake (s)</th><th>trace (s)</th><th>reference spp</th>"
+    html << "<table><tr><th class=l>environment</th>"
+            "<th title=\"the map's kind (docs/report.md): energy share of its brightest 1e-4 and 1% of the sphere\">"
+            "kind (sun share / source share)</th><th>bake (s)</th><th>trace (s)</th><th>reference spp</th>"
             "<th>reference relMSE (estimated)</th><th>converged</th>"
             "<th title=\"mean relative error of SH9 irradiance against brute force on the scored pixels' normals: "
             "the least an sh frame can have on a convex Lambert object\">SH9's own error</th>"
             "<th title=\"what the sh frame gets wrong beyond SH9's own error, on 16x16-pixel blocks\">sh beyond SH9</th>"
             "</tr>\n";
     for (const CaseResult* result : sceneCases)
-      html << "<tr><td class=l>" << result->environment << "</td><td>" << fixed(result->bakeSeconds, 1) << "</td><td>"
+      html << "<tr><td class=l>" << result->environment << "</td><td>" << kindName(*result) << " ("
+           << fixed(result->concentration.sunShare, 2) << " / " << fixed(result->concentration.sourceShare, 2)
+           << ")</td><td>" << fixed(result->bakeSeconds, 1) << "</td><td>"
            << fixed(result->traceSeconds, 1) << "</td><td>" << result->referenceSpp << "</td><td>"
            << fixed(result->referenceRelMse, 5) << "</td><td class=" << (result->referenceConverged ? "ok>yes" : "no>no")
            << "</td><td>" << fixed(100.0 * result->sh9Truncation, 1) << "%</td><td>"

@@ -7,6 +7,8 @@
 #include "sh9.glsl"
 #include "brdf.glsl"
 #include "material.glsl"
+#include "lights.glsl"
+#include "shadow.glsl"
 
 in VertexData {
   vec3 position;
@@ -76,7 +78,10 @@ vec3 shadingNormal(vec3 n, vec3 geometric, vec3 v) {
   return dot(n, v) > 0.0 ? n : geometric;
 }
 
-vec3 fullMaterialModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 bent, vec3 irradiance) {
+// The material model with the split-sum specular read from `prefilteredCube` (the map's chain, or
+// the residual's in the lights modes).
+vec3 fullMaterialModelWith(samplerCube prefilteredCube, SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 bent,
+                           vec3 irradiance) {
   vec3 albedo = m.baseColor;
   float roughness = m.roughness;
   float NoV = clamp(dot(n, v), 1e-4, 1.0);
@@ -85,7 +90,7 @@ vec3 fullMaterialModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 bent, v
   vec3 dfg = textureLod(brdfLut, vec2(NoV, roughness), 0.0).rgb;
   vec3 specularAlbedo = splitSumKaris(lobes.f0, lobes.f90, dfg.xy) * energyCompensationFdezAguera(lobes.f0, dfg.z);
   float lod = roughness * (specularLevels - 1.0);
-  vec3 prefiltered = textureLod(specularCube, rotateAboutY(r, specularRotation), lod).rgb;
+  vec3 prefiltered = textureLod(prefilteredCube, rotateAboutY(r, specularRotation), lod).rgb;
   float specularOcclusion = specularOcclusionCone(bent, ao, r, lobes.alpha);
   vec3 specular = prefiltered * specularAlbedo * multiBounceAoJimenez(specularOcclusion, lobes.f0);
   // The baked transfer already holds the visibility (one bounce of shadowing); the multi-bounce
@@ -97,6 +102,10 @@ vec3 fullMaterialModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 bent, v
   return diffuse + specular;
 }
 
+vec3 fullMaterialModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 bent, vec3 irradiance) {
+  return fullMaterialModelWith(specularCube, m, n, v, ao, bent, irradiance);
+}
+
 // The axis of the visibility cone: the baked bent normal, turned towards n as the AO nears 1. An
 // unoccluded vertex sees its whole hemisphere, a 90-degree cone about n; its bent normal is n only
 // on average, and with few bake rays a tilted one would cut off part of that hemisphere. A fully
@@ -106,6 +115,8 @@ vec3 visibilityConeAxis(vec3 n, float ao) {
   vec3 bent = length2 > 1e-8 ? vertexIn.bentNormal * inversesqrt(length2) : n;
   return normalize(mix(bent, n, ao));
 }
+
+#include "dominant_lights.glsl"
 
 void main() {
   vec3 v = normalize(cameraPosition - vertexIn.position);
@@ -165,6 +176,8 @@ void main() {
   } else if (mode == kShadingModeShAoBent) {
     vec3 bent = normalize(vertexIn.bentNormal);
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, bent) * ao;
+  } else if (mode == kShadingModeLights || mode == kShadingModeLightsShadowed) {
+    radiance = dominantLightsModel(m, n, v, ao, vertexIn.position, geometric, mode == kShadingModeLightsShadowed);
   } else if (mode == kShadingModeFullGltfAo) {
     // The asset's AO in place of the baked visibility: unshadowed SH9 irradiance times it, the
     // specular cone about n (glTF's occlusion has no direction).

@@ -16,7 +16,9 @@ const float kValues[] = float[](
     kAttributeTangent, kTextureUnitBaseColor, kTextureUnitMetallicRoughness, kTextureUnitNormal,
     kTextureUnitOcclusion, kTextureUnitEmissive, kSlotBaseColor, kSlotMetallicRoughness, kSlotNormal, kSlotOcclusion,
     kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend, kShadingModeIrradiance,
-    kShadingModeIrradianceAoBent, kTextureUnitIrradiance);
+    kShadingModeIrradianceAoBent, kTextureUnitIrradiance, kShadingModeLights, kShadingModeLightsShadowed,
+    kTextureUnitResidualSpecular, kTextureUnitShadowDepth, kTextureUnitShadowCompare, kMaxEngineLights,
+    kBlockerSearchTaps, kPcfTaps, kDeltaAlpha);
 
 void main() {
   int i = int(gl_FragCoord.x);

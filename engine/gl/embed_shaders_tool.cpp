@@ -23,12 +23,14 @@
 #include <string>
 #include <vector>
 
+#include "core/brdf.h"
 #include "core/material.h"
 #include "core/relative_squared_error.h"
 #include "core/texture.h"
 #include "core/tone_curve.h"
 #include "engine/gl/frame_layer.h"
 #include "engine/gl/gpu_mesh_attribute.h"
+#include "engine/gl/light_constants.h"
 #include "engine/gl/shading_mode.h"
 #include "engine/gl/texture_unit.h"
 
@@ -75,6 +77,8 @@ std::string sharedConstants() {
                         {"kShadingModeShAoBent", int(ShadingMode::ShAoBent)},
                         {"kShadingModePrt", int(ShadingMode::Prt)},
                         {"kShadingModeFull", int(ShadingMode::Full)},
+                        {"kShadingModeLights", int(ShadingMode::Lights)},
+                        {"kShadingModeLightsShadowed", int(ShadingMode::LightsShadowed)},
                         {"kShadingModeFullGltfAo", int(ShadingMode::FullGltfAo)},
                         {"kShadingModeFullBothAo", int(ShadingMode::FullBothAo)}});
   text += intConstants("iblkit::FrameLayer (engine/gl/frame_layer.h)",
@@ -109,7 +113,14 @@ std::string sharedConstants() {
                         {"kTextureUnitNormal", kTextureUnitNormal},
                         {"kTextureUnitOcclusion", kTextureUnitOcclusion},
                         {"kTextureUnitEmissive", kTextureUnitEmissive},
-                        {"kTextureUnitIrradiance", kTextureUnitIrradiance}});
+                        {"kTextureUnitIrradiance", kTextureUnitIrradiance},
+                        {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
+                        {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
+                        {"kTextureUnitShadowCompare", kTextureUnitShadowCompare}});
+  text += intConstants("iblkit::kMaxEngineLights, kBlockerSearchTaps, kPcfTaps (engine/gl/light_constants.h)",
+                       {{"kMaxEngineLights", kMaxEngineLights},
+                        {"kBlockerSearchTaps", kBlockerSearchTaps},
+                        {"kPcfTaps", kPcfTaps}});
   text += intConstants("iblkit::TextureSlot (core/texture.h)",
                        {{"kSlotBaseColor", int(kSlotBaseColor)},
                         {"kSlotMetallicRoughness", int(kSlotMetallicRoughness)},
@@ -134,6 +145,7 @@ std::string sharedConstants() {
                         {"kAlphaModeBlend", int(AlphaMode::Blend)}});
   text += "// iblkit::kRelMseEpsilon (core/relative_squared_error.h)\nconst float kRelMseEpsilon = " +
           floatLiteral(float(kRelMseEpsilon)) + ";\n";
+  text += "// iblkit::kDeltaAlpha (core/brdf.h)\nconst float kDeltaAlpha = " + floatLiteral(kDeltaAlpha) + ";\n";
   return text + "#endif\n";
 }
 

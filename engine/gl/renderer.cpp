@@ -11,6 +11,9 @@
 
 #include "core/error.h"
 #include "core/sh_rotation.h"
+#include "engine/gl/drawn_lights.h"
+#include "engine/gl/light_constants.h"
+#include "engine/gl/shadow_maps.h"
 #include "engine/gl/gpu_mesh.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/material_textures.h"
@@ -46,9 +49,12 @@ struct Renderer::Impl {
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
   GLuint emptyVertexArray = 0;  // the fullscreen triangle needs a bound VAO but no attributes
-  GlTexture latLong, specular, brdfLut;
+  GlTexture latLong, specular, brdfLut, residualSpecular;
   GlTexture irradiance;  // the irradiance modes' cube; id 0 when the stages have none
   SphericalHarmonics9 sh9;
+  // The lights modes' inputs (drawn_lights.h): the stages without the images.
+  EnvironmentStages lightStages;
+  std::unique_ptr<ShadowMaps> shadowMaps;  // made on the first shadowed frame
   float rotationDegrees = 0.0f, intensity = 1.0f;
   int specularLevels = 1;
 
@@ -93,6 +99,25 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
   impl_->rotationDegrees = env.rotationDegrees;
   impl_->intensity = env.intensity;
   impl_->specularLevels = int(env.specular.levels.size());
+  // The lights modes read the residual's chain when there is one (drawn_lights.h).
+  if (!env.residualSpecular.levels.empty()) impl_->residualSpecular = uploadCubeLevels(env.residualSpecular.levels);
+  EnvironmentStages& stages = impl_->lightStages;
+  stages.sh9 = env.sh9;
+  stages.lights = env.lights;
+  stages.residualSh9 = env.residualSh9;
+  stages.residualSpecular.levels.clear();
+  stages.residualSpecular.roughness = env.residualSpecular.roughness;
+  // Only whether it exists matters to drawnLights; one empty level stands for the uploaded chain.
+  if (!env.residualSpecular.levels.empty()) stages.residualSpecular.levels.resize(1);
+  invalidateShadowMaps();
+}
+
+const EnvironmentStages& Renderer::lightStages() const { return impl_->lightStages; }
+
+int Renderer::shadowMapRenders() const { return impl_->shadowMaps ? impl_->shadowMaps->renderCount() : 0; }
+
+void Renderer::invalidateShadowMaps() {
+  if (impl_->shadowMaps) impl_->shadowMaps->update({}, {}, {});
 }
 
 void Renderer::setMaterial(int materialIndex, const Material& material) {
@@ -111,6 +136,23 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   if (usesIrradianceCube(settings.mode) && settings.layer == FrameLayer::Radiance && r.irradiance.id() == 0)
     throw Error(std::string(shadingModeName(settings.mode)) +
                 " mode: the environment stages have no irradiance cube (env/irradiance.exr)");
+  // The lights modes: lights-shadowed without shadows is lights. The shadow maps are rendered here,
+  // before the frame's target is bound, and only when a light's direction changed.
+  const bool lightsMode = settings.mode == ShadingMode::Lights || settings.mode == ShadingMode::LightsShadowed;
+  const ShadingMode mode =
+      settings.mode == ShadingMode::LightsShadowed && !settings.shadows ? ShadingMode::Lights : settings.mode;
+  DrawnLights drawn;
+  if (lightsMode && settings.layer == FrameLayer::Radiance) {
+    drawn = drawnLights(r.lightStages, settings.lightCount, settings.envRotationDegrees);
+    if (mode == ShadingMode::LightsShadowed) {
+      if (!r.shadowMaps) r.shadowMaps = std::make_unique<ShadowMaps>(kShadowMapSize);
+      std::vector<glm::vec3> directions;
+      for (const EnvironmentLight& light : drawn.lights) directions.push_back(light.direction);
+      r.shadowMaps->update(r.scene.meshes, r.meshes, directions);
+      r.shadowMaps->bind();
+    }
+    glBindTextureUnit(kTextureUnitResidualSpecular, drawn.residualChain ? r.residualSpecular.id() : r.specular.id());
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -157,6 +199,18 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     program.set("latLongIntensity", r.intensity);
     program.set("specularRotation", inverseRotation(settings.envRotationDegrees));
     program.set("specularLevels", float(r.specularLevels));
+    if (!lightsMode) return;
+    program.set("lightCount", int(drawn.lights.size()));
+    for (std::size_t i = 0; i < drawn.lights.size(); ++i) {
+      const EnvironmentLight& light = drawn.lights[i];
+      program.set(uniformElement("lightDirection", i).c_str(), light.direction);
+      program.set(uniformElement("lightRadiance", i).c_str(), light.radiance);
+      program.set(uniformElement("lightAngularRadius", i).c_str(), light.angularRadius);
+      program.set(uniformElement("lightCosSin", i).c_str(),
+                  glm::vec2(std::cos(light.angularRadius), std::sin(light.angularRadius)));
+    }
+    program.setArray("residualShRadiance", drawn.residualSh9.coefficients.data(), kShCoefficients);
+    if (mode == ShadingMode::LightsShadowed) r.shadowMaps->setUniforms(program);
   };
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -168,7 +222,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const Material& material = r.scene.materials.at(std::size_t(mesh.material));
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
-    const ShaderProgram& program = r.meshProgram(settings.mode, settings.layer, slots, material.alphaMode);
+    const ShaderProgram& program = r.meshProgram(mode, settings.layer, slots, material.alphaMode);
     if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
       setFrameUniforms(program);
       prepared.push_back(&program);
@@ -188,6 +242,8 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   }
   glDisable(GL_CULL_FACE);
   for (GLuint unit = kTextureUnitBaseColor; unit <= kTextureUnitEmissive; ++unit) glBindSampler(unit, 0);
+  glBindSampler(kTextureUnitShadowDepth, 0);
+  glBindSampler(kTextureUnitShadowCompare, 0);
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(0);
   glUseProgram(0);

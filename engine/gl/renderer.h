@@ -35,6 +35,11 @@ struct FrameSettings {
   // as "no texture" (the factor alone), to see what each contributes (the viewer's panel,
   // iblkit-view --texture-slots, the benchmarks).
   unsigned textureSlots = kAllTextureSlots;
+  // The lights modes (docs/engine.md "Lights"): how many of the environment's suns are drawn as
+  // lights, K (< 0: all, at most kMaxEngineLights; the others go back into the residual's SH9),
+  // and whether lights-shadowed shadows them (false: it draws as lights).
+  int lightCount = -1;
+  bool shadows = true;
 };
 
 // The envRotationDegrees that shows the environment at the absolute rotation `degrees` about +Y
@@ -70,6 +75,16 @@ class Renderer {
   const Scene& scene() const;
   // The anisotropy the trilinear texture samplers use (1 where the driver offers none).
   float textureAnisotropy() const;
+  // What the lights modes draw from the environment given to the constructor or the last
+  // setEnvironment (drawn_lights.h): its sh9, lights and residualSh9; residualSpecular has one
+  // empty level when the residual's chain was uploaded, none otherwise; no images.
+  const EnvironmentStages& lightStages() const;
+  // How many times the shadow maps were rendered (ShadowMaps::renderCount; 0 before the first
+  // shadowed frame), and their side in texels.
+  int shadowMapRenders() const;
+  // Drops the shadow maps, so that the next shadowed frame renders them again (the benchmark of
+  // their cost; a new environment does it by itself).
+  void invalidateShadowMaps();
 
   // Renders into `framebuffer` (0 = the default one) over the viewport (0, 0, width, height): clears
   // colour and depth, draws the sky (if settings.drawSky) and every mesh. Afterwards `framebuffer`

@@ -127,6 +127,9 @@ void ShaderProgram::set(const char* name, const glm::vec2& value) const {
 void ShaderProgram::set(const char* name, const glm::vec3& value) const {
   glProgramUniform3fv(program_, glGetUniformLocation(program_, name), 1, glm::value_ptr(value));
 }
+void ShaderProgram::set(const char* name, const glm::vec4& value) const {
+  glProgramUniform4fv(program_, glGetUniformLocation(program_, name), 1, glm::value_ptr(value));
+}
 void ShaderProgram::set(const char* name, const glm::mat4& value) const {
   glProgramUniformMatrix4fv(program_, glGetUniformLocation(program_, name), 1, GL_FALSE,
                             glm::value_ptr(value));
@@ -137,6 +140,14 @@ void ShaderProgram::set(const char* name, const glm::mat3& value) const {
 }
 void ShaderProgram::setArray(const char* name, const glm::vec3* values, int count) const {
   glProgramUniform3fv(program_, glGetUniformLocation(program_, name), count, glm::value_ptr(values[0]));
+}
+
+std::string uniformElement(const char* name, std::size_t index) {
+  std::string element(name);
+  element += '[';
+  element += std::to_string(index);
+  element += ']';
+  return element;
 }
 
 }  // namespace iblkit

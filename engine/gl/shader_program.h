@@ -37,6 +37,7 @@ class ShaderProgram {
   void set(const char* name, float value) const;
   void set(const char* name, const glm::vec2& value) const;
   void set(const char* name, const glm::vec3& value) const;
+  void set(const char* name, const glm::vec4& value) const;
   void set(const char* name, const glm::mat4& value) const;
   void set(const char* name, const glm::mat3& value) const;
   void setArray(const char* name, const glm::vec3* values, int count) const;
@@ -44,5 +45,8 @@ class ShaderProgram {
  private:
   GLuint program_ = 0;
 };
+
+// "name[index]", the uniform name of an array element.
+std::string uniformElement(const char* name, std::size_t index);
 
 }  // namespace iblkit

@@ -19,6 +19,12 @@ enum class ShadingMode {
   ShAoBent,  // SH9 irradiance along the baked bent normal, times the ambient occlusion
   Prt,       // baked SH transfer dotted with the environment's SH9 radiance, times albedo / pi
   Full,      // the material model: diffuse (PRT) + split-sum specular with occlusion terms
+  // Dominant lights (docs/dominant-lights.md, engine section): the environment split into K disk
+  // lights (the extracted suns) and the residual map. The residual as in sh-ao-bent (its SH9 along
+  // the bent normal times AO) plus its split-sum specular as in full; each light with the core's
+  // BRDF (brdf.h) and the disk's exact irradiance; unshadowed, then with a PCSS shadow map each.
+  Lights,
+  LightsShadowed,
   // glTF occlusion (the material's occlusionTexture, 1 + strength (R - 1); glTF 2.0 section
   // 3.9.3: it applies to indirect light, here all the environment's): Full with the asset's AO
   // texture in place of the baked per-vertex visibility, and Full with both (their product).
@@ -32,13 +38,15 @@ inline constexpr EnumName<ShadingMode> kShadingModeNames[] = {
     {ShadingMode::Unlit, "unlit"}, {ShadingMode::Mirror, "mirror"},       {ShadingMode::Sh, "sh"},
     {ShadingMode::Irradiance, "irradiance"}, {ShadingMode::IrradianceAoBent, "irradiance-ao-bent"},
     {ShadingMode::ShAo, "sh-ao"},  {ShadingMode::ShAoBent, "sh-ao-bent"}, {ShadingMode::Prt, "prt"},
-    {ShadingMode::Full, "full"},   {ShadingMode::FullGltfAo, "full-gltf-ao"}, {ShadingMode::FullBothAo, "full-both-ao"}};
+    {ShadingMode::Full, "full"},   {ShadingMode::Lights, "lights"},       {ShadingMode::LightsShadowed, "lights-shadowed"},
+    {ShadingMode::FullGltfAo, "full-gltf-ao"}, {ShadingMode::FullBothAo, "full-both-ao"}};
 
 // Every mode, in the order of the enum (for benchmarks, tests and the viewer's mode menu).
 inline constexpr ShadingMode kShadingModes[] = {ShadingMode::Unlit, ShadingMode::Mirror,   ShadingMode::Sh,
                                                 ShadingMode::Irradiance, ShadingMode::IrradianceAoBent,
                                                 ShadingMode::ShAo,  ShadingMode::ShAoBent, ShadingMode::Prt,
-                                                ShadingMode::Full,  ShadingMode::FullGltfAo, ShadingMode::FullBothAo};
+                                                ShadingMode::Full,  ShadingMode::Lights,   ShadingMode::LightsShadowed,
+                                                ShadingMode::FullGltfAo, ShadingMode::FullBothAo};
 
 // The mode named `name` in kShadingModeNames. Throws Error("--mode: unknown shading mode '<name>'
 // (expected one of unlit, mirror, ...)") for anything else.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <string>
 
+#include "engine/gl/drawn_lights.h"
 #include "engine/gl/shading_mode.h"
 #include "engine/gl/texture_slot_names.h"
 
@@ -106,6 +107,43 @@ void textureSection(FrameSettings& settings, const Renderer& renderer) {
   if (ImGui::Button("none")) settings.textureSlots = 0;
 }
 
+// The environment's suns (drawn_lights.h): direction, size, brightness and share of the map's
+// energy; K, the number drawn as lights in the lights modes, and their shadows.
+void lightsSection(FrameSettings& settings, const Renderer& renderer) {
+  const std::vector<EnvironmentLight>& suns = renderer.lightStages().lights.suns;
+  if (suns.empty()) {
+    ImGui::TextWrapped("no suns in this environment: the lights modes draw the map's SH9 and specular chain");
+    return;
+  }
+  if (ImGui::BeginTable("suns", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    for (const char* column : {"#", "azimuth, elevation", "radius", "irradiance lum", "energy"})
+      ImGui::TableSetupColumn(column);
+    ImGui::TableHeadersRow();
+    for (std::size_t i = 0; i < suns.size(); ++i) {
+      const EnvironmentLight& sun = suns[i];
+      const glm::vec2 angles = lightAzimuthElevation(sun.direction);
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::Text("%zu", i + 1);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f, %.1f deg", angles.x, angles.y);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f deg", glm::degrees(sun.angularRadius));
+      ImGui::TableNextColumn();
+      ImGui::Text("%.4g", luminance(sun.irradiance));
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f%%", 100.0f * lightEnergyShare(sun, renderer.lightStages().sh9));
+    }
+    ImGui::EndTable();
+  }
+  const int available = drawnLightCount(renderer.lightStages(), -1);
+  int k = drawnLightCount(renderer.lightStages(), settings.lightCount);
+  if (ImGui::SliderInt("lights K", &k, 0, available)) settings.lightCount = k;
+  ImGui::Checkbox("shadows", &settings.shadows);
+  if (settings.mode != ShadingMode::Lights && settings.mode != ShadingMode::LightsShadowed)
+    ImGui::TextDisabled("(used by the lights and lights-shadowed modes)");
+}
+
 void comparisonSection(ReferenceComparison& comparison, bool cameraMoved) {
   ImGui::Text("reference: %s (%dx%d)", comparison.file().filename().string().c_str(), comparison.width(),
               comparison.height());
@@ -158,6 +196,7 @@ PanelActions Panel::build(PanelContext& context) {
       environmentSection(context.environments);
     if (ImGui::CollapsingHeader("textures", context.renderer.scene().textures.empty() ? 0 : ImGuiTreeNodeFlags_DefaultOpen))
       textureSection(settings, context.renderer);
+    if (ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen)) lightsSection(settings, context.renderer);
     if (ImGui::CollapsingHeader("material"))
       materialSection(context.renderer, context.originalMaterials, selectedMaterial_);
     if (context.comparison && ImGui::CollapsingHeader("reference", ImGuiTreeNodeFlags_DefaultOpen))

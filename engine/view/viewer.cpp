@@ -62,6 +62,8 @@ class Viewer {
     settings_.envRotationDegrees = envRotationFromBake(bake_.env, options.envRotation);
     settings_.drawSky = !options.noSky;
     settings_.textureSlots = options.textureSlots;
+    settings_.lightCount = options.lightCount;
+    settings_.shadows = options.shadows;
     // The reference decides the size (same camera, same pixels) unless --width/--height do.
     int width = bake_.scene.width, height = bake_.scene.height;
     if (!options.reference.empty()) {

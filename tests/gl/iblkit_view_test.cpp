@@ -72,7 +72,8 @@ TEST(IblkitView, RendersEveryModeToExrWithCoverageAlpha) {
   const Fixture fixture = makeFixture(dir);
   // The irradiance modes read the bake's env/irradiance.exr.
   for (const char* mode :
-       {"unlit", "mirror", "sh", "irradiance", "irradiance-ao-bent", "sh-ao", "sh-ao-bent", "prt", "full"}) {
+       {"unlit", "mirror", "sh", "irradiance", "irradiance-ao-bent", "sh-ao", "sh-ao-bent", "prt", "full", "lights",
+         "lights-shadowed"}) {
     const fs::path out = dir / (std::string("view_") + mode + ".exr");
     fs::remove(out);
     const ProgramRun r = run("iblkit-view", quoted(fixture.bake) + " --headless -o " + quoted(out) + kSize +
@@ -330,7 +331,8 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
 
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --mode shiny",
                 "iblkit-view: --mode: unknown shading mode 'shiny' (expected one of unlit, mirror, sh, "
-                "irradiance, irradiance-ao-bent, sh-ao, sh-ao-bent, prt, full, full-gltf-ao, full-both-ao, all)",
+                "irradiance, irradiance-ao-bent, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed, full-gltf-ao, "
+                "full-both-ao, all)",
                 out, 2);
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --texture-slots normal,albedo",
                 "iblkit-view: --texture-slots: unknown texture slot 'albedo' (expected one of base-color, "
@@ -340,6 +342,8 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
                 "iblkit-view: --no-textures: give --no-textures or --texture-slots, not both", out, 2);
   expectFailure(quoted(fixture.bake) + " -o " + quoted(out),
                 "iblkit-view: -o: only with --headless (the window saves screenshots: --screenshot)", out, 2);
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --lights 9",
+                "iblkit-view: --lights: Value 9 not in range 0 to 4", out, 2);
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --no-such-option",
                 "iblkit-view: The following argument was not expected: --no-such-option", out, 2);
 }

@@ -21,13 +21,16 @@ TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
   EXPECT_NE(source.find("#line 1 4\n"), std::string::npos);
   for (const EmbeddedShader& shader : embeddedShaders())
     if (shader.name == "mesh.frag") {
-      ASSERT_EQ(shader.files.size(), 6u);
+      ASSERT_EQ(shader.files.size(), 9u);
       EXPECT_EQ(shader.files[0], "shaders/mesh.frag");
       EXPECT_EQ(shader.files[1], "generated/shared_constants.glsl");
       EXPECT_EQ(shader.files[2], "shaders/environment.glsl");
       EXPECT_EQ(shader.files[3], "shaders/sh9.glsl");
       EXPECT_EQ(shader.files[4], "shaders/brdf.glsl");
       EXPECT_EQ(shader.files[5], "shaders/material.glsl");
+      EXPECT_EQ(shader.files[6], "shaders/lights.glsl");
+      EXPECT_EQ(shader.files[7], "shaders/shadow.glsl");
+      EXPECT_EQ(shader.files[8], "shaders/dominant_lights.glsl");
     }
 }
 
@@ -38,13 +41,13 @@ TEST(ShaderProgram, UnknownShaderIsAnError) {
 }
 
 // Compile errors name the original file and line, in the stage and in an included file (a define
-// breaks the source on purpose: mesh.frag line 39 reads SHADING_MODE, environment.glsl line 7
+// breaks the source on purpose: mesh.frag line 41 reads SHADING_MODE, environment.glsl line 7
 // declares rotateAboutY).
 TEST(ShaderProgram, CompileErrorsNameTheShaderFileAndLine) {
   test::glContext();
   const std::string inStage = test::errorMessage(
       [] { ShaderProgram("mesh.vert", "mesh.frag", "#define SHADING_MODE undefinedName"); });
-  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:39: ", 0), 0u) << inStage;
+  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:41: ", 0), 0u) << inStage;
   const std::string inInclude =
       test::errorMessage([] { ShaderProgram("fullscreen.vert", "sky.frag", "#define rotateAboutY 1"); });
   EXPECT_EQ(inInclude.rfind("shaders/environment.glsl:7: ", 0), 0u) << inInclude;

@@ -6,12 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "core/brdf.h"
 #include "core/image.h"
 #include "core/material.h"
 #include "core/relative_squared_error.h"
 #include "core/tone_curve.h"
 #include "engine/gl/frame_layer.h"
 #include "engine/gl/gpu_mesh_attribute.h"
+#include "engine/gl/light_constants.h"
 #include "engine/gl/shader_program.h"
 #include "engine/gl/shading_mode.h"
 #include "engine/gl/texture_unit.h"
@@ -38,7 +40,10 @@ const std::vector<float> kCppValues = {
     float(kSlotBaseColor),        float(kSlotMetallicRoughness), float(kSlotNormal),
     float(kSlotOcclusion),        float(kSlotEmissive),         float(kAllTextureSlots),
     float(AlphaMode::Opaque),     float(AlphaMode::Mask),       float(AlphaMode::Blend),
-    float(ShadingMode::Irradiance), float(ShadingMode::IrradianceAoBent), float(kTextureUnitIrradiance)};
+    float(ShadingMode::Irradiance), float(ShadingMode::IrradianceAoBent), float(kTextureUnitIrradiance),
+    float(ShadingMode::Lights),   float(ShadingMode::LightsShadowed), float(kTextureUnitResidualSpecular),
+    float(kTextureUnitShadowDepth), float(kTextureUnitShadowCompare), float(kMaxEngineLights),
+    float(kBlockerSearchTaps),    float(kPcfTaps),              kDeltaAlpha};
 
 TEST(SharedConstants, GlslValuesEqualTheCppOnes) {
   const int n = int(kCppValues.size()) + 1;  // one texel past the table: the probe's -1
@@ -100,6 +105,12 @@ TEST(SharedConstants, SamplersReadTheTextureUnitsTheCppBinds) {
   EXPECT_EQ(samplerUnit(textured, "normalTexture"), GLint(kTextureUnitNormal));
   EXPECT_EQ(samplerUnit(textured, "occlusionTexture"), GLint(kTextureUnitOcclusion));
   EXPECT_EQ(samplerUnit(textured, "emissiveTexture"), GLint(kTextureUnitEmissive));
+  // The lights modes' residual chain and shadow maps (lights-shadowed reads them all).
+  const ShaderProgram shadowed("mesh.vert", "mesh.frag",
+                               "#define SHADING_MODE " + std::to_string(int(ShadingMode::LightsShadowed)));
+  EXPECT_EQ(samplerUnit(shadowed, "residualSpecularCube"), GLint(kTextureUnitResidualSpecular));
+  EXPECT_EQ(samplerUnit(shadowed, "shadowDepths"), GLint(kTextureUnitShadowDepth));
+  EXPECT_EQ(samplerUnit(shadowed, "shadowCompare"), GLint(kTextureUnitShadowCompare));
   const ShaderProgram sky("fullscreen.vert", "sky.frag");
   EXPECT_EQ(samplerUnit(sky, "latLongMap"), GLint(kTextureUnitLatLong));
   const ShaderProgram present("fullscreen.vert", "present.frag");

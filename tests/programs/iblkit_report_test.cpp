@@ -60,7 +60,11 @@ TEST(IblkitReport, LoneSpheresScoreEveryModeHoldTheirClaimsAndRerunFromTheCache)
   for (const json& entry : document["cases"]) {
     EXPECT_GT(entry["reference"]["spp"].get<int>(), 0);
     EXPECT_GT(entry["scoredPixels"].get<int>(), 100) << entry["scene"];
-    ASSERT_EQ(entry["modes"].size(), 7u);
+    // mirror, sh, irradiance, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed (the glTF occlusion modes
+    // need an occlusion texture).
+    ASSERT_EQ(entry["modes"].size(), 9u);
+    // The map's kind (report/map_kind.h): sky has a sun, studio softboxes.
+    EXPECT_EQ(entry["mapKind"], entry["environment"] == "sky" ? "sunny" : "studio") << entry["environment"];
     for (const json& mode : entry["modes"]) {
       const std::string what = entry["scene"].get<std::string>() + "/" + entry["environment"].get<std::string>() +
                                "/" + mode["mode"].get<std::string>();
@@ -97,6 +101,17 @@ TEST(IblkitReport, LoneSpheresScoreEveryModeHoldTheirClaimsAndRerunFromTheCache)
     if (entry["scene"] == "diffuse_sphere") {
       EXPECT_GT(entry["sh9TruncationError"].get<double>(), 0.0);
     }
+
+  // The claims per kind of map on the light mode against full, with the numbers they measured.
+  for (const char* prefix : {"diffuse_sphere on sunny maps (sky): lights-shadowed mean FLIP <= 0.05",
+                             "diffuse_sphere on studio maps (studio): lights-shadowed mean FLIP <= 0.05",
+                             "every scene on sunny maps (sky): lights-shadowed mean FLIP at most full's + 0.005",
+                             "every scene on studio maps (studio): lights-shadowed"}) {
+    const json* claim = findClaim(document, prefix);
+    ASSERT_NE(claim, nullptr) << prefix;
+    EXPECT_TRUE((*claim)["measured"].is_number()) << claim->dump();
+    EXPECT_NE((*claim)["detail"].get<std::string>().find("diffuse_sphere under "), std::string::npos) << claim->dump();
+  }
 
   // Everything again: every stage comes from the cache, the numbers are the same.
   ASSERT_EQ(report(arguments, &output), 0) << output;

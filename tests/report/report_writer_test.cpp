@@ -64,6 +64,47 @@ TEST(ReportWriter, HtmlShowsClaimsTablesAndPlot) {
   EXPECT_NE(html.find("<svg"), std::string::npos);
 }
 
+// The map kinds: in report.json per case, under each map's name, and the table of every mode's
+// mean FLIP per kind, where a kind's failed frame leaves its mean unmeasured.
+TEST(ReportWriter, KindsOfMapAreShownWithTheirMeans) {
+  ReportSummary summary = summaryWithOneFailure();
+  summary.cases[0].mapKind = MapKind::Sunny;
+  summary.cases[0].concentration = {0.5, 0.6};
+  summary.cases[1].mapKind = MapKind::Soft;
+  const auto jsonFile = test::scratchDir() / "kinds.json";
+  writeReportJson(jsonFile, summary);
+  const nlohmann::json report = nlohmann::json::parse(readText(jsonFile));
+  EXPECT_EQ(report["cases"][0]["mapKind"], "sunny");
+  EXPECT_EQ(report["cases"][0]["mapSunShare"], 0.5);
+  EXPECT_EQ(report["cases"][1]["mapKind"], "soft");
+
+  const auto htmlFile = test::scratchDir() / "kinds.html";
+  writeReportHtml(htmlFile, summary);
+  const std::string html = readText(htmlFile);
+  EXPECT_NE(html.find("<th>sky<br><span class=small>sunny</span></th>"), std::string::npos);
+  const std::size_t table = html.find("<h2>By kind of map</h2>");
+  ASSERT_NE(table, std::string::npos);
+  EXPECT_NE(html.find("<th>sunny<br><span class=small>sky</span></th><th>soft<br><span class=small>city</span></th>", table),
+            std::string::npos);
+  // sh: 0.2 on both kinds; sh-ao: 0.1 on sky, failed on city.
+  EXPECT_NE(html.find("<tr><td class=l>bunny</td><td class=l>sh</td><td>0.2000</td><td>0.2000</td></tr>", table),
+            std::string::npos);
+  EXPECT_NE(html.find("<tr><td class=l>bunny</td><td class=l>sh-ao</td><td>0.1000</td><td>&ndash;</td></tr>", table),
+            std::string::npos);
+  // A light claim that fails is explained once, above the tables.
+  EXPECT_EQ(html.find("Where the dominant lights lose"), std::string::npos);  // no light claim here
+  summary.claims = {Claim{"bunny on sunny maps (sky): lights-shadowed mean FLIP at most 0.5 x full's on each map",
+                          0.6, 0.5, false, ""}};
+  writeReportHtml(htmlFile, summary);
+  EXPECT_NE(readText(htmlFile).find("Where the dominant lights lose to <code>full</code>"), std::string::npos);
+  summary.claims[0].holds = true;
+  writeReportHtml(htmlFile, summary);
+  EXPECT_EQ(readText(htmlFile).find("Where the dominant lights lose"), std::string::npos);
+  // Without kinds, no table.
+  writeReportHtml(htmlFile, summaryWithOneFailure());
+  EXPECT_EQ(readText(htmlFile).find("By kind of map"), std::string::npos);
+}
+
 TEST(ReportWriter, LadderPlotHasALinePerEnvironmentAndTheMean) {
   const std::string svg = ladderSvg(summaryWithOneFailure().cases, "bunny", {"sh", "sh-ao"});
   std::size_t lines = 0;

@@ -1,0 +1,97 @@
+// Disk lights with the core's BRDF (core/brdf.h: glTF 2.0 Appendix B with KHR_materials_specular):
+// the engine's dominant lights (docs/dominant-lights.md, engine section; docs/engine.md "Lights").
+// Needs environment.glsl (kPi) and brdf.glsl (BrdfLobes, diffuseWeight, maxComponent).
+
+// Schlick 1994: F = f0 + (f90 - f0)(1 - cos)^5, the weights (1 - (1 - cos)^5, (1 - cos)^5) of
+// splitSumKaris; schlickFresnel of core/brdf.cpp.
+vec2 schlickWeights(float cosTheta) {
+  float m = clamp(1.0 - cosTheta, 0.0, 1.0);
+  float m5 = m * m * m * m * m;
+  return vec2(1.0 - m5, m5);
+}
+
+// ggxD of core/microfacet.h, with cosH = n.h: alpha^2 / (pi (sin^2 + alpha^2 cos^2)^2).
+float ggxD(float cosH, float alpha) {
+  if (cosH <= 0.0) return 0.0;
+  float alpha2 = alpha * alpha;
+  float t = (1.0 - cosH * cosH) + alpha2 * cosH * cosH;
+  return alpha2 / (kPi * t * t);
+}
+
+// ggxSmithVisibility of core/microfacet.h (height-correlated Smith, Heitz 2014; glTF 2.0 B.3.2).
+float ggxSmithVisibility(float cosThetaI, float cosThetaO, float alpha) {
+  float alpha2 = alpha * alpha;
+  float viewTerm = cosThetaI * sqrt(cosThetaO * cosThetaO * (1.0 - alpha2) + alpha2);
+  float lightTerm = cosThetaO * sqrt(cosThetaI * cosThetaI * (1.0 - alpha2) + alpha2);
+  return 0.5 / (viewTerm + lightTerm);
+}
+
+// The diffuse base of evalBrdf (core/brdf.cpp): diffuseWeight(cos v.h) baseColor / pi.
+vec3 brdfDiffuse(BrdfLobes lobes, vec3 v, vec3 l) {
+  float VoH = clamp(dot(v, normalize(v + l)), 0.0, 1.0);
+  return diffuseWeight(lobes, schlickWeights(VoH)) * lobes.baseColor / kPi;
+}
+
+// The specular layer of evalBrdf: F(v.h) D(h) V(l, v) at `alpha` (the lobe's, or widened).
+vec3 brdfSpecular(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, float alpha) {
+  float NoL = dot(n, l), NoV = dot(n, v);
+  if (NoL <= 0.0 || NoV <= 0.0) return vec3(0.0);
+  vec3 h = normalize(v + l);
+  float VoH = clamp(dot(v, h), 0.0, 1.0);
+  vec3 fresnel = splitSumKaris(lobes.f0, lobes.f90, schlickWeights(VoH));
+  return fresnel * (ggxD(dot(n, h), alpha) * ggxSmithVisibility(NoL, NoV, alpha));
+}
+
+// evalBrdf of core/brdf.h (the non-delta part: a mirror's lobe is a delta the C++ leaves out too).
+vec3 evalBrdf(BrdfLobes lobes, vec3 n, vec3 v, vec3 l) {
+  if (dot(n, l) <= 0.0 || dot(n, v) <= 0.0) return vec3(0.0);
+  vec3 f = brdfDiffuse(lobes, v, l);
+  if (lobes.alpha >= kDeltaAlpha) f += brdfSpecular(lobes, n, v, l, lobes.alpha);
+  return f;
+}
+
+// uniformDiskIrradiance of core/disk_irradiance.h: irradiance on a surface of normal n from a
+// uniform disk (spherical cap) of radiance 1 and angular radius r whose centre is at angle theta
+// from n (cosTheta = n.l), across the horizon too (Snyder 1996, "Area Light Sources for Real-Time
+// Graphics", as Lagarde and de Rousiers 2014 write it, "Moving Frostbite to PBR", section 4.7):
+//   cos^2 theta > sin^2 r:  pi sin^2 r max(cos theta, 0)
+//   else:  (cos theta acos(y) - x sin theta sqrt(1 - y^2)) sin^2 r + atan(sin theta sqrt(1 - y^2) / x)
+//          with x = cot r, y = -x cot theta.
+float uniformDiskIrradiance(float cosTheta, float angularRadius) {
+  float r = clamp(angularRadius, 0.0, 0.5 * kPi);
+  float c = clamp(cosTheta, -1.0, 1.0);
+  float sinRadius = sin(r);
+  float sinSquared = sinRadius * sinRadius;
+  if (sinSquared <= 0.0) return 0.0;
+  if (c * c > sinSquared) return kPi * sinSquared * max(c, 0.0);
+  float x = max(cos(r) / sinRadius, 1e-7);
+  float sinTheta = max(sqrt(max(0.0, 1.0 - c * c)), 1e-7);
+  float y = clamp(-x * c / sinTheta, -1.0, 1.0);
+  float sinThetaSqrtY = sinTheta * sqrt(max(0.0, 1.0 - y * y));
+  float e = (c * acos(y) - x * sinThetaSqrtY) * sinSquared + atan(sinThetaSqrtY / x);
+  return max(e, 0.0);
+}
+
+// One disk light of radiance `radiance`, direction l, angular radius r (cos, sin = cosSin), on the
+// material `lobes` at (n, v), without visibility: the core's BRDF times the disk's irradiance
+// E = radiance uniformDiskIrradiance(n.l, r) (sunIrradiance of core/environment_lights.h),
+//   diffuse  = brdfDiffuse(v, l) E
+//   specular = F D V (v, l; alpha') E,   alpha' = min(sqrt(alpha^2 + (tan(r) / 2)^2), 1)
+// The specular lobe is widened by the disk (roughness widening, as in Karis 2013, "Real Shading in
+// Unreal Engine 4", "Area lights", where alpha' grows with the source's angular size): a lobe
+// convolved with the disk, whose widths add in quadrature. D stays normalised, so no energy is
+// gained; for alpha >> r this is f(v, l) E, the disk's exact irradiance times the BRDF at its centre,
+// and a mirror facing the disk head-on reflects F L cos^2(r) (D = 1 / (pi alpha'^2), V = 1/4,
+// E = pi sin^2(r) L, alpha' = tan(r) / 2), the exact answer F L to 0.3% at r = 3 degrees: the
+// factor 1/2 in alpha' is chosen for that. tests/gl/lights_test.cpp measures it against quadrature.
+vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, float angularRadius, vec2 cosSin) {
+  float irradiance = uniformDiskIrradiance(dot(n, l), angularRadius);
+  if (irradiance <= 0.0 || dot(n, v) <= 0.0) return vec3(0.0);
+  vec3 result = brdfDiffuse(lobes, v, l);
+  if (maxComponent(lobes.f90) > 0.0) {
+    float spread = 0.5 * cosSin.y / max(cosSin.x, 1e-4);
+    float widened = min(sqrt(lobes.alpha * lobes.alpha + spread * spread), 1.0);
+    result += brdfSpecular(lobes, n, v, l, widened);
+  }
+  return result * radiance * irradiance;
+}

@@ -1,0 +1,340 @@
+// The engine's shadowed disk lights (issue 15, "Shadows"; docs/engine.md "Shadows") against the
+// reference: a sphere above a ground plane under a map that is one disk sun of angular radius 3
+// degrees plus a dim uniform sky, written as EXR here. iblkit-trace renders the map's texels as
+// they are; the engine draws the sun as a disk light with the same direction, radius and radiance,
+// and the sky as the residual. Along the image row through the shadow's centre, the shadow's edges
+// (the 50% crossing between the lit ground and the umbra) and their penumbra widths (10% to 90%)
+// must agree within 2 pixels at 320 x 180. The shadowed ground outside the shadow must equal the
+// unshadowed lights mode (no acne), also under a sun 10 degrees above the horizon, and a sphere
+// resting on the ground casts its shadow from the contact (no peter-panning).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glm/gtc/constants.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "baker/bake_in_memory.h"
+#include "baker/environment_stages.h"
+#include "core/image_io.h"
+#include "core/latlong.h"
+#include "engine/gl/render_target.h"
+#include "engine/gl/renderer.h"
+#include "gl/test_context.h"
+#include "support/gltf_builder.h"
+#include "support/test_paths.h"
+
+namespace iblkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kWidth = 320, kHeight = 180;
+constexpr float kSunRadiusDegrees = 3.0f;
+constexpr float kSunRadiance = 2000.0f;  // irradiance 17.2 head-on
+constexpr float kSky = 0.5f;             // irradiance 1.57 on the open ground
+
+struct SunScene {
+  fs::path dir, scene;
+  glm::vec3 sun;       // unit, towards the sun
+  float sphereY;       // the sphere's centre (radius 0.5) above the ground at y = 0
+};
+
+glm::vec3 sunDirection(float azimuthDegrees, float elevationDegrees) {
+  const float a = glm::radians(azimuthDegrees), e = glm::radians(elevationDegrees);
+  return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
+}
+
+// The map (1024 x 512, 4 x 4 samples per texel: the disk's rim antialiased) and scene.json with
+// `models`, by default the sphere of radius 0.5 at height sphereY.
+SunScene writeSunScene(const std::string& name, glm::vec3 sun, float sphereY, nlohmann::json models = nullptr) {
+  SunScene s{test::scratchDir() / name, {}, sun, sphereY};
+  fs::create_directories(s.dir);
+  const float cosRadius = std::cos(glm::radians(kSunRadiusDegrees));
+  const Image map = latLongFromRadiance(1024, 512, 4, [&](const glm::vec3& d) {
+    return glm::vec3(kSky + (glm::dot(d, sun) >= cosRadius ? kSunRadiance : 0.0f));
+  });
+  writeExr(s.dir / "sun.exr", map, {.pixelType = PixelType::Float, .envmap = EnvmapLayout::LatLong});
+  const nlohmann::json scene = {
+      {"models", models.is_null() ? nlohmann::json{{{"shape", "sphere"}, {"translation", {0.0, sphereY, 0.0}}, {"scale", 0.5}}}
+                                  : models},
+      {"ground", {{"height", 0.0}, {"size", 6.0}}},
+      {"environment", {{"file", "sun.exr"}}},
+      {"camera", {{"position", {0.0, 2.6, 5.0}}, {"target", {0.3, 0.3, 0.0}}, {"yfov", 40.0}}},
+      {"width", kWidth},
+      {"height", kHeight}};
+  s.scene = s.dir / "scene.json";
+  std::ofstream(s.scene) << scene.dump(2);
+  return s;
+}
+
+// The scene baked in memory, with the sun as its one light and the uniform sky as the residual
+// (what sun extraction gives for this map; written by hand so that the test states the answer).
+BakedScene bakeWithSun(const SunScene& s) {
+  InMemoryBakeOptions options;
+  options.aoRays = 32;
+  BakedScene bake = loadOrBakeScene(s.scene, options);
+  const EnvironmentStages sky = computeEnvironmentStages(
+      EnvironmentMap::fromImage(latLongFromRadiance(64, 32, 1, [](const glm::vec3&) { return glm::vec3(kSky); }), "sky"),
+      kViewerEnvironmentStages);
+  EnvironmentLight light;
+  light.direction = s.sun;
+  light.angularRadius = glm::radians(kSunRadiusDegrees);
+  light.solidAngle = 2.0f * glm::pi<float>() * (1.0f - std::cos(light.angularRadius));
+  light.radiance = glm::vec3(kSunRadiance);
+  light.irradiance = light.radiance * light.solidAngle;
+  for (int k = 0; k < kShCoefficients; ++k)
+    light.sh9.coefficients[std::size_t(k)] = bake.env.sh9.coefficients[std::size_t(k)] - sky.sh9.coefficients[std::size_t(k)];
+  bake.env.lights.suns = {light};
+  bake.env.residualSh9 = sky.sh9;
+  bake.env.residualSpecular = sky.specular;
+  return bake;
+}
+
+Image renderEngine(Renderer& renderer, const BakedScene& bake, ShadingMode mode) {
+  RenderTarget target(kWidth, kHeight, 4);
+  FrameSettings settings;
+  settings.mode = mode;
+  settings.drawSky = false;
+  renderer.render(sceneCamera(bake.scene, float(kWidth) / float(kHeight)), settings, target.framebuffer(), kWidth,
+                  kHeight);
+  target.resolve();
+  Image image = target.readColor();
+  checkGlErrors("shadow test render");
+  return image;
+}
+
+Image renderTrace(const SunScene& s) {
+  const fs::path out = s.dir / "trace.exr";
+  std::string output;
+  const std::string command = test::shellQuoted(test::binDir() / "iblkit-trace") + " " + test::shellQuoted(s.scene) +
+                              " -o " + test::shellQuoted(out) + " --spp 96 --max-depth 2 --seed 3 2>&1";
+  EXPECT_EQ(test::runCommand(command, &output), 0) << command << "\n" << output;
+  return readExr(out);
+}
+
+// The raster position of world point p (the core camera's projection, row 0 at the top).
+glm::vec2 project(const BakedScene& bake, const glm::vec3& p) {
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  const glm::vec4 clip = camera.projectionMatrix(float(kWidth) / float(kHeight)) * camera.viewMatrix() * glm::vec4(p, 1.0f);
+  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  return {(ndc.x * 0.5f + 0.5f) * kWidth, (0.5f - ndc.y * 0.5f) * kHeight};
+}
+
+// Mean luminance of rows y - 2 .. y + 2 at every x.
+std::vector<float> rowProfile(const Image& image, int y) {
+  std::vector<float> profile(std::size_t(image.width()), 0.0f);
+  for (int x = 0; x < image.width(); ++x)
+    for (int dy = -2; dy <= 2; ++dy) profile[std::size_t(x)] += luminance(glm::vec3(image.at(x, y + dy))) / 5.0f;
+  return profile;
+}
+
+struct Edge {
+  float position = 0.0f;  // x where the profile crosses half-way from the umbra to the lit level
+  float width = 0.0f;     // |x(90%) - x(10%)|
+};
+
+// The edge from the umbra at `centre` walking by `step` (+1 right, -1 left) to the lit level read
+// `litOffset` pixels beyond the 50% crossing.
+Edge findEdge(const std::vector<float>& profile, int centre, int step) {
+  const float umbra = profile[std::size_t(centre)];
+  float lit = umbra;
+  for (int x = centre; x >= 0 && x < int(profile.size()); x += step) lit = std::max(lit, profile[std::size_t(x)]);
+  auto crossing = [&](float fraction) {
+    const float level = umbra + fraction * (lit - umbra);
+    for (int x = centre; x + step >= 0 && x + step < int(profile.size()); x += step) {
+      const float a = profile[std::size_t(x)], b = profile[std::size_t(x + step)];
+      if (a < level && b >= level) return float(x) + 0.5f + float(step) * (level - a) / (b - a);
+    }
+    return -1.0f;
+  };
+  return {crossing(0.5f), std::abs(crossing(0.9f) - crossing(0.1f))};
+}
+
+class ShadowTest : public ::testing::Test {
+ protected:
+  void SetUp() override { test::glContext(); }
+};
+
+TEST_F(ShadowTest, SphereShadowEdgesAndPenumbraMatchTheReference) {
+  // Sun from -X, 55 degrees up: the shadow's centre is on the ground at x = 1 / tan(55) = 0.70.
+  const SunScene s = writeSunScene("shadow_sphere", sunDirection(-90.0f, 55.0f), 1.0f);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  const Image engine = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
+  const Image reference = renderTrace(s);
+  const glm::vec2 centre = project(bake, {1.0f / std::tan(glm::radians(55.0f)), 0.0f, 0.0f});
+  const int row = int(centre.y);
+  const std::vector<float> a = rowProfile(engine, row), b = rowProfile(reference, row);
+  for (int step : {-1, 1}) {
+    const Edge e = findEdge(a, int(centre.x), step), r = findEdge(b, int(centre.x), step);
+    std::cout << (step < 0 ? "near" : "far") << " edge: engine x " << e.position << " width " << e.width
+              << ", reference x " << r.position << " width " << r.width << '\n';
+    EXPECT_GT(r.position, 0.0f);
+    EXPECT_NEAR(e.position, r.position, 2.0f);
+    EXPECT_NEAR(e.width, r.width, 2.0f);
+  }
+}
+
+// Where the camera ray through pixel (x, y)'s centre meets the ground y = 0 (false above the horizon).
+bool groundPoint(const BakedScene& bake, int x, int y, glm::vec3& point) {
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  const Ray ray = camera.primaryRay(glm::vec2(x + 0.5f, y + 0.5f), kWidth, kHeight);
+  if (ray.direction.y >= 0.0f) return false;
+  point = ray.origin - ray.direction * (ray.origin.y / ray.direction.y);
+  return true;
+}
+
+// Whether the whole sun is visible from `p` with a margin: the angle between the sun and the sphere
+// (radius 0.5 at (0, sphereY, 0)) exceeds the sphere's angular radius plus the sun's plus 2 degrees.
+bool wholeSunVisible(const SunScene& s, const glm::vec3& p) {
+  const glm::vec3 toSphere = glm::vec3(0.0f, s.sphereY, 0.0f) - p;
+  const float distance = glm::length(toSphere);
+  if (distance <= 0.5f) return false;
+  const float angle = std::acos(std::clamp(glm::dot(toSphere / distance, s.sun), -1.0f, 1.0f));
+  return angle > std::asin(0.5f / distance) + glm::radians(kSunRadiusDegrees + 2.0f);
+}
+
+struct AcneCheck {
+  int pixels = 0;
+  float minRatio = 1.0f, meanRatio = 0.0f;
+};
+
+// Shadowed over unshadowed radiance on the ground pixels (and the sphere's, lit side) that see the
+// whole sun: 1 without acne.
+AcneCheck shadowedOverUnshadowedWhereLit(const SunScene& s, const BakedScene& bake, Renderer& renderer) {
+  const Image shadowed = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
+  const Image unshadowed = renderEngine(renderer, bake, ShadingMode::Lights);
+  AcneCheck check;
+  // Pixels whose 3 x 3 neighbourhood is ground only (no silhouette of the sphere).
+  auto groundOnly = [&](int x, int y) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const glm::vec4 c = unshadowed.at(x + dx, y + dy);
+        if (c.a != 0.0f || luminance(glm::vec3(c)) <= 0.0f) return false;
+      }
+    return true;
+  };
+  for (int y = 1; y + 1 < kHeight; ++y)
+    for (int x = 1; x + 1 < kWidth; ++x) {
+      glm::vec3 p;
+      if (!groundOnly(x, y) || !groundPoint(bake, x, y, p) || !wholeSunVisible(s, p)) continue;
+      const float ratio = luminance(glm::vec3(shadowed.at(x, y))) / luminance(glm::vec3(unshadowed.at(x, y)));
+      check.minRatio = std::min(check.minRatio, ratio);
+      check.meanRatio += ratio;
+      ++check.pixels;
+    }
+  if (check.pixels) check.meanRatio /= float(check.pixels);
+  return check;
+}
+
+TEST_F(ShadowTest, NoAcneOnTheLitGroundFromHighAndGrazingSun) {
+  for (float elevation : {55.0f, 10.0f}) {
+    const SunScene s = writeSunScene("acne_" + std::to_string(int(elevation)), sunDirection(-60.0f, elevation), 1.0f);
+    const BakedScene bake = bakeWithSun(s);
+    Renderer renderer(bake);
+    const AcneCheck check = shadowedOverUnshadowedWhereLit(s, bake, renderer);
+    std::cout << "sun " << elevation << " degrees up: " << check.pixels << " lit ground pixels, shadowed / unshadowed min "
+              << check.minRatio << " mean " << check.meanRatio << '\n';
+    EXPECT_GT(check.pixels, 10000);
+    EXPECT_GT(check.minRatio, 0.99f);
+    EXPECT_GT(check.meanRatio, 0.999f);
+  }
+}
+
+// The maps depend on the lights only: frames from other cameras render none; a turned environment
+// (the light's direction moves) and a new environment render them again; unshadowed modes none.
+TEST_F(ShadowTest, ShadowMapsAreRenderedOnlyWhenALightChanges) {
+  const SunScene s = writeSunScene("renders", sunDirection(-90.0f, 55.0f), 1.0f);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  RenderTarget target(64, 36, 1);
+  FrameSettings settings;
+  settings.mode = ShadingMode::Lights;
+  Camera camera = sceneCamera(bake.scene, 16.0f / 9.0f);
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  EXPECT_EQ(renderer.shadowMapRenders(), 0);
+  settings.mode = ShadingMode::LightsShadowed;
+  for (int frame = 0; frame < 3; ++frame) {
+    camera.position += glm::vec3(0.3f, 0.1f, -0.2f);
+    renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  }
+  EXPECT_EQ(renderer.shadowMapRenders(), 1);
+  settings.envRotationDegrees = 30.0f;
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  EXPECT_EQ(renderer.shadowMapRenders(), 2);
+  settings.shadows = false;  // drawn as lights
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  settings.shadows = true;
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  EXPECT_EQ(renderer.shadowMapRenders(), 2);
+  renderer.setEnvironment(bake.env);
+  renderer.render(camera, settings, target.framebuffer(), 64, 36);
+  EXPECT_EQ(renderer.shadowMapRenders(), 3);
+  checkGlErrors("shadow map renders");
+}
+
+// K below the number of suns: a sun not drawn as a light keeps its diffuse light in the residual's
+// SH9 (SH is linear). With K = 0 the open ground, far from the sphere, gets the map's SH9 irradiance
+// (sky + sun) from the residual alone: within 2% of K = 1's residual + disk light.
+TEST_F(ShadowTest, SunsNotDrawnStayInTheResidual) {
+  const SunScene s = writeSunScene("k0", sunDirection(-90.0f, 55.0f), 1.0f);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  FrameSettings one, none;
+  one.mode = none.mode = ShadingMode::Lights;
+  one.drawSky = none.drawSky = false;
+  none.lightCount = 0;
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  RenderTarget target(kWidth, kHeight, 1);
+  renderer.render(camera, one, target.framebuffer(), kWidth, kHeight);
+  const Image withLight = target.readColor();
+  renderer.render(camera, none, target.framebuffer(), kWidth, kHeight);
+  const Image withoutLight = target.readColor();
+  // The ground's front corner region (bottom-left of the frame): far from the sphere, open sky.
+  float a = 0.0f, b = 0.0f;
+  for (int y = kHeight - 20; y < kHeight - 5; ++y)
+    for (int x = 5; x < 40; ++x) {
+      a += luminance(glm::vec3(withLight.at(x, y)));
+      b += luminance(glm::vec3(withoutLight.at(x, y)));
+    }
+  std::cout << "open ground, K = 0 over K = 1: " << b / a << '\n';
+  EXPECT_GT(a, 0.0f);
+  EXPECT_NEAR(b / a, 1.0f, 0.02f);
+}
+
+// A wall (a 1 m double-sided square standing on the ground, facing the camera) with the sun behind
+// it, 20 degrees up: its shadow starts at its base. The ground 1 to 20 cm in front of the base, in
+// the umbra, must be dark (a peter-panning gap would leave a lit line along the base).
+TEST_F(ShadowTest, ShadowStartsAtTheContact) {
+  const glm::vec3 sun = sunDirection(160.0f, 20.0f);
+  const SunScene s = writeSunScene("contact", sun, 0.0f, {{{"file", "wall.gltf"}, {"translation", {0.0, 0.5, 0.0}}}});
+  test::GltfBuilder builder;
+  builder.addQuadNode(0.5f);
+  builder.document()["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}}},
+                                      {"doubleSided", true}}};
+  builder.write(s.dir / "wall.gltf", test::GltfBuilder::Storage::BinFile);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  const Image shadowed = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
+  const Image unshadowed = renderEngine(renderer, bake, ShadingMode::Lights);
+  int checked = 0;
+  for (float t = 0.01f; t <= 0.2f; t += 0.01f) {
+    const glm::vec2 pixel = project(bake, glm::vec3(0.0f, 0.0f, t));
+    const int x = int(pixel.x), y = int(pixel.y);
+    const glm::vec4 lit = unshadowed.at(x, y);
+    if (lit.a != 0.0f) continue;  // the sphere hides this point
+    const float ratio = luminance(glm::vec3(shadowed.at(x, y))) / luminance(glm::vec3(lit));
+    std::cout << "contact + " << t << " m: shadowed / unshadowed " << ratio << '\n';
+    EXPECT_LT(ratio, 0.25f) << t;
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+}
+
+}  // namespace
+}  // namespace iblkit
