@@ -2,6 +2,7 @@
 
 #include "bakefile/bake_layout.h"
 #include "bakefile/brdf_lut_exr.h"
+#include "bakefile/environment_lights_json.h"
 #include "bakefile/irradiance_exr.h"
 #include "bakefile/sh9_json.h"
 #include "core/environment_map_file.h"
@@ -17,6 +18,11 @@ void writeEnvironmentStages(const fs::path& folder, const EnvironmentStages& sta
   if (stages.irradiance.size > 0) writeIrradianceCubeExr(folder / kBakeIrradianceFile, stages.irradiance);
   writeSpecularCubeExr(folder / kBakeSpecularFile, stages.specular);
   writeBrdfLutExr(folder / kBakeBrdfLutFile, stages.brdfLut);
+  if (!stages.residualSpecular.levels.empty()) {
+    writeEnvironmentLightsJson(folder / kBakeLightsFile, stages.lights);
+    writeSh9Json(folder / kBakeResidualSh9File, stages.residualSh9, stages.shWindowCutoff);
+    writeSpecularCubeExr(folder / kBakeResidualSpecularFile, stages.residualSpecular);
+  }
 }
 
 EnvironmentStages readEnvironmentStages(const fs::path& folder, const BakeInputs& inputs) {
@@ -35,6 +41,12 @@ EnvironmentStages readEnvironmentStages(const fs::path& folder, const BakeInputs
   // The baker writes the irradiance cube unless its size is 0: without the file the cube is absent
   // (size 0), and only the irradiance modes need it.
   if (fs::exists(folder / kBakeIrradianceFile)) env.irradiance = readIrradianceCubeExr(folder / kBakeIrradianceFile);
+  // The lights and the residual come together; a bake without env/lights.json has neither.
+  if (std::filesystem::exists(folder / kBakeLightsFile)) {
+    env.lights = readEnvironmentLightsJson(requireBakeFile(folder / kBakeLightsFile));
+    env.residualSh9 = readSh9Json(requireBakeFile(folder / kBakeResidualSh9File));
+    env.residualSpecular = readSpecularCubeExr(requireBakeFile(folder / kBakeResidualSpecularFile));
+  }
   return env;
 }
 

@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <string>
+#include <utility>
 
 #include "baker/brdf_lut.h"
 #include "baker/irradiance_cube.h"
@@ -22,9 +23,9 @@ void requireEnvironmentForStages(const EnvironmentMap& environment, const std::f
 EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, const EnvironmentStageOptions& options,
                                            const std::function<void(std::size_t, std::size_t)>& progress,
                                            EnvironmentStageTimes* times) {
-  constexpr std::size_t kStages = 4;
+  const std::size_t stageCount = options.lights ? 6 : 4;
   auto step = [&](std::size_t done) {
-    if (progress) progress(done, kStages);
+    if (progress) progress(done, stageCount);
   };
   EnvironmentStageTimes measured;
   Stopwatch stopwatch;
@@ -50,6 +51,25 @@ EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, co
   stages.brdfLut = computeBrdfLut(options.lutSize, options.lutSamples);
   measured.brdfLut = stopwatch.lap();
   step(4);
+  if (options.lights) {
+    ExtractedSuns extracted = extractSuns(environment, options.suns);
+    stages.lights.suns = std::move(extracted.suns);
+    stages.lights.sunThreshold = extracted.threshold;
+    stages.lights.medianCut = medianCutLights(environment, options.medianCutLevels);
+    stages.lights.medianCutLevels = options.medianCutLevels;
+    // The residual in the map's own frame, as the map: the same rotation and intensity.
+    EnvironmentMap residual = EnvironmentMap::fromImage(std::move(extracted.residual), "residual");
+    residual.setRotationDegrees(environment.rotationDegrees());
+    residual.setIntensity(environment.intensity());
+    measured.lights = stopwatch.lap();
+    step(5);
+    // The same window as sh9: windowing is linear, so residualSh9 plus the suns' windowed sh9 is sh9.
+    stages.residualSh9 = windowSh9(projectEnvironmentSh9(residual), stages.shWindowCutoff);
+    measured.residualSh9 = stopwatch.lap();
+    stages.residualSpecular = prefilterSpecular(residual, specular);
+    measured.residualSpecular = stopwatch.lap();
+    step(6);
+  }
   if (times) *times = measured;
   return stages;
 }

@@ -61,8 +61,13 @@ struct EnvironmentLight {
 // std::invalid_argument otherwise.
 std::vector<EnvironmentLight> medianCutLights(const EnvironmentMap& map, int levels);
 
+// The bake's median-cut levels unless told otherwise: 16 regions.
+inline constexpr int kDefaultMedianCutLevels = 4;
+
 // The automatic threshold's peak-to-mean ratio k (automaticSunThreshold).
 inline constexpr float kSunPeakToMean = 64.0f;
+// The widest sun, 10 degrees in radians (SunExtractionOptions::maxAngularRadius).
+inline constexpr float kMaxSunAngularRadius = 0.17453293f;
 
 struct SunExtractionOptions {
   // Luminance (intensity applied) above which texels belong to a light. <= 0: automatic,
@@ -73,6 +78,9 @@ struct SunExtractionOptions {
   int maxLights = 4;
   // Regions carrying less than this fraction of the map's energy stay in the residual.
   float minEnergyFraction = 0.01f;
+  // Regions whose light (the disk of the same spread) is wider than this (radians) are no sun and
+  // stay in the residual: a bright cap of sky, which SH9 holds, not a compact source to shadow.
+  float maxAngularRadius = kMaxSunAngularRadius;
 };
 
 struct ExtractedSuns {
@@ -88,10 +96,11 @@ struct ExtractedSuns {
 // (all the texels of the top row touch at +Y, those of the bottom row at -Y). A region's light
 // carries texel x (1 - t / luminance) of each of its texels (chroma kept); the residual keeps
 // texel x t / luminance. The options.maxLights regions of largest irradiance luminance that carry
-// at least options.minEnergyFraction of the map's energy (sum of luminance x solid angle) become
-// lights; the texels of the others stay whole in the residual. So residual + lights == map.
-// Throws std::invalid_argument for a non-finite threshold, maxLights < 0, minEnergyFraction
-// outside [0, 1] or peakToMean < 1 (when automatic).
+// at least options.minEnergyFraction of the map's energy (sum of luminance x solid angle) and are
+// at most options.maxAngularRadius wide become lights; the texels of the others stay whole in the
+// residual. So residual + lights == map. Throws std::invalid_argument for a non-finite threshold,
+// maxLights < 0, minEnergyFraction outside [0, 1], maxAngularRadius < 0 or NaN, or peakToMean < 1
+// (when automatic).
 ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions& options = {});
 
 // The automatic sun threshold (docs/dominant-lights.md): the largest t with

@@ -55,9 +55,13 @@ std::pair<int, int> wrappedColumnSpan(const std::vector<int>& used, int width) {
   return {start, start + width - widestGap};
 }
 
-// The light a region's texels make, and their residual texels written into `residual`.
-EnvironmentLight regionLight(const EnvironmentMap& map, const Region& region, float threshold,
-                             Image& residual) {
+// What the residual keeps of a texel above the threshold (stored units, intensity not applied).
+glm::vec3 residualPart(const EnvironmentMap& map, int x, int y, float threshold) {
+  return glm::vec3(map.image().at(x, y)) * (threshold / map.texelLuminance(x, y));
+}
+
+// The light a region's texels make.
+EnvironmentLight regionLight(const EnvironmentMap& map, const Region& region, float threshold) {
   const int width = map.width();
   EnvironmentLight light;
   light.kind = EnvironmentLightKind::Sun;
@@ -70,13 +74,10 @@ EnvironmentLight regionLight(const EnvironmentMap& map, const Region& region, fl
   float brightest = -1.0f;
   for (const std::size_t index : region.texels) {
     const int x = int(index % std::size_t(width)), y = int(index / std::size_t(width));
-    const glm::vec4 texel = map.image().at(x, y);
     const float lum = map.texelLuminance(x, y);
-    // Stored units (intensity not applied); the light's part is what the residual does not keep,
-    // so the two add up to the texel.
-    const glm::vec3 kept = glm::vec3(texel) * (threshold / lum);
-    residual.at(x, y) = glm::vec4(kept, texel.a);
-    const glm::vec3 carried = map.intensity() * (glm::vec3(texel) - kept);
+    // The light's part is what the residual does not keep, so the two add up to the texel.
+    const glm::vec3 carried =
+        map.intensity() * (glm::vec3(map.image().at(x, y)) - residualPart(map, x, y, threshold));
     const float dOmega = map.texelSolidAngle(y);
     const glm::vec3 direction = map.texelDirection(x, y);
     // Unit to double precision, so that a single texel's centroid has length 1 (spread 0).
@@ -163,6 +164,8 @@ ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions&
   if (options.maxLights < 0) throw std::invalid_argument("extractSuns: maxLights must be >= 0");
   if (!(options.minEnergyFraction >= 0.0f && options.minEnergyFraction <= 1.0f))
     throw std::invalid_argument("extractSuns: minEnergyFraction must be in [0, 1]");
+  if (!(options.maxAngularRadius >= 0.0f))
+    throw std::invalid_argument("extractSuns: maxAngularRadius must be >= 0");
   ExtractedSuns result;
   result.threshold =
       options.threshold > 0.0f ? options.threshold : automaticSunThreshold(map, options.peakToMean);
@@ -220,7 +223,13 @@ ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions&
   for (const Region& region : found) {
     if (int(result.suns.size()) >= options.maxLights) break;
     if (region.energy < double(options.minEnergyFraction) * mapEnergy || region.energy <= 0.0) break;
-    result.suns.push_back(regionLight(map, region, result.threshold, result.residual));
+    EnvironmentLight light = regionLight(map, region, result.threshold);
+    if (light.angularRadius > options.maxAngularRadius) continue;  // no sun: it stays in the residual
+    for (const std::size_t i : region.texels) {
+      const int x = int(i % std::size_t(width)), y = int(i / std::size_t(width));
+      result.residual.at(x, y) = glm::vec4(residualPart(map, x, y, result.threshold), map.image().at(x, y).a);
+    }
+    result.suns.push_back(std::move(light));
   }
   return result;
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bakefile/bake_record.h"
+#include "bakefile/environment_lights_json.h"
 #include "bakefile/sh9_json.h"
 #include "core/error.h"
 #include "core/gltf_load.h"
@@ -80,6 +81,7 @@ std::string fileName(Loader loader, std::span<const std::uint8_t> bytes) {
     case Loader::BakeRecord: return "bake.json";
     case Loader::Sh9: return "sh9.json";
     case Loader::Texture: return "texture.img";
+    case Loader::Lights: return "lights.json";
   }
   std::abort();
 }
@@ -108,6 +110,7 @@ void load(Loader loader, const fs::path& file) {
       decodeTextureImage(image, std::vector<std::uint8_t>(bytes.begin(), bytes.end()), file, "image");
       return;
     }
+    case Loader::Lights: readEnvironmentLightsJson(file); return;
   }
 }
 

@@ -256,6 +256,13 @@ put("bake_record", "seed_bake.json", json.dumps({
     "timings": {"total_s": 1.5}}, indent=1))
 put("bake_record", "seed_bake_no_env.json", json.dumps({
     "version": "iblkit-bake 1", "inputs": {"scene": "scene.json", "environment": None}, "parameters": {}}))
+sh9 = [[0.1 * k, 0.2, 0.3 - 0.01 * k] for k in range(9)]
+light = {"direction": [0.6, 0.8, 0.0], "irradiance": [5.5, 5.6, 5.1], "radiance": [8169.2, 8232.3, 7565.7],
+         "solidAngle": 0.00068, "angularRadius": 0.0147, "texels": [299, 55, 310, 64], "sh9": sh9}
+put("lights", "seed_lights.json", json.dumps({
+    "kind": "iblkit environment lights", "units": "...", "sunThreshold": 21.8, "medianCutLevels": 1,
+    "suns": [light], "medianCut": [dict(light, texels=[0, 0, 256, 256]), dict(light, texels=[256, 0, 512, 256])]},
+    indent=1))
 put("sh9", "seed_sh9.json", json.dumps({
     "basis": "real, orthonormal", "A": [3.14159, 2.0944, 0.785398],
     "L": [[0.1 * k, 0.2, 0.3 - 0.01 * k] for k in range(9)], "windowCutoff": 22.75}, indent=1))

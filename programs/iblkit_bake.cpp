@@ -4,11 +4,14 @@
 //               [--env-intensity I] -o OUTDIR [--ao-rays N]
 //               [--ao-distance D] [--ao-falloff P] [--ao-area] [--bounces N] [--seed S] [--threads T]
 //               [--sh-window auto|none|BANDS] [--specular-samples N] [--lut-size N]
+//               [--sun-threshold auto|L] [--max-suns N] [--median-cut-levels N]
 //
 // OUTDIR/scene.glb  the whole flattened scene (world-space meshes, ground included, materials with
 //                   the scene's overrides applied, camera) with per-vertex visibility attributes
 //                   (visibility_attributes.h);
-// OUTDIR/bake.json  inputs, parameters, per-stage timings and ray counts.
+// OUTDIR/env/       with an environment: SH9, irradiance cube, specular chain, DFG table, the
+//                   dominant lights (env/lights.json) and the residual's SH9 and specular chain;
+// OUTDIR/bake.json  inputs, parameters, per-stage timings, ray and light counts.
 // OUTDIR appears only when everything is written (output_directory.h).
 
 #include <tbb/global_control.h>
@@ -16,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -34,6 +38,7 @@
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
 #include "cli/program.h"
+#include "core/environment_lights.h"
 #include "core/environment_map_file.h"
 #include "core/error.h"
 #include "core/output_directory.h"
@@ -64,6 +69,9 @@ struct Options {
   std::string shWindow = "auto";  // "auto", "none" or a cutoff in bands
   std::uint32_t specularSamples = 1024;
   int lutSize = 128;
+  std::string sunThreshold = "auto";  // "auto" or a luminance
+  int maxSuns = SunExtractionOptions{}.maxLights;
+  int medianCutLevels = kDefaultMedianCutLevels;
   bool force = false;
 };
 
@@ -111,6 +119,18 @@ std::optional<float> shWindowCutoff(const std::string& choice) {
   failUsage("--sh-window", "expected auto, none or a positive number of bands, got '" + choice + "'");
 }
 
+// The sun extraction threshold: automatic (0, automaticSunThreshold) or a positive luminance.
+float sunThreshold(const std::string& choice) {
+  if (choice == "auto") return 0.0f;
+  try {
+    std::size_t used = 0;
+    const float threshold = std::stof(choice, &used);
+    if (used == choice.size() && std::isfinite(threshold) && threshold > 0.0f) return threshold;
+  } catch (const std::exception&) {
+  }
+  failUsage("--sun-threshold", "expected auto or a positive luminance, got '" + choice + "'");
+}
+
 // The environment stages (baker/environment_stages.h), written into `folder`'s env/; returns
 // bake.json's "environment" section.
 json bakeEnvironment(const EnvironmentMap& environment, const Options& options, std::optional<float> windowCutoff,
@@ -119,6 +139,10 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   stageOptions.shWindowCutoff = windowCutoff;
   stageOptions.specularSamples = options.specularSamples;
   stageOptions.lutSize = options.lutSize;
+  stageOptions.lights = true;
+  stageOptions.suns.threshold = sunThreshold(options.sunThreshold);
+  stageOptions.suns.maxLights = options.maxSuns;
+  stageOptions.medianCutLevels = options.medianCutLevels;
   EnvironmentStageTimes times;
   const EnvironmentStages stages =
       computeEnvironmentStages(environment, stageOptions, progressBar("environment"), &times);
@@ -127,6 +151,9 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
   timings["irradiance_s"] = times.irradiance;
   timings["specular_s"] = times.specular;
   timings["brdf_lut_s"] = times.brdfLut;
+  timings["lights_s"] = times.lights;
+  timings["residual_sh9_s"] = times.residualSh9;
+  timings["residual_specular_s"] = times.residualSpecular;
   const IrradianceError shError = shIrradianceError(stages.irradiance, stages.sh9);
   return {{"sh_window_cutoff", stages.shWindowCutoff},
           {"irradiance_cube_size", stages.irradiance.size},
@@ -134,12 +161,18 @@ json bakeEnvironment(const EnvironmentMap& environment, const Options& options, 
            {{"mean_relative", shError.meanRelative}, {"max_relative", shError.maxRelative}}},
           {"specular_face_size", stages.specular.levels.front().size},
           {"specular_roughness_per_level", stages.specular.roughness},
-          {"brdf_lut_size", options.lutSize}};
+          {"brdf_lut_size", options.lutSize},
+          {"lights",
+           {{"sun_threshold", stages.lights.sunThreshold},
+            {"suns", stages.lights.suns.size()},
+            {"median_cut_levels", stages.lights.medianCutLevels},
+            {"median_cut", stages.lights.medianCut.size()}}}};
 }
 
 int bake(const Options& options) {
   // Checked before any work.
   const std::optional<float> windowCutoff = shWindowCutoff(options.shWindow);
+  sunThreshold(options.sunThreshold);
   checkEnvironmentOverride(options.environment);
   Stopwatch stopwatch;
   json timings;
@@ -196,7 +229,8 @@ int bake(const Options& options) {
     json environmentReport = nullptr;
     if (environmentMap) {
       environmentReport = bakeEnvironment(*environmentMap, options, windowCutoff, folder, timings);
-      for (const char* file : {kBakeSh9File, kBakeIrradianceFile, kBakeSpecularFile, kBakeBrdfLutFile})
+      for (const char* file : {kBakeSh9File, kBakeIrradianceFile, kBakeSpecularFile, kBakeBrdfLutFile,
+                               kBakeLightsFile, kBakeResidualSh9File, kBakeResidualSpecularFile})
         outputs.push_back(file);
     }
     json record = makeBakeRecord(inputs, {{"ao_rays", options.aoRays},
@@ -206,7 +240,10 @@ int bake(const Options& options) {
                                           {"bounces", options.bounces},
                                           {"seed", options.seed},
                                           {"sh_window", options.shWindow},
-                                          {"specular_samples", options.specularSamples}});
+                                          {"specular_samples", options.specularSamples},
+                                          {"sun_threshold", options.sunThreshold},
+                                          {"max_suns", options.maxSuns},
+                                          {"median_cut_levels", options.medianCutLevels}});
     record["environment"] = environmentReport;
     record["outputs"] = outputs;
     record["timings"] = timings;
@@ -268,6 +305,17 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--lut-size", options.lutSize, "DFG table size")
       ->check(CLI::Range(8, 1024))
+      ->capture_default_str();
+  app.add_option("--sun-threshold", options.sunThreshold,
+                 "luminance above which the map's texels become sun lights (docs/dominant-lights.md): "
+                 "auto or a positive number")
+      ->capture_default_str();
+  app.add_option("--max-suns", options.maxSuns, "the most sun lights extracted from the map")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  app.add_option("--median-cut-levels", options.medianCutLevels,
+                 "median-cut lights: 2^N regions of equal energy")
+      ->check(CLI::Range(0, 12))
       ->capture_default_str();
   app.add_option("--threads", options.threads, "worker threads; 0 = every core")
       ->check(CLI::Range(0, iblkit::kMaxThreads))

@@ -1,7 +1,8 @@
-// iblkit-info FILE...: what iblkit reads from images, environment maps, glTF models and scene
-// files: size, layout and pixel statistics, or meshes, triangles, materials, bounds, camera and
-// environment. `--json` prints one JSON object per file; `--png OUT` writes a tone-mapped preview
-// of one image. A file that cannot be read gets one line on stderr, the other files are still
+// iblkit-info FILE...: what iblkit reads from images, environment maps, glTF models, scene files
+// and bake folders: size, layout and pixel statistics; meshes, triangles, materials, bounds, camera
+// and environment; or a bake's inputs and the dominant lights of its env/lights.json
+// (docs/dominant-lights.md). `--json` prints one JSON object per file; `--png OUT` writes a
+// tone-mapped preview of one image. A file that cannot be read gets one line on stderr, the other files are still
 // described, and the exit status is 1 (cli/program.h).
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -10,6 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "bakefile/bake_layout.h"
+#include "bakefile/bake_record.h"
+#include "bakefile/environment_lights_json.h"
 #include "cli/program.h"
 #include "core/cube_map.h"
 #include "core/environment_map.h"
@@ -186,6 +190,61 @@ json describeScene(const std::filesystem::path& file) {
           {"size", json::array({scene.width, scene.height})}};
 }
 
+// One light of env/lights.json; `share` its part of the map's energy (the median-cut regions tile
+// the map, so their summed luminance is the whole), or negative when unknown.
+json describeLight(const iblkit::EnvironmentLight& light, double share) {
+  json d = {{"direction", vec3Json(light.direction)},
+            {"angularRadiusDegrees", glm::degrees(light.angularRadius)},
+            {"solidAngle", light.solidAngle},
+            {"irradiance", vec3Json(light.irradiance)},
+            {"radiance", vec3Json(light.radiance)}};
+  if (share >= 0.0) d["energyFraction"] = share;
+  return d;
+}
+
+// A bake folder: what it was baked from and the lights of env/lights.json (null: a bake without).
+json describeBake(const std::filesystem::path& folder) {
+  const iblkit::BakeInputs inputs = iblkit::readBakeRecord(folder / iblkit::kBakeRecordFile);
+  json d = {{"file", folder.string()},
+            {"kind", "bake"},
+            {"scene", inputs.scene.string()},
+            {"environment", inputs.environment.string()},
+            {"lights", nullptr}};
+  if (!std::filesystem::exists(folder / iblkit::kBakeLightsFile)) return d;
+  const iblkit::EnvironmentLights lights = iblkit::readEnvironmentLightsJson(folder / iblkit::kBakeLightsFile);
+  double total = 0.0;
+  for (const iblkit::EnvironmentLight& light : lights.medianCut) total += iblkit::luminance(light.irradiance);
+  const auto list = [&](const std::vector<iblkit::EnvironmentLight>& entries) {
+    json out = json::array();
+    for (const iblkit::EnvironmentLight& light : entries)
+      out.push_back(describeLight(light, total > 0.0 ? iblkit::luminance(light.irradiance) / total : -1.0));
+    return out;
+  };
+  d["lights"] = {{"sunThreshold", lights.sunThreshold},
+                 {"suns", list(lights.suns)},
+                 {"medianCutLevels", lights.medianCutLevels},
+                 {"medianCut", list(lights.medianCut)}};
+  return d;
+}
+
+void printLights(const json& lights) {
+  const auto print = [](const char* name, const json& light, std::size_t index) {
+    const auto v = [&](const char* key) {
+      return vec3Text(glm::vec3(light[key][0].get<float>(), light[key][1].get<float>(), light[key][2].get<float>()));
+    };
+    std::printf("    %s %zu: direction %s, angular radius %.3g degrees, irradiance %s", name, index,
+                v("direction").c_str(), light["angularRadiusDegrees"].get<float>(), v("irradiance").c_str());
+    if (light.contains("energyFraction"))
+      std::printf(", %.3g%% of the energy", 100.0 * light["energyFraction"].get<double>());
+    std::printf("\n");
+  };
+  std::printf("  sun threshold %.4g: %zu sun(s)\n", lights["sunThreshold"].get<float>(), lights["suns"].size());
+  for (std::size_t i = 0; i < lights["suns"].size(); ++i) print("sun", lights["suns"][i], i);
+  std::printf("  median cut, %d level(s): %zu light(s)\n", lights["medianCutLevels"].get<int>(),
+              lights["medianCut"].size());
+  for (std::size_t i = 0; i < lights["medianCut"].size(); ++i) print("region", lights["medianCut"][i], i);
+}
+
 void printText(const json& d) {
   std::printf("%s\n", d["file"].get<std::string>().c_str());
   if (d["kind"] == "image") {
@@ -198,6 +257,17 @@ void printText(const json& d) {
     std::printf("  min %s max %s mean %s\n", v("min").c_str(), v("max").c_str(), v("mean").c_str());
     std::printf("  luminance max %.4g mean %.4g\n", d["maxLuminance"].get<float>(),
                 d["meanLuminance"].get<float>());
+    return;
+  }
+  if (d["kind"] == "bake") {
+    std::printf("  bake of %s", d["scene"].get<std::string>().c_str());
+    if (!d["environment"].get<std::string>().empty())
+      std::printf(" under %s", d["environment"].get<std::string>().c_str());
+    std::printf("\n");
+    if (d["lights"].is_null())
+      std::printf("  no lights (no %s)\n", iblkit::kBakeLightsFile);
+    else
+      printLights(d["lights"]);
     return;
   }
   std::printf("  %zu mesh(es) (%zu ground), %zu vertices, %zu triangles, %zu material(s)\n",
@@ -251,7 +321,9 @@ int describeFiles(const Options& options) {
   for (const std::string& name : options.files) {
     try {
       Image pixels;
-      const json d = isImage(name) ? describeImage(name, &pixels) : describeScene(name);
+      const json d = isImage(name)                         ? describeImage(name, &pixels)
+                     : std::filesystem::is_directory(name) ? describeBake(name)
+                                                           : describeScene(name);
       if (!options.png.empty()) iblkit::writePng(options.png, pixels, options.toneMapping);
       if (options.asJson)
         std::printf("%s\n", d.dump().c_str());
@@ -269,8 +341,9 @@ int describeFiles(const Options& options) {
 
 int main(int argc, char** argv) {
   Options options;
-  CLI::App app{"What iblkit reads from images, environment maps, glTF models and scenes", kProgram};
-  app.add_option("files", options.files, "images (.exr .hdr .png), models (.glb .gltf) or scenes (.json)")
+  CLI::App app{"What iblkit reads from images, environment maps, glTF models, scenes and bake folders", kProgram};
+  app.add_option("files", options.files,
+                 "images (.exr .hdr .png), models (.glb .gltf), scenes (.json) or bake folders")
       ->required();
   app.add_flag("--json", options.asJson, "one JSON object per file");
   app.add_option("--png", options.png, "write a tone-mapped PNG preview of the (single) image");

@@ -1,14 +1,19 @@
-// computeEnvironmentStages: the stages iblkit-bake writes and the viewer computes at run time.
+// computeEnvironmentStages: the stages iblkit-bake writes and the viewer computes at run time,
+// the dominant lights and the residual's SH9 and chain included.
 #include "baker/environment_stages.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
+#include "bakefile/bake_layout.h"
+#include "core/environment_lights.h"
 #include "core/environment_sh.h"
 #include "core/image_io.h"
 #include "core/latlong.h"
 #include "support/bake_fixture.h"
+#include "support/error_capture.h"
+#include "support/sun_map.h"
 #include "support/test_paths.h"
 
 namespace iblkit {
@@ -79,6 +84,108 @@ TEST(EnvironmentStages, TheBakeFolderHoldsTheWindowedCoefficientsTheEngineUses) 
   for (int k = 0; k < kShCoefficients; ++k)
     for (int c = 0; c < 3; ++c)
       EXPECT_FLOAT_EQ(read.sh9.coefficients[std::size_t(k)][c], stages.sh9.coefficients[std::size_t(k)][c]) << k;
+}
+
+// A 64 x 32 sky with one sun 6 degrees wide (a few texels), for quick stages.
+EnvironmentMap quickSunnySky() {
+  EnvironmentMap map =
+      test::sunnySky(64, {test::SunDisk{.direction = glm::normalize(glm::vec3(0.5f, 0.7f, 0.3f)),
+                                        .angularRadius = 0.1f,
+                                        .radiance = glm::vec3(400.0f, 350.0f, 300.0f)}});
+  map.setRotationDegrees(35.0f);
+  map.setIntensity(1.5f);
+  return map;
+}
+
+constexpr EnvironmentStageOptions kQuickLightStages{.shWindowCutoff = std::nullopt,
+                                                    .specularSamples = 16,
+                                                    .lutSize = 8,
+                                                    .lutSamples = 16,
+                                                    .irradianceCubeSize = 0,
+                                                    .lights = true};
+
+TEST(EnvironmentStages, LightsAreTheSunsAndMedianCutAndTheResidualHasItsOwnShAndChain) {
+  const EnvironmentMap map = quickSunnySky();
+  std::vector<std::size_t> steps;
+  EnvironmentStageTimes times;
+  const EnvironmentStages stages = computeEnvironmentStages(
+      map, kQuickLightStages,
+      [&](std::size_t done, std::size_t total) {
+        EXPECT_EQ(total, 6u);
+        steps.push_back(done);
+      },
+      &times);
+  EXPECT_EQ(steps, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6}));
+  EXPECT_GT(times.residualSpecular, 0.0);
+  const ExtractedSuns extracted = extractSuns(map);
+  ASSERT_EQ(stages.lights.suns.size(), 1u);
+  EXPECT_EQ(stages.lights.suns[0].irradiance, extracted.suns[0].irradiance);
+  EXPECT_EQ(stages.lights.suns[0].direction, extracted.suns[0].direction);
+  EXPECT_EQ(stages.lights.sunThreshold, extracted.threshold);
+  EXPECT_EQ(stages.lights.medianCutLevels, kDefaultMedianCutLevels);
+  EXPECT_EQ(stages.lights.medianCut.size(), medianCutLights(map, kDefaultMedianCutLevels).size());
+  // The residual, in the map's frame, with the map's window.
+  EnvironmentMap residual = EnvironmentMap::fromImage(extracted.residual, "residual");
+  residual.setRotationDegrees(map.rotationDegrees());
+  residual.setIntensity(map.intensity());
+  const SphericalHarmonics9 residualSh = windowSh9(projectEnvironmentSh9(residual), stages.shWindowCutoff);
+  // Windowing is linear: the residual's windowed SH9 plus the sun's is the map's (sh9).
+  const SphericalHarmonics9 sunSh = windowSh9(stages.lights.suns[0].sh9, stages.shWindowCutoff);
+  for (int k = 0; k < kShCoefficients; ++k)
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(stages.residualSh9.coefficients[k][c], residualSh.coefficients[k][c],
+                  1e-5f * stages.sh9.coefficients[0][c]);
+      EXPECT_NEAR(stages.residualSh9.coefficients[k][c] + sunSh.coefficients[k][c],
+                  stages.sh9.coefficients[k][c], 1e-5f * stages.sh9.coefficients[0][c]);
+    }
+  // The residual's chain is the prefiltered residual: same sizes and roughness, and its level 0
+  // in the sun's direction holds at most the threshold's luminance (bilinear between texels at or
+  // below it), far below the map's.
+  ASSERT_EQ(stages.residualSpecular.levels.size(), stages.specular.levels.size());
+  EXPECT_EQ(stages.residualSpecular.roughness, stages.specular.roughness);
+  const glm::vec3 sun = stages.lights.suns[0].direction;
+  const float residualAtSun = luminance(sampleCubeBilinear(stages.residualSpecular.levels[0], sun));
+  const float mapAtSun = luminance(sampleCubeBilinear(stages.specular.levels[0], sun));
+  EXPECT_LE(residualAtSun, stages.lights.sunThreshold * 1.001f);
+  EXPECT_GT(mapAtSun, 3.0f * residualAtSun);
+}
+
+TEST(EnvironmentStages, TheBakeFolderHoldsTheLightsAndTheResidual) {
+  const EnvironmentMap map = quickSunnySky();
+  const EnvironmentStages stages = computeEnvironmentStages(map, kQuickLightStages);
+  const fs::path scratch = test::scratchDir(), folder = scratch / "light_stages";
+  writeEnvironmentStages(folder, stages);
+  writeExr(folder / "sunny.exr", stages.latLong, {.pixelType = PixelType::Float});
+  BakeInputs inputs;
+  inputs.environment = folder / "sunny.exr";
+  inputs.environmentRotationDegrees = map.rotationDegrees();
+  inputs.environmentIntensity = map.intensity();
+  const EnvironmentStages read = readEnvironmentStages(folder, inputs);
+  ASSERT_EQ(read.lights.suns.size(), stages.lights.suns.size());
+  EXPECT_EQ(read.lights.suns[0].irradiance, stages.lights.suns[0].irradiance);
+  EXPECT_EQ(read.lights.suns[0].sh9.coefficients, stages.lights.suns[0].sh9.coefficients);
+  EXPECT_EQ(read.lights.medianCut.size(), stages.lights.medianCut.size());
+  EXPECT_EQ(read.lights.sunThreshold, stages.lights.sunThreshold);
+  EXPECT_EQ(read.residualSh9.coefficients, stages.residualSh9.coefficients);
+  ASSERT_EQ(read.residualSpecular.levels.size(), stages.residualSpecular.levels.size());
+  EXPECT_EQ(read.residualSpecular.levels[1].faces[2].pixels(),
+            stages.residualSpecular.levels[1].faces[2].pixels());
+  // The residual's files come with env/lights.json.
+  fs::remove(folder / kBakeResidualSpecularFile);
+  EXPECT_EQ(test::errorMessage([&] { readEnvironmentStages(folder, inputs); }),
+            (folder / kBakeResidualSpecularFile).string() + ": missing (incomplete bake folder?)");
+  // A bake without lights (stages computed without them) has none, and reads so.
+  const fs::path plain = scratch / "plain_stages";
+  writeEnvironmentStages(plain, computeEnvironmentStages(map, {.shWindowCutoff = std::nullopt,
+                                                               .specularSamples = 16,
+                                                               .lutSize = 8,
+                                                               .lutSamples = 16,
+                                                               .irradianceCubeSize = 0}));
+  EXPECT_FALSE(fs::exists(plain / kBakeLightsFile));
+  const EnvironmentStages none = readEnvironmentStages(plain, inputs);
+  EXPECT_TRUE(none.lights.suns.empty());
+  EXPECT_TRUE(none.lights.medianCut.empty());
+  EXPECT_TRUE(none.residualSpecular.levels.empty());
 }
 
 }  // namespace

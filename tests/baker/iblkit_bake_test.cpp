@@ -174,7 +174,10 @@ TEST(IblkitBake, WritesTheEnvironmentStagesWhenThereIsAnEnvironment) {
   ASSERT_EQ(status, 0) << log;
   const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
   EXPECT_EQ(report["outputs"], nlohmann::json({"scene.glb", "bake.json", "env/sh9.json", "env/irradiance.exr",
-                                               "env/specular.exr", "env/brdf_lut.exr"}));
+                                               "env/specular.exr", "env/brdf_lut.exr", "env/lights.json",
+                                               "env/residual_sh9.json", "env/residual_specular.exr"}));
+  for (const nlohmann::json& file : report["outputs"])
+    EXPECT_TRUE(fs::is_regular_file(out / file.get<std::string>())) << file;
   // The SH9 irradiance of this smooth sky is close to the brute-force cube, not exact (the bright
   // spot has energy above band 2).
   const float shError = report["environment"]["sh9_irradiance_error"]["mean_relative"];
@@ -183,7 +186,8 @@ TEST(IblkitBake, WritesTheEnvironmentStagesWhenThereIsAnEnvironment) {
   ExrInfo irradianceInfo;
   EXPECT_EQ(readExr(out / "env" / "irradiance.exr", &irradianceInfo).width(), 16);
   EXPECT_EQ(irradianceInfo.envmap, EnvmapLayout::Cube);
-  for (const char* stage : {"sh9_s", "irradiance_s", "specular_s", "brdf_lut_s", "visibility_rays_s"})
+  for (const char* stage : {"sh9_s", "irradiance_s", "specular_s", "brdf_lut_s", "visibility_rays_s",
+                            "lights_s", "residual_sh9_s", "residual_specular_s"})
     EXPECT_GE(report["timings"][stage], 0.0) << stage;
   EXPECT_EQ(report["environment"]["specular_face_size"], 8);  // a quarter of the map's width
   EXPECT_EQ(report["environment"]["specular_roughness_per_level"].size(), 4u);
@@ -194,6 +198,65 @@ TEST(IblkitBake, WritesTheEnvironmentStagesWhenThereIsAnEnvironment) {
   readExr(out / "env" / "specular.exr", &info);
   EXPECT_EQ(info.envmap, EnvmapLayout::Cube);
   EXPECT_EQ(readExr(out / "env" / "brdf_lut.exr").width(), 16);
+}
+
+// The light options are recorded with the counts they gave; env/lights.json holds the lights.
+TEST(IblkitBake, SunAndMedianCutOptionsAreRecordedWithTheLightCounts) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out", env = root / "sunny.exr";
+  // A dim sky and one bright texel: the automatic threshold gives it one sun.
+  Image sunny(32, 16, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+  sunny.at(20, 4) = glm::vec4(5e3f, 5e3f, 5e3f, 1.0f);
+  writeExr(env, sunny, {.pixelType = PixelType::Float});
+  const std::string common = scene.string() + " --env " + env.string() + " -o " + out.string() +
+                             " --ao-rays 4 --specular-samples 16 --lut-size 8";
+  int status = 0;
+  std::string log = bake(common + " --median-cut-levels 3", &status);
+  ASSERT_EQ(status, 0) << log;
+  nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+  EXPECT_EQ(report["parameters"]["sun_threshold"], "auto");
+  EXPECT_EQ(report["parameters"]["max_suns"], 4);
+  EXPECT_EQ(report["parameters"]["median_cut_levels"], 3);
+  EXPECT_EQ(report["environment"]["lights"]["suns"], 1);
+  EXPECT_EQ(report["environment"]["lights"]["median_cut"], 8);
+  nlohmann::json lights = nlohmann::json::parse(std::ifstream(out / "env" / "lights.json"));
+  EXPECT_EQ(lights["suns"].size(), 1u);
+  EXPECT_EQ(lights["medianCut"].size(), 8u);
+  EXPECT_EQ(lights["sunThreshold"].get<float>(),
+            report["environment"]["lights"]["sun_threshold"].get<float>());
+
+  log = bake(common + " --sun-threshold 1e4 --max-suns 2", &status);
+  ASSERT_EQ(status, 0) << log;
+  report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+  EXPECT_EQ(report["parameters"]["sun_threshold"], "1e4");
+  EXPECT_EQ(report["environment"]["lights"]["sun_threshold"], 1e4);
+  EXPECT_EQ(report["environment"]["lights"]["suns"], 0);  // the texel is below 1e4
+  EXPECT_EQ(report["environment"]["lights"]["median_cut"], 16);
+  log = bake(common + " --max-suns 0", &status);
+  ASSERT_EQ(status, 0) << log;
+  report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+  EXPECT_EQ(report["environment"]["lights"]["suns"], 0);
+}
+
+TEST(IblkitBake, BadLightOptionsAreRefusedWithoutOutput) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out", env = root / "sky.exr";
+  writeExr(env, Image(16, 8, glm::vec4(1.0f)), {});
+  const std::string common = scene.string() + " --env " + env.string() + " -o " + out.string();
+  for (const char* bad : {"-1", "0", "nan", "inf", "bright", "5x"}) {
+    int status = 0;
+    const std::string log = bake(common + " --sun-threshold " + bad, &status);
+    EXPECT_EQ(status, 2) << bad;
+    EXPECT_EQ(log, std::string("iblkit-bake: --sun-threshold: expected auto or a positive luminance, got '") +
+                       bad + "'\n");
+  }
+  int status = 0;
+  EXPECT_NE(bake(common + " --max-suns 65", &status).find("--max-suns"), std::string::npos);
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(bake(common + " --median-cut-levels 13", &status).find("--median-cut-levels"), std::string::npos);
+  EXPECT_EQ(status, 2);
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(leftovers(root), 0);
 }
 
 TEST(IblkitBake, BadShWindowIsRefusedWithoutOutput) {

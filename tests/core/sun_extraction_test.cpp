@@ -266,12 +266,28 @@ TEST(SunExtraction, KeepsTheBrightestAboveTheEnergyFloorAndLeavesTheOthersWhole)
   EXPECT_TRUE(extractSuns(map, {.threshold = 10.0f, .maxLights = 0}).suns.empty());
 }
 
+// A bright cap 20 degrees wide (bridge.exr's bright zenith, above its threshold, spreads like a
+// 32 degree disk) is no compact source: it stays in the residual unless the limit is raised.
+// (The automatic threshold would not cut it: it covers 3% of the sphere, more than 1/64.)
+TEST(SunExtraction, AWideBrightCapIsNoSun) {
+  const SunDisk cap{.direction = fromSpherical(60.0f, 0.0f), .angularRadius = glm::radians(20.0f),
+                    .radiance = glm::vec3(200.0f)};
+  const EnvironmentMap map = sunnySky(128, {cap});
+  const ExtractedSuns none = extractSuns(map, {.threshold = 10.0f});
+  EXPECT_TRUE(none.suns.empty());
+  EXPECT_EQ(none.residual.pixels(), map.image().pixels());
+  const ExtractedSuns wide = extractSuns(map, {.threshold = 10.0f, .maxAngularRadius = glm::radians(30.0f)});
+  ASSERT_EQ(wide.suns.size(), 1u);
+  EXPECT_NEAR(wide.suns[0].angularRadius, glm::radians(20.0f), glm::radians(2.0f));
+}
+
 TEST(SunExtraction, RefusesBadOptions) {
   const EnvironmentMap map = EnvironmentMap::constant(glm::vec3(1.0f), 8);
   EXPECT_THROW(extractSuns(map, {.threshold = NAN}), std::invalid_argument);
   EXPECT_THROW(extractSuns(map, {.maxLights = -1}), std::invalid_argument);
   EXPECT_THROW(extractSuns(map, {.minEnergyFraction = 1.5f}), std::invalid_argument);
   EXPECT_THROW(extractSuns(map, {.peakToMean = 0.0f}), std::invalid_argument);
+  EXPECT_THROW(extractSuns(map, {.maxAngularRadius = NAN}), std::invalid_argument);
 }
 
 // What the automatic rule extracts from the report's six maps (docs/dominant-lights.md records the

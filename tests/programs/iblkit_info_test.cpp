@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -221,6 +222,48 @@ TEST(IblkitInfo, PngPreviewNeedsOneImage) {
   const std::string output = info("--png /tmp/x.png a.exr b.exr", &status);
   EXPECT_EQ(status, 2);
   EXPECT_EQ(output, "iblkit-info: --png: needs exactly one image file\n");
+}
+
+// A bake folder (bake.json and env/lights.json written by hand): its inputs and its lights, the
+// suns' share of the energy from the median-cut regions, which tile the map.
+TEST(IblkitInfo, ListsTheLightsOfABakeFolder) {
+  const std::filesystem::path bake = test::scratchDir() / "bake";
+  std::filesystem::create_directories(bake / "env");
+  std::ofstream(bake / "bake.json") << R"({"version": "iblkit-bake 1", "inputs": {"scene": "/s/scene.json",
+    "environment": "/s/sky.exr"}, "parameters": {"environment_rotation_degrees": 0, "environment_intensity": 1}})";
+  const std::string sh9 = R"("sh9": [[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0]])";
+  std::ofstream(bake / "env" / "lights.json")
+      << R"({"kind": "iblkit environment lights", "sunThreshold": 20, "medianCutLevels": 1,
+    "suns": [{"direction": [0, 1, 0], "irradiance": [3, 3, 3], "radiance": [6000, 6000, 6000],
+      "solidAngle": 0.0005, "angularRadius": 0.0126, "texels": [10, 0, 30, 2], )"
+      << sh9 << R"(}],
+    "medianCut": [{"direction": [0, 0.8, 0.6], "irradiance": [3.5, 3.5, 3.5], "radiance": [0.6, 0.6, 0.6],
+      "solidAngle": 6.2832, "angularRadius": 1.5708, "texels": [0, 0, 64, 16], )"
+                  << sh9 << R"(}, {"direction": [0, -1, 0], "irradiance": [0.5, 0.5, 0.5],
+      "radiance": [0.08, 0.08, 0.08], "solidAngle": 6.2832, "angularRadius": 1.5708, "texels": [0, 16, 64, 32], )"
+                  << sh9 << "}]}";
+  int status = 0;
+  const std::string text = info(quoted(bake), &status);
+  EXPECT_EQ(status, 0) << text;
+  const std::vector<std::string> printed = lines(text);
+  ASSERT_EQ(printed.size(), 7u) << text;
+  EXPECT_EQ(printed[1], "  bake of /s/scene.json under /s/sky.exr");
+  EXPECT_EQ(printed[2], "  sun threshold 20: 1 sun(s)");
+  EXPECT_EQ(printed[3],
+            "    sun 0: direction (0, 1, 0), angular radius 0.722 degrees, irradiance (3, 3, 3), 75% of the energy");
+  EXPECT_EQ(printed[4], "  median cut, 1 level(s): 2 light(s)");
+  const nlohmann::json d = nlohmann::json::parse(info("--json " + quoted(bake), &status));
+  EXPECT_EQ(d["kind"], "bake");
+  EXPECT_EQ(d["lights"]["suns"].size(), 1u);
+  EXPECT_NEAR(d["lights"]["medianCut"][1]["energyFraction"].get<double>(), 0.125, 1e-6);
+  // A folder that is no bake, and a bad lights file: one line naming the file.
+  const std::string none = info(quoted(bake / "env"), &status);
+  EXPECT_EQ(status, 1);
+  EXPECT_EQ(none, "iblkit-info: " + (bake / "env" / "bake.json").string() + ": missing (incomplete bake folder?)\n");
+  std::ofstream(bake / "env" / "lights.json") << R"({"kind": "iblkit environment lights"})";
+  EXPECT_EQ(info(quoted(bake), &status),
+            "iblkit-info: " + (bake / "env" / "lights.json").string() + ": lights: missing \"sunThreshold\"\n");
+  EXPECT_EQ(status, 1);
 }
 
 // Every program's command-line errors: one line naming the program, status 2 (cli/program.h).
