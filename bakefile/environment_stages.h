@@ -51,10 +51,10 @@ struct EnvironmentStages {
 void writeEnvironmentStages(const std::filesystem::path& folder, const EnvironmentStages& stages);
 
 // Reads them back from `folder`, with the lat-long map, its rotation and intensity from the bake's
-// `inputs`; env/irradiance.exr only where it exists (else irradiance.size is 0); the lights and
-// the residual only when env/lights.json exists (a bake without it has none: lights and residual
-// stay empty), and then the two residual files must exist too. Throws Error("<file>: ...") naming
-// the file that is missing or invalid, and
+// `inputs`; env/irradiance.exr only where it exists (else irradiance.size is 0); the lights and the
+// residual only when env/lights.json exists (a bake without it has none: lights and residual stay
+// empty), and then the two residual files must exist too. Throws Error("<file>: ...") naming the
+// file that is missing or invalid, and
 // Error("<folder>/bake.json: the bake has no environment stages ...") when `inputs` has none.
 EnvironmentStages readEnvironmentStages(const std::filesystem::path& folder, const BakeInputs& inputs);
 

@@ -33,8 +33,8 @@ struct EnvironmentStageOptions {
 
 // iblkit-view's stages of a map switched to at run time or baked in memory: about 1 s of CPU for
 // a 512 x 256 map (the specular chain's samples and the table are a quarter of the baker's), the
-// irradiance cube (the `irradiance` modes) at the baker's size, about 0.2 s of it, and the lights
-// with the residual's chain (docs/benchmarks.md).
+// irradiance cube (the `irradiance` modes) at the baker's size, about 0.2 s of it, the lights and
+// the residual's chain included (docs/benchmarks.md).
 inline constexpr EnvironmentStageOptions kViewerEnvironmentStages{.shWindowCutoff = std::nullopt,
                                                                   .specularSamples = 256,
                                                                   .lutSize = 64,
