@@ -53,12 +53,19 @@ StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, c
                        {}};
   std::vector<std::string>& arguments = command.arguments;
   appendSize(settings, arguments);
+  // Shadow-mapped frames without sample shading: llvmpipe's sample-rate invocations misplace the
+  // shadow lookups along silhouettes (a lone diffuse sphere under sky: lights-shadowed against
+  // lights FLIP 0.088 with --sample-shading, 0.001 without; docs/engine.md "Shadows"). They shade
+  // as many points per pixel by supersampling twice as far per axis instead.
+  const bool shadowMapped = mode == "lights-shadowed";
+  const bool sampleShading = settings.engineSampleShading && !shadowMapped;
+  int supersample = settings.engineSupersample;
+  if (shadowMapped && settings.engineSampleShading && settings.engineSamples > 1) supersample = std::min(2 * supersample, 4);  // iblkit-view's largest
   if (settings.engineSamples > 1) {
     arguments.insert(arguments.end(), {"--samples", std::to_string(settings.engineSamples)});
-    if (settings.engineSampleShading) arguments.push_back("--sample-shading");
+    if (sampleShading) arguments.push_back("--sample-shading");
   }
-  if (settings.engineSupersample > 1)
-    arguments.insert(arguments.end(), {"--supersample", std::to_string(settings.engineSupersample)});
+  if (supersample > 1) arguments.insert(arguments.end(), {"--supersample", std::to_string(supersample)});
   arguments.insert(arguments.end(), {"--anisotropy", std::to_string(settings.engineAnisotropy)});
   if (settings.benchFrames > 0)
     arguments.insert(arguments.end(), {"--bench", std::to_string(settings.benchFrames)});
