@@ -108,7 +108,11 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
       }
     }
     const float width = cone.widthAt(hit.t);
-    if (width > 0.0f) {
+    if (cone.pixel.present()) {
+      for (int set = 0; set < 2; ++set)
+        inputs.footprintUv[set] = textureFootprintFromDifferentials(
+            cone.pixel, -wo, hit.t, hit.geometricNormal, mesh, hit.primId, set);
+    } else if (width > 0.0f) {
       const float cosine = glm::dot(wo, point.geometricNormal);
       const glm::vec2 lengths = uvPerWorldLength_[meshOfGeometry_[hit.geomId]][hit.primId];
       for (int set = 0; set < 2; ++set)
@@ -120,7 +124,7 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
     point.lobes = brdfLobes(surface.material);
     shading = surface.normal;
   }
-  point.shadingNormal = glm::dot(shading, wo) > 0.0f ? shading : point.geometricNormal;
+  point.shadingNormal = shadingNormalFacingViewer(shading, wo, point.geometricNormal);
   return point;
 }
 

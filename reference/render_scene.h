@@ -23,9 +23,10 @@ struct SurfacePoint {
   // Unit normal of the triangle's plane, flipped towards the side the ray came from (wo).
   glm::vec3 geometricNormal{0.0f};
   // Unit interpolated vertex normal, flipped to the same side as geometricNormal. Where it still
-  // faces away from wo (silhouettes of coarse meshes, where interpolated and flat normals differ
-  // most) it is replaced by geometricNormal, so the BRDF (which reflects nothing when wo is below
-  // the shading normal) never turns a visible surface black.
+  // faces away from wo or nearly (silhouettes of coarse meshes, where interpolated and flat normals
+  // differ most) it is turned towards wo until it faces it by kMinShadingCosine
+  // (shadingNormalFacingViewer, core/surface_material.h), so the BRDF (which reflects nothing when
+  // wo is below the shading normal) never turns a visible surface black.
   // With a normal texture it is the perturbed normal (evaluateSurfaceMaterial about the
   // interpolated normal and tangent turned to wo's side), under the same rule. The glTF occlusion
   // texture is not applied: the tracer traces the visibility it approximates.
@@ -55,9 +56,9 @@ class RenderScene {
   unsigned textureSlots() const { return slots_; }
 
   // The shading data at `hit` (a hit of rays()) seen from direction `wo` (unit, pointing away from
-  // the surface, i.e. minus the ray direction). `cone` is the ray's footprint (its width at
-  // hit.t sets the texture level, textureFootprint in alpha_filter.h); the default reads the
-  // finest level.
+  // the surface, i.e. minus the ray direction). `cone` is the ray's footprint: a camera ray's
+  // differentials set the texture level (textureFootprintFromDifferentials in alpha_filter.h),
+  // else its width at hit.t (textureFootprint); the default reads the finest level.
   SurfacePoint surfacePoint(const Hit& hit, const glm::vec3& wo, const RayCone& cone = {}) const;
 
  private:
