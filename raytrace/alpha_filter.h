@@ -76,19 +76,26 @@ float textureFootprint(float width, float uvPerWorldArea, float cosine);
 // so the same value as textureFootprint(width, uvPerWorldLength^2 as computed, cosine).
 float textureFootprintFromLength(float width, float uvPerWorldLength, float cosine);
 
-// The uv footprint of a camera ray with differentials `pixel` (present()) that hits triangle
-// `triangle` of `mesh` at distance `t` along its unit `direction`, `geometricNormal` the triangle's
-// normal (any length, either side): max(|duv/dx|, |duv/dy|), the change of texCoord set `set` per
+// The world-space gradients of texCoord set `set` over triangle `triangle` of `mesh`: along a step
+// dP in the triangle's plane, u changes by du . dP and v by dv . dP. Zero when the mesh has no such
+// set or the triangle no area.
+struct UvGradient {
+  glm::vec3 du{0.0f}, dv{0.0f};
+};
+UvGradient uvGradient(const Mesh& mesh, std::size_t triangle, int set);
+
+// The uv footprint of a camera ray with differentials `pixel` (present()) that hits a triangle at
+// distance `t` along its unit `direction`, `geometricNormal` the triangle's normal (any length,
+// either side), `gradient` its uvGradient: max(|duv/dx|, |duv/dy|), the change of the uv per
 // footprint step along the image's axes. That is the level of detail OpenGL's isotropic filtering
 // takes (OpenGL 4.5 section 8.14.1, eq. 8.7, rho = max of the two derivatives' lengths in texels:
 // the same for a square texture; for a w x h one, textureLod's sqrt(w h) stands in for the axes'
 // sizes). The hit point moves by dP = t (D . forward) (d' - (d' . n) / (D . n) D) (Igehy 1999,
 // section 3.1.2, for the unit direction D = d / |d|, |d| = 1 / (D . forward)), and uv by the
-// triangle's uv gradient along dP. 0 when the mesh has no such set or the triangle no area; the
-// largest float when the ray grazes the triangle's plane (the coarsest level).
+// gradient along dP. 0 for a zero gradient; the largest float when the ray grazes the triangle's
+// plane (the coarsest level).
 float textureFootprintFromDifferentials(const PixelDifferentials& pixel, const glm::vec3& direction, float t,
-                                        const glm::vec3& geometricNormal, const Mesh& mesh,
-                                        std::size_t triangle, int set);
+                                        const glm::vec3& geometricNormal, const UvGradient& gradient);
 
 // The ratio uv area / world area of triangle `triangle` of `mesh` in texCoord set `set` (0 when
 // the mesh has no such set or the triangle no area), for textureFootprint.

@@ -6,6 +6,7 @@
 // normal, the BRDF lobes. The alpha and doubleSided rules are the RayScene's AlphaFilter
 // (raytrace/alpha_filter.h), attached here; docs/reference-tracer.md "Textures and alpha".
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "core/material.h"
 #include "core/scene.h"
 #include "core/texture_sampling.h"
+#include "raytrace/alpha_filter.h"
 #include "raytrace/ray_scene.h"
 
 namespace iblkit {
@@ -71,6 +73,9 @@ class RenderScene {
   // sqrt(uvPerWorldArea) of uv sets 0 and 1, the ray-cone footprint's per-triangle part
   // (textureFootprintFromLength), computed once rather than from the corners at every hit.
   std::vector<std::vector<glm::vec2>> uvPerWorldLength_;
+  // Per mesh and uv set (empty for the same meshes, and for a set the mesh lacks), uvGradient of
+  // each triangle, for camera rays' footprints (textureFootprintFromDifferentials).
+  std::vector<std::array<std::vector<UvGradient>, 2>> uvGradients_;
   std::shared_ptr<const SceneTextures> textures_;
   unsigned slots_ = kAllTextureSlots;
 };

@@ -232,7 +232,7 @@ TEST(TexturedMaterials, CameraDifferentialsGiveTheUvStepsBetweenNeighbouringRays
     const float dy = glm::length(hitUv(raster + glm::vec2(0.0f, footprint)) - uv);
     const Ray ray = rays(raster);
     const float differential =
-        textureFootprintFromDifferentials(cone.pixel, ray.direction, t, normal, mesh, 0, 0);
+        textureFootprintFromDifferentials(cone.pixel, ray.direction, t, normal, uvGradient(mesh, 0, 0));
     EXPECT_NEAR(differential, std::max(dx, dy), 0.01f * std::max(dx, dy)) << raster.x << ", " << raster.y;
     const float coneFootprint =
         textureFootprint(cone.widthAt(t), uvPerWorldArea(mesh, 0, 0), glm::dot(ray.direction, normal));
@@ -242,10 +242,15 @@ TEST(TexturedMaterials, CameraDifferentialsGiveTheUvStepsBetweenNeighbouringRays
   EXPECT_EQ(checked, 3);
   EXPECT_GT(coneRatio, 0.2f);
   // No such uv set: 0 (the sharpest level), as for a cone.
-  EXPECT_EQ(textureFootprintFromDifferentials(cone.pixel, camera.forward, 3.0f, normal, mesh, 0, 1), 0.0f);
+  EXPECT_EQ(textureFootprintFromDifferentials(cone.pixel, camera.forward, 3.0f, normal, uvGradient(mesh, 0, 1)),
+            0.0f);
   // A ray in the plane: the coarsest level, not a NaN.
-  EXPECT_EQ(textureFootprintFromDifferentials(cone.pixel, e1, 3.0f, normal, mesh, 0, 0),
+  EXPECT_EQ(textureFootprintFromDifferentials(cone.pixel, e1, 3.0f, normal, uvGradient(mesh, 0, 0)),
             std::numeric_limits<float>::max());
+  // The gradient itself: u = 3 e1 . p and v = e2 . p on this plane.
+  const UvGradient gradient = uvGradient(mesh, 0, 0);
+  EXPECT_LT(glm::length(gradient.du - 3.0f * e1), 1e-5f);
+  EXPECT_LT(glm::length(gradient.dv - e2), 1e-5f);
 }
 
 }  // namespace
