@@ -5,6 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace iblkit {
 
 namespace {
@@ -101,11 +105,55 @@ int floorToInt(float x) {
   return static_cast<int>(std::floor(std::clamp(x, -16777216.0f, 16777216.0f)));
 }
 
-// rgbTable decodes R, G and B; alpha is always linear (the table's linear half).
+// rgbTable decodes R, G and B; alpha is always linear (the table's linear half). A level with
+// decoded texels holds these very values.
 glm::vec4 fetch(const MipLevel& level, const float* rgbTable, const float* alphaTable, int x, int y) {
-  const std::uint8_t* texel = &level.rgba[(static_cast<std::size_t>(y) * level.width + x) * 4];
+  const std::size_t index = (static_cast<std::size_t>(y) * level.width + x) * 4;
+  if (!level.decoded.empty()) {
+    const float* texel = &level.decoded[index];
+    return glm::vec4(texel[0], texel[1], texel[2], texel[3]);
+  }
+  const std::uint8_t* texel = &level.rgba[index];
   return glm::vec4(rgbTable[texel[0]], rgbTable[texel[1]], rgbTable[texel[2]], alphaTable[texel[3]]);
 }
+
+// Four floats, one per channel, blended lane by lane: one SSE register where the target has SSE2
+// (every x86-64 target), four scalars elsewhere. Each lane does the IEEE operations the scalar
+// code does (no fused multiply-add: the x86-64 baseline has none), so the results are the same.
+struct Lanes4 {
+#if defined(__SSE2__)
+  __m128 v;
+  static Lanes4 load(const float* p) { return {_mm_loadu_ps(p)}; }
+  static Lanes4 set(float x, float y, float z, float w) { return {_mm_setr_ps(x, y, z, w)}; }
+  static Lanes4 splat(float x) { return {_mm_set1_ps(x)}; }
+  friend Lanes4 operator*(Lanes4 a, Lanes4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+  friend Lanes4 operator+(Lanes4 a, Lanes4 b) { return {_mm_add_ps(a.v, b.v)}; }
+  // The lanes whose bit is set in `channels` (bit k: lane k), the others 0.
+  template <unsigned kChannels>
+  Lanes4 masked() const {
+    if constexpr (kChannels == 0xF) return *this;
+    const __m128 keep = _mm_castsi128_ps(_mm_setr_epi32(kChannels & 1u ? -1 : 0, kChannels & 2u ? -1 : 0,
+                                                        kChannels & 4u ? -1 : 0, kChannels & 8u ? -1 : 0));
+    return {_mm_and_ps(v, keep)};
+  }
+  void store(glm::vec4& out) const { _mm_storeu_ps(&out.x, v); }
+#else
+  float v[4];
+  static Lanes4 load(const float* p) { return {{p[0], p[1], p[2], p[3]}}; }
+  static Lanes4 set(float x, float y, float z, float w) { return {{x, y, z, w}}; }
+  static Lanes4 splat(float x) { return {{x, x, x, x}}; }
+  friend Lanes4 operator*(Lanes4 a, Lanes4 b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1], a.v[2] * b.v[2], a.v[3] * b.v[3]}}; }
+  friend Lanes4 operator+(Lanes4 a, Lanes4 b) { return {{a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2], a.v[3] + b.v[3]}}; }
+  template <unsigned kChannels>
+  Lanes4 masked() const {
+    Lanes4 out = *this;
+    for (int k = 0; k < 4; ++k)
+      if (!((kChannels >> k) & 1u)) out.v[k] = 0.0f;
+    return out;
+  }
+  void store(glm::vec4& out) const { out = glm::vec4(v[0], v[1], v[2], v[3]); }
+#endif
+};
 
 // The wrapped neighbours i0 = wrap(i), i1 = wrap(i + 1) of a LINEAR lookup; REPEAT (the common
 // case) without a second division.
@@ -145,10 +193,11 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
 // The same texels, weights and arithmetic order as sampleLevel, so the same result; false for
 // anything else, which then takes sampleLevel.
 // kChannels (SceneTextures::kRgba ...): the channels computed, the others set to 0 without
-// loading their texels.
+// loading their texels. A level with decoded texels loads each texel's channels at once (its
+// values are the tables' decodings) and blends the four channels in one Lanes4.
 template <unsigned kChannels = 0xF>
 [[gnu::always_inline]] inline bool bilinearRepeatPow2(const MipLevel& level, const float* rgbTable,
-                                                      const float* alphaTable, glm::vec2 uv, float* out) {
+                                                      const float* alphaTable, glm::vec2 uv, Lanes4& out) {
   const int w = level.width, h = level.height;
   if (((w & (w - 1)) | (h & (h - 1))) != 0) return false;
   const float xs = uv.x * w - 0.5f, ys = uv.y * h - 0.5f;
@@ -161,26 +210,39 @@ template <unsigned kChannels = 0xF>
   const float fx = xs - static_cast<float>(i), fy = ys - static_cast<float>(j);
   const int i0 = i & (w - 1), i1 = (i + 1) & (w - 1);
   const int j0 = j & (h - 1), j1 = (j + 1) & (h - 1);
+  const float gx = 1.0f - fx, gy = 1.0f - fy;
+  if (!level.decoded.empty()) {
+    const float* row0 = &level.decoded[static_cast<std::size_t>(j0) * w * 4];
+    const float* row1 = &level.decoded[static_cast<std::size_t>(j1) * w * 4];
+    const Lanes4 wx0 = Lanes4::splat(gx), wx1 = Lanes4::splat(fx);
+    const Lanes4 top = Lanes4::load(row0 + 4 * i0) * wx0 + Lanes4::load(row0 + 4 * i1) * wx1;
+    const Lanes4 bottom = Lanes4::load(row1 + 4 * i0) * wx0 + Lanes4::load(row1 + 4 * i1) * wx1;
+    out = (top * Lanes4::splat(gy) + bottom * Lanes4::splat(fy)).masked<kChannels>();
+    return true;
+  }
   const std::uint8_t* row0 = &level.rgba[static_cast<std::size_t>(j0) * w * 4];
   const std::uint8_t* row1 = &level.rgba[static_cast<std::size_t>(j1) * w * 4];
   const std::uint8_t *a = row0 + 4 * i0, *b = row0 + 4 * i1, *c = row1 + 4 * i0, *d = row1 + 4 * i1;
-  const float gx = 1.0f - fx, gy = 1.0f - fy;
+  float result[4];
   for (int k = 0; k < 3; ++k) {
     if (!((kChannels >> k) & 1u)) {
-      out[k] = 0.0f;
+      result[k] = 0.0f;
       continue;
     }
     const float top = rgbTable[a[k]] * gx + rgbTable[b[k]] * fx;
     const float bottom = rgbTable[c[k]] * gx + rgbTable[d[k]] * fx;
-    out[k] = top * gy + bottom * fy;
+    result[k] = top * gy + bottom * fy;
   }
   if constexpr ((kChannels & 8u) != 0) {
     const float top = alphaTable[a[3]] * gx + alphaTable[b[3]] * fx;
     const float bottom = alphaTable[c[3]] * gx + alphaTable[d[3]] * fx;
-    out[3] = top * gy + bottom * fy;
+    result[3] = top * gy + bottom * fy;
   } else {
-    out[3] = 0.0f;
+    result[3] = 0.0f;
   }
+  // From registers (set, not a load of `result`: four scalar stores read back as one vector
+  // would stall on store forwarding).
+  out = Lanes4::set(result[0], result[1], result[2], result[3]);
   return true;
 }
 
@@ -195,9 +257,12 @@ template <unsigned kChannels = 0xF>
 [[gnu::always_inline]] inline glm::vec4 lookupLevel(const MipLevel& level, const float* rgbTable,
                                                     const float* alphaTable, const TextureSampler& sampler,
                                                     glm::vec2 uv, TextureFilter filter) {
-  float out[4];
-  if (repeatLinear(sampler, filter) && bilinearRepeatPow2<kChannels>(level, rgbTable, alphaTable, uv, out))
-    return glm::vec4(out[0], out[1], out[2], out[3]);
+  Lanes4 out;
+  if (repeatLinear(sampler, filter) && bilinearRepeatPow2<kChannels>(level, rgbTable, alphaTable, uv, out)) {
+    glm::vec4 value;
+    out.store(value);
+    return value;
+  }
   return sampleLevel(level, rgbTable, sampler, uv, filter);
 }
 
@@ -229,7 +294,25 @@ MipChain buildMipChain(const TextureImage& image, ColorSpace colorSpace) {
   chain.levels.push_back(std::move(base));
   while (chain.levels.back().width > 1 || chain.levels.back().height > 1)
     chain.levels.push_back(reduce(chain.levels.back(), colorSpace));
+  chain.alphaAllOne = std::all_of(chain.levels.begin(), chain.levels.end(), [](const MipLevel& level) {
+    for (std::size_t i = 3; i < level.rgba.size(); i += 4)
+      if (level.rgba[i] != 255) return false;
+    return true;
+  });
   return chain;
+}
+
+void decodeSmallLevels(MipChain& chain) {
+  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
+  const float* alphaTable = tables().linear.data();
+  for (MipLevel& level : chain.levels) {
+    if (static_cast<long long>(level.width) * level.height > kDecodedLevelTexels) continue;
+    level.decoded.resize(level.rgba.size());
+    for (std::size_t i = 0; i + 3 < level.rgba.size(); i += 4) {
+      for (std::size_t c = 0; c < 3; ++c) level.decoded[i + c] = rgbTable[level.rgba[i + c]];
+      level.decoded[i + 3] = alphaTable[level.rgba[i + 3]];
+    }
+  }
 }
 
 float textureLod(const MipChain& chain, float footprintUv) {
@@ -301,14 +384,12 @@ template <unsigned kChannels = 0xF>
   const int d1 = static_cast<int>(std::floor(lod));
   const float fraction = lod - static_cast<float>(d1);
   if (fraction != 0.0f && repeatLinear(sampler, sampler.minFilter)) {
-    // Trilinear in scalars: blending two vec4 results went through the stack with a
+    // Trilinear in registers: blending two vec4 results went through the stack with a
     // store-forwarding stall per lookup (perf). The same arithmetic as glm::mix below.
-    float a[4], b[4];
+    Lanes4 a, b;
     if (bilinearRepeatPow2<kChannels>(chain.levels[d1], rgbTable, alphaTable, uv, a) &&
         bilinearRepeatPow2<kChannels>(chain.levels[d1 + 1], rgbTable, alphaTable, uv, b)) {
-      const float g = 1.0f - fraction;
-      out = glm::vec4(a[0] * g + b[0] * fraction, a[1] * g + b[1] * fraction, a[2] * g + b[2] * fraction,
-                      a[3] * g + b[3] * fraction);
+      (a * Lanes4::splat(1.0f - fraction) + b * Lanes4::splat(fraction)).store(out);
       return;
     }
   }
@@ -345,6 +426,7 @@ SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::ve
     if (chainOfImage[image] < 0) {
       MipChain chain = buildMipChain(images[image], colorSpace);
       if (chain.levels.empty()) return;
+      decodeSmallLevels(chain);
       chainOfImage[image] = static_cast<int>(chains_.size());
       chainLog2Size_.push_back(
           0.5f * std::log2(static_cast<float>(chain.width()) * static_cast<float>(chain.height())));
