@@ -105,17 +105,37 @@ class SceneTextures {
   bool trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
                  glm::vec4& value, unsigned channels) const;
 
+  // One slot's lookup in sampleSlots: `value` and `found` are trySample's value and result.
+  struct SlotLookup {
+    const TextureRef* ref = nullptr;  // present()
+    ColorSpace colorSpace = ColorSpace::Linear;
+    unsigned channels = kRgba;
+    glm::vec4 value{1.0f};
+    bool found = false;
+  };
+  // The lookups of several slots at one point (evaluateSurfaceMaterial's), each the value of
+  // trySample(*ref, colorSpace, texcoords[set], log2Footprint(footprintUv[set]), value, channels).
+  // Slots that read through the same uv set, transform and sampler from textures of the same size
+  // (the usual glTF material: one uv layout, one sampler) share the transformed uv, the level of
+  // detail, the levels and the texel addresses and weights, worked out once; each slot then only
+  // loads and blends its own texels.
+  void sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2], const float footprintUv[2]) const;
+
  private:
   struct Entry {
     TextureSampler sampler;
     int linear = -1, srgb = -1;  // indices into chains_
+    // Textures of one layout (the same sampler, and chains of the same level sizes: from images
+    // of one size) share a number, the first such texture's index; sampleSlots shares plans
+    // within it.
+    int layout = -1;
   };
   std::vector<Entry> textures_;
   std::vector<MipChain> chains_;
   std::vector<float> chainLog2Size_;  // per chain: log2(sqrt(width * height)) of level 0
-  template <unsigned kChannels>
-  bool trySampleChannels(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
-                         glm::vec4& value) const;
+  // The chain ref reads in colorSpace, -1 if none; the lod of ref's lookup in chain `chain`.
+  int chainIndex(const TextureRef& ref, ColorSpace colorSpace) const;
+  float slotLod(const TextureRef& ref, int chain, float log2FootprintUv) const;
 };
 
 }  // namespace iblkit
