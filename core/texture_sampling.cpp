@@ -195,6 +195,7 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
 struct BilinearTaps {
   std::size_t texel[4];  // y * width + x of (i0, j0), (i1, j0), (i0, j1), (i1, j1)
   float fx, fy;
+  Lanes4 wx0, wx1, wy0, wy1;  // 1 - fx, fx, 1 - fy, fy in every lane (decoded levels' blend)
 };
 
 // Whether lookups of `sampler` with `filter` can take repeatPow2Taps.
@@ -216,6 +217,10 @@ bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
   j -= static_cast<float>(j) > ys;
   taps.fx = xs - static_cast<float>(i);
   taps.fy = ys - static_cast<float>(j);
+  taps.wx0 = Lanes4::splat(1.0f - taps.fx);
+  taps.wx1 = Lanes4::splat(taps.fx);
+  taps.wy0 = Lanes4::splat(1.0f - taps.fy);
+  taps.wy1 = Lanes4::splat(taps.fy);
   const std::size_t i0 = static_cast<std::size_t>(i & (w - 1)), i1 = static_cast<std::size_t>((i + 1) & (w - 1));
   const std::size_t row0 = static_cast<std::size_t>(j & (h - 1)) * static_cast<std::size_t>(w);
   const std::size_t row1 = static_cast<std::size_t>((j + 1) & (h - 1)) * static_cast<std::size_t>(w);
@@ -235,15 +240,15 @@ bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
 template <unsigned kChannels = 0xF>
 [[gnu::always_inline]] inline Lanes4 blendTaps(const MipLevel& level, const float* rgbTable,
                                                const float* alphaTable, const BilinearTaps& taps) {
-  const float fx = taps.fx, fy = taps.fy, gx = 1.0f - fx, gy = 1.0f - fy;
   if (!level.decoded.empty()) {
     const float* texels = level.decoded.data();
-    const Lanes4 wx0 = Lanes4::splat(gx), wx1 = Lanes4::splat(fx);
-    const Lanes4 top = Lanes4::load(texels + 4 * taps.texel[0]) * wx0 + Lanes4::load(texels + 4 * taps.texel[1]) * wx1;
+    const Lanes4 top =
+        Lanes4::load(texels + 4 * taps.texel[0]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[1]) * taps.wx1;
     const Lanes4 bottom =
-        Lanes4::load(texels + 4 * taps.texel[2]) * wx0 + Lanes4::load(texels + 4 * taps.texel[3]) * wx1;
-    return (top * Lanes4::splat(gy) + bottom * Lanes4::splat(fy)).masked<kChannels>();
+        Lanes4::load(texels + 4 * taps.texel[2]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[3]) * taps.wx1;
+    return (top * taps.wy0 + bottom * taps.wy1).masked<kChannels>();
   }
+  const float fx = taps.fx, fy = taps.fy, gx = 1.0f - fx, gy = 1.0f - fy;
   const std::uint8_t* texels = level.rgba.data();
   const std::uint8_t *a = texels + 4 * taps.texel[0], *b = texels + 4 * taps.texel[1],
                      *c = texels + 4 * taps.texel[2], *d = texels + 4 * taps.texel[3];
@@ -272,9 +277,9 @@ template <unsigned kChannels = 0xF>
 // GL 4.5 section 8.14's choice of levels for lambda = `lod`: `level` alone (fraction 0) or
 // blended with level + 1 by `fraction` (LINEAR_MIPMAP_LINEAR), each read with `filter`.
 struct LevelChoice {
-  int level = 0;
-  float fraction = 0.0f;
-  TextureFilter filter = TextureFilter::Linear;
+  int level;
+  float fraction;
+  TextureFilter filter;
 };
 
 LevelChoice chooseLevels(const MipChain& chain, const TextureSampler& sampler, float lod) {
@@ -299,20 +304,27 @@ LevelChoice chooseLevels(const MipChain& chain, const TextureSampler& sampler, f
 // sizes, so lookups of several chains of one size at one uv and lod share it (sampleSlots).
 struct LookupPlan {
   LevelChoice choice;
-  bool fast = false;
+  bool fast;
   BilinearTaps taps[2];
+  Lanes4 w0, w1;  // 1 - fraction, fraction in every lane (the fast trilinear blend)
 };
 
 [[gnu::always_inline]] inline LookupPlan planLookup(const MipChain& chain, const TextureSampler& sampler,
                                                     glm::vec2 uv, float lod) {
   LookupPlan plan;
-  if (chain.levels.empty()) return plan;
+  plan.fast = false;
+  if (chain.levels.empty()) {
+    plan.choice = LevelChoice{};
+    return plan;
+  }
   plan.choice = chooseLevels(chain, sampler, lod);
   const int d = plan.choice.level;
   plan.fast = repeatLinear(sampler, plan.choice.filter) &&
               repeatPow2Taps(chain.levels[d].width, chain.levels[d].height, uv, plan.taps[0]) &&
               (plan.choice.fraction == 0.0f ||
                repeatPow2Taps(chain.levels[d + 1].width, chain.levels[d + 1].height, uv, plan.taps[1]));
+  plan.w0 = Lanes4::splat(1.0f - plan.choice.fraction);
+  plan.w1 = Lanes4::splat(plan.choice.fraction);
   return plan;
 }
 
@@ -339,7 +351,7 @@ template <unsigned kChannels = 0xF>
     }
     // Trilinear in registers, the arithmetic of glm::mix below.
     const Lanes4 b = blendTaps<kChannels>(chain.levels[d + 1], rgbTable, alphaTable, plan.taps[1]);
-    (a * Lanes4::splat(1.0f - fraction) + b * Lanes4::splat(fraction)).store(out);
+    (a * plan.w0 + b * plan.w1).store(out);
     return;
   }
   const glm::vec4 a = sampleLevel(chain.levels[d], rgbTable, sampler, uv, plan.choice.filter);
@@ -347,7 +359,7 @@ template <unsigned kChannels = 0xF>
 }
 
 // runLookup with the channel mask given at run time (SceneTextures's masks).
-void runLookupChannels(unsigned channels, const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
+[[gnu::always_inline]] inline void runLookupChannels(unsigned channels, const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
                        const LookupPlan& plan, glm::vec4& out) {
   switch (channels) {
     case SceneTextures::kRed:
