@@ -137,6 +137,14 @@ struct Lanes4 {
                                                         kChannels & 4u ? -1 : 0, kChannels & 8u ? -1 : 0));
     return {_mm_and_ps(v, keep)};
   }
+  // Lanes4(...).masked<kChannels>() with the channels given at run time.
+  Lanes4 maskedBy(unsigned channels) const {
+    alignas(16) static constexpr std::int32_t kKeep[16][4] = {
+        {0, 0, 0, 0},    {-1, 0, 0, 0},    {0, -1, 0, 0},    {-1, -1, 0, 0},    {0, 0, -1, 0},    {-1, 0, -1, 0},
+        {0, -1, -1, 0},  {-1, -1, -1, 0},  {0, 0, 0, -1},    {-1, 0, 0, -1},    {0, -1, 0, -1},   {-1, -1, 0, -1},
+        {0, 0, -1, -1},  {-1, 0, -1, -1},  {0, -1, -1, -1},  {-1, -1, -1, -1}};
+    return {_mm_and_ps(v, _mm_load_ps(reinterpret_cast<const float*>(kKeep[channels & 0xFu])))};
+  }
   void store(glm::vec4& out) const { _mm_storeu_ps(&out.x, v); }
 #else
   float v[4];
@@ -150,6 +158,12 @@ struct Lanes4 {
     Lanes4 out = *this;
     for (int k = 0; k < 4; ++k)
       if (!((kChannels >> k) & 1u)) out.v[k] = 0.0f;
+    return out;
+  }
+  Lanes4 maskedBy(unsigned channels) const {
+    Lanes4 out = *this;
+    for (int k = 0; k < 4; ++k)
+      if (!((channels >> k) & 1u)) out.v[k] = 0.0f;
     return out;
   }
   void store(glm::vec4& out) const { out = glm::vec4(v[0], v[1], v[2], v[3]); }
@@ -237,17 +251,19 @@ bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
 // channels computed, the others 0. A level with decoded texels loads each texel's four channels
 // at once (the tables' decodings) into one Lanes4; otherwise each used channel's four bytes are
 // decoded through the tables and the other channels' texels are not loaded.
+[[gnu::always_inline]] inline Lanes4 blendDecoded(const MipLevel& level, const BilinearTaps& taps) {
+  const float* texels = level.decoded.data();
+  const Lanes4 top =
+      Lanes4::load(texels + 4 * taps.texel[0]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[1]) * taps.wx1;
+  const Lanes4 bottom =
+      Lanes4::load(texels + 4 * taps.texel[2]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[3]) * taps.wx1;
+  return top * taps.wy0 + bottom * taps.wy1;
+}
+
 template <unsigned kChannels = 0xF>
 [[gnu::always_inline]] inline Lanes4 blendTaps(const MipLevel& level, const float* rgbTable,
                                                const float* alphaTable, const BilinearTaps& taps) {
-  if (!level.decoded.empty()) {
-    const float* texels = level.decoded.data();
-    const Lanes4 top =
-        Lanes4::load(texels + 4 * taps.texel[0]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[1]) * taps.wx1;
-    const Lanes4 bottom =
-        Lanes4::load(texels + 4 * taps.texel[2]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[3]) * taps.wx1;
-    return (top * taps.wy0 + bottom * taps.wy1).masked<kChannels>();
-  }
+  if (!level.decoded.empty()) return blendDecoded(level, taps).masked<kChannels>();
   const float fx = taps.fx, fy = taps.fy, gx = 1.0f - fx, gy = 1.0f - fy;
   const std::uint8_t* texels = level.rgba.data();
   const std::uint8_t *a = texels + 4 * taps.texel[0], *b = texels + 4 * taps.texel[1],
@@ -282,7 +298,7 @@ struct LevelChoice {
   TextureFilter filter;
 };
 
-LevelChoice chooseLevels(const MipChain& chain, const TextureSampler& sampler, float lod) {
+[[gnu::always_inline]] inline LevelChoice chooseLevels(const MipChain& chain, const TextureSampler& sampler, float lod) {
   if (lod != lod) lod = 0.0f;
   // Section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter pair;
   // GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
@@ -332,13 +348,13 @@ struct LookupPlan {
 // `out` (returning a glm::vec4 packs it into two registers through the stack, a store-forwarding
 // stall per lookup in perf annotate). An empty chain reads 1.
 template <unsigned kChannels = 0xF>
-[[gnu::always_inline]] inline void runLookup(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
-                                             const LookupPlan& plan, glm::vec4& out) {
+[[gnu::always_inline]] inline void runLookup(const MipChain& chain, const DecodeTables& decode,
+                                             const TextureSampler& sampler, glm::vec2 uv, const LookupPlan& plan,
+                                             glm::vec4& out) {
   if (chain.levels.empty()) {
     out = glm::vec4(1.0f);
     return;
   }
-  const DecodeTables& decode = tables();
   const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? decode.srgb.data() : decode.linear.data();
   const float* alphaTable = decode.linear.data();
   const int d = plan.choice.level;
@@ -358,20 +374,30 @@ template <unsigned kChannels = 0xF>
   out = fraction == 0.0f ? a : glm::mix(a, sampleLevel(chain.levels[d + 1], rgbTable, sampler, uv, plan.choice.filter), fraction);
 }
 
-// runLookup with the channel mask given at run time (SceneTextures's masks).
-[[gnu::always_inline]] inline void runLookupChannels(unsigned channels, const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
-                       const LookupPlan& plan, glm::vec4& out) {
+// runLookup with the channel mask given at run time (SceneTextures's masks). The common case, the
+// fast path on decoded levels (a level's smaller ones are decoded too), is one code path for every
+// mask: blendTaps' decoded blend, the mask applied at the end.
+[[gnu::always_inline]] inline void runLookupChannels(unsigned channels, const MipChain& chain,
+                                                     const DecodeTables& decode, const TextureSampler& sampler,
+                                                     glm::vec2 uv, const LookupPlan& plan, glm::vec4& out) {
+  const int d = plan.choice.level;
+  const bool single = plan.choice.fraction == 0.0f;
+  if (plan.fast && !chain.levels[d].decoded.empty() && (single || !chain.levels[d + 1].decoded.empty())) {
+    const Lanes4 a = blendDecoded(chain.levels[d], plan.taps[0]);
+    (single ? a : a * plan.w0 + blendDecoded(chain.levels[d + 1], plan.taps[1]) * plan.w1).maskedBy(channels).store(out);
+    return;
+  }
   switch (channels) {
     case SceneTextures::kRed:
-      return runLookup<SceneTextures::kRed>(chain, sampler, uv, plan, out);
+      return runLookup<SceneTextures::kRed>(chain, decode, sampler, uv, plan, out);
     case SceneTextures::kGreenBlue:
-      return runLookup<SceneTextures::kGreenBlue>(chain, sampler, uv, plan, out);
+      return runLookup<SceneTextures::kGreenBlue>(chain, decode, sampler, uv, plan, out);
     case SceneTextures::kRgb:
-      return runLookup<SceneTextures::kRgb>(chain, sampler, uv, plan, out);
+      return runLookup<SceneTextures::kRgb>(chain, decode, sampler, uv, plan, out);
     case SceneTextures::kAlpha:
-      return runLookup<SceneTextures::kAlpha>(chain, sampler, uv, plan, out);
+      return runLookup<SceneTextures::kAlpha>(chain, decode, sampler, uv, plan, out);
     default:
-      return runLookup<SceneTextures::kRgba>(chain, sampler, uv, plan, out);
+      return runLookup<SceneTextures::kRgba>(chain, decode, sampler, uv, plan, out);
   }
 }
 
@@ -466,7 +492,7 @@ int wrapTexel(int i, int size, TextureWrap wrap) {
 
 glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod) {
   glm::vec4 out;
-  runLookup(chain, sampler, uv, planLookup(chain, sampler, uv, lod), out);
+  runLookup(chain, tables(), sampler, uv, planLookup(chain, sampler, uv, lod), out);
   return out;
 }
 
@@ -565,7 +591,7 @@ bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm:
   const MipChain& chain = chains_[index];
   const TextureSampler& sampler = textures_[ref.texture].sampler;
   const glm::vec2 transformed = applyTransform(ref.transform, uv);
-  runLookupChannels(channels, chain, sampler, transformed,
+  runLookupChannels(channels, chain, tables(), sampler, transformed,
                     planLookup(chain, sampler, transformed, slotLod(ref, index, log2FootprintUv)), value);
   return true;
 }
@@ -574,6 +600,7 @@ bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm:
 void SceneTextures::sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2],
                                 const float footprintUv[2]) const {
   constexpr int kSharedPlans = 5;  // one per glTF slot
+  const DecodeTables& decode = tables();
   // The lookups planned so far: a later one of the same layout (SceneTextures::Entry), uv set and
   // transform (so the same transformed uv and lod) reuses the plan.
   struct Planned {
@@ -614,7 +641,7 @@ void SceneTextures::sampleSlots(SlotLookup* lookups, int count, const glm::vec2 
       made.plan = planLookup(chain, entry.sampler, made.uv, slotLod(ref, index, log2Footprints[set]));
       shared = &made;
     }
-    runLookupChannels(lookup.channels, chain, entry.sampler, shared->uv, shared->plan, lookup.value);
+    runLookupChannels(lookup.channels, chain, decode, entry.sampler, shared->uv, shared->plan, lookup.value);
   }
 }
 
