@@ -14,7 +14,8 @@ struct SlotLookups {
   int count = 0;
   // The index of the slot's lookup, -1 for none. channels: the SceneTextures channel mask the slot
   // uses (the others are not read).
-  int add(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, unsigned channels, const SurfaceInputs& inputs) {
+  int add(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, unsigned channels,
+          const SurfaceInputs& inputs) {
     if (!(inputs.slots & bit) || !ref.present()) return -1;
     SceneTextures::SlotLookup& lookup = lookups[count];
     lookup.ref = &ref;
@@ -50,15 +51,18 @@ SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTex
   m.doubleSided = material.doubleSided;
   out.normal = inputs.normal;
   SlotLookups slots;
-  const int base = slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kRgba, inputs);
+  const int base =
+      slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kRgba, inputs);
   const int metallicRoughness = slots.add(material.metallicRoughnessTexture, kSlotMetallicRoughness,
                                           ColorSpace::Linear, SceneTextures::kGreenBlue, inputs);
   const int occlusion =
       slots.add(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, SceneTextures::kRed, inputs);
-  const int emissive = slots.add(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, SceneTextures::kRgb, inputs);
+  const int emissive =
+      slots.add(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, SceneTextures::kRgb, inputs);
   const bool tangent = inputs.tangent.x != 0.0f || inputs.tangent.y != 0.0f || inputs.tangent.z != 0.0f;
-  const int normal =
-      tangent ? slots.add(material.normalTexture, kSlotNormal, ColorSpace::Linear, SceneTextures::kRgb, inputs) : -1;
+  const int normal = tangent ? slots.add(material.normalTexture, kSlotNormal, ColorSpace::Linear,
+                                         SceneTextures::kRgb, inputs)
+                             : -1;
   textures.sampleSlots(slots.lookups, slots.count, inputs.texcoords, inputs.footprintUv);
   // glTF 2.0 section 3.9.2: base colour and its alpha are factor times the (decoded) texel.
   if (const glm::vec4* value = slots.value(base)) {
@@ -72,7 +76,8 @@ SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTex
     m.metallic *= value->b;
   }
   // Section 3.9.3: occlusion = 1 + strength (R - 1).
-  if (const glm::vec4* value = slots.value(occlusion)) out.occlusion = 1.0f + material.occlusionStrength * (value->r - 1.0f);
+  if (const glm::vec4* value = slots.value(occlusion))
+    out.occlusion = 1.0f + material.occlusionStrength * (value->r - 1.0f);
   // Section 3.9.3: emissive = factor times the sRGB-decoded texel.
   if (const glm::vec4* value = slots.value(emissive)) m.emissive *= glm::vec3(*value);
   if (const glm::vec4* value = slots.value(normal))
@@ -82,7 +87,8 @@ SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTex
 
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs) {
   SlotLookups slots;
-  const int base = slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kAlpha, inputs);
+  const int base =
+      slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kAlpha, inputs);
   textures.sampleSlots(slots.lookups, slots.count, inputs.texcoords, inputs.footprintUv);
   if (const glm::vec4* value = slots.value(base)) return material.alpha * value->a;
   return material.alpha;

@@ -140,9 +140,9 @@ struct Lanes4 {
   // Lanes4(...).masked<kChannels>() with the channels given at run time.
   Lanes4 maskedBy(unsigned channels) const {
     alignas(16) static constexpr std::int32_t kKeep[16][4] = {
-        {0, 0, 0, 0},    {-1, 0, 0, 0},    {0, -1, 0, 0},    {-1, -1, 0, 0},    {0, 0, -1, 0},    {-1, 0, -1, 0},
-        {0, -1, -1, 0},  {-1, -1, -1, 0},  {0, 0, 0, -1},    {-1, 0, 0, -1},    {0, -1, 0, -1},   {-1, -1, 0, -1},
-        {0, 0, -1, -1},  {-1, 0, -1, -1},  {0, -1, -1, -1},  {-1, -1, -1, -1}};
+        {0, 0, 0, 0},   {-1, 0, 0, 0},   {0, -1, 0, 0},   {-1, -1, 0, 0},  {0, 0, -1, 0},  {-1, 0, -1, 0},
+        {0, -1, -1, 0}, {-1, -1, -1, 0}, {0, 0, 0, -1},   {-1, 0, 0, -1},  {0, -1, 0, -1}, {-1, -1, 0, -1},
+        {0, 0, -1, -1}, {-1, 0, -1, -1}, {0, -1, -1, -1}, {-1, -1, -1, -1}};
     return {_mm_and_ps(v, _mm_load_ps(reinterpret_cast<const float*>(kKeep[channels & 0xFu])))};
   }
   void store(glm::vec4& out) const { _mm_storeu_ps(&out.x, v); }
@@ -151,8 +151,12 @@ struct Lanes4 {
   static Lanes4 load(const float* p) { return {{p[0], p[1], p[2], p[3]}}; }
   static Lanes4 set(float x, float y, float z, float w) { return {{x, y, z, w}}; }
   static Lanes4 splat(float x) { return {{x, x, x, x}}; }
-  friend Lanes4 operator*(Lanes4 a, Lanes4 b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1], a.v[2] * b.v[2], a.v[3] * b.v[3]}}; }
-  friend Lanes4 operator+(Lanes4 a, Lanes4 b) { return {{a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2], a.v[3] + b.v[3]}}; }
+  friend Lanes4 operator*(Lanes4 a, Lanes4 b) {
+    return {{a.v[0] * b.v[0], a.v[1] * b.v[1], a.v[2] * b.v[2], a.v[3] * b.v[3]}};
+  }
+  friend Lanes4 operator+(Lanes4 a, Lanes4 b) {
+    return {{a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2], a.v[3] + b.v[3]}};
+  }
   template <unsigned kChannels>
   Lanes4 masked() const {
     Lanes4 out = *this;
@@ -235,7 +239,8 @@ bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
   taps.wx1 = Lanes4::splat(taps.fx);
   taps.wy0 = Lanes4::splat(1.0f - taps.fy);
   taps.wy1 = Lanes4::splat(taps.fy);
-  const std::size_t i0 = static_cast<std::size_t>(i & (w - 1)), i1 = static_cast<std::size_t>((i + 1) & (w - 1));
+  const std::size_t i0 = static_cast<std::size_t>(i & (w - 1)),
+                    i1 = static_cast<std::size_t>((i + 1) & (w - 1));
   const std::size_t row0 = static_cast<std::size_t>(j & (h - 1)) * static_cast<std::size_t>(w);
   const std::size_t row1 = static_cast<std::size_t>((j + 1) & (h - 1)) * static_cast<std::size_t>(w);
   taps.texel[0] = row0 + i0;
@@ -253,10 +258,10 @@ bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
 // decoded through the tables and the other channels' texels are not loaded.
 [[gnu::always_inline]] inline Lanes4 blendDecoded(const MipLevel& level, const BilinearTaps& taps) {
   const float* texels = level.decoded.data();
-  const Lanes4 top =
-      Lanes4::load(texels + 4 * taps.texel[0]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[1]) * taps.wx1;
-  const Lanes4 bottom =
-      Lanes4::load(texels + 4 * taps.texel[2]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[3]) * taps.wx1;
+  const Lanes4 top = Lanes4::load(texels + 4 * taps.texel[0]) * taps.wx0 +
+                     Lanes4::load(texels + 4 * taps.texel[1]) * taps.wx1;
+  const Lanes4 bottom = Lanes4::load(texels + 4 * taps.texel[2]) * taps.wx0 +
+                        Lanes4::load(texels + 4 * taps.texel[3]) * taps.wx1;
   return top * taps.wy0 + bottom * taps.wy1;
 }
 
@@ -298,7 +303,8 @@ struct LevelChoice {
   TextureFilter filter;
 };
 
-[[gnu::always_inline]] inline LevelChoice chooseLevels(const MipChain& chain, const TextureSampler& sampler, float lod) {
+[[gnu::always_inline]] inline LevelChoice chooseLevels(const MipChain& chain, const TextureSampler& sampler,
+                                                       float lod) {
   if (lod != lod) lod = 0.0f;
   // Section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter pair;
   // GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
@@ -349,8 +355,8 @@ struct LookupPlan {
 // stall per lookup in perf annotate). An empty chain reads 1.
 template <unsigned kChannels = 0xF>
 [[gnu::always_inline]] inline void runLookup(const MipChain& chain, const DecodeTables& decode,
-                                             const TextureSampler& sampler, glm::vec2 uv, const LookupPlan& plan,
-                                             glm::vec4& out) {
+                                             const TextureSampler& sampler, glm::vec2 uv,
+                                             const LookupPlan& plan, glm::vec4& out) {
   if (chain.levels.empty()) {
     out = glm::vec4(1.0f);
     return;
@@ -371,20 +377,26 @@ template <unsigned kChannels = 0xF>
     return;
   }
   const glm::vec4 a = sampleLevel(chain.levels[d], rgbTable, sampler, uv, plan.choice.filter);
-  out = fraction == 0.0f ? a : glm::mix(a, sampleLevel(chain.levels[d + 1], rgbTable, sampler, uv, plan.choice.filter), fraction);
+  out = fraction == 0.0f
+            ? a
+            : glm::mix(a, sampleLevel(chain.levels[d + 1], rgbTable, sampler, uv, plan.choice.filter),
+                       fraction);
 }
 
 // runLookup with the channel mask given at run time (SceneTextures's masks). The common case, the
 // fast path on decoded levels (a level's smaller ones are decoded too), is one code path for every
 // mask: blendTaps' decoded blend, the mask applied at the end.
 [[gnu::always_inline]] inline void runLookupChannels(unsigned channels, const MipChain& chain,
-                                                     const DecodeTables& decode, const TextureSampler& sampler,
-                                                     glm::vec2 uv, const LookupPlan& plan, glm::vec4& out) {
+                                                     const DecodeTables& decode,
+                                                     const TextureSampler& sampler, glm::vec2 uv,
+                                                     const LookupPlan& plan, glm::vec4& out) {
   const int d = plan.choice.level;
   const bool single = plan.choice.fraction == 0.0f;
   if (plan.fast && !chain.levels[d].decoded.empty() && (single || !chain.levels[d + 1].decoded.empty())) {
     const Lanes4 a = blendDecoded(chain.levels[d], plan.taps[0]);
-    (single ? a : a * plan.w0 + blendDecoded(chain.levels[d + 1], plan.taps[1]) * plan.w1).maskedBy(channels).store(out);
+    (single ? a : a * plan.w0 + blendDecoded(chain.levels[d + 1], plan.taps[1]) * plan.w1)
+        .maskedBy(channels)
+        .store(out);
     return;
   }
   switch (channels) {
@@ -402,8 +414,8 @@ template <unsigned kChannels = 0xF>
 }
 
 bool sameSampler(const TextureSampler& a, const TextureSampler& b) {
-  return a.wrapS == b.wrapS && a.wrapT == b.wrapT && a.magFilter == b.magFilter && a.minFilter == b.minFilter &&
-         a.mipmaps == b.mipmaps && a.mipFilter == b.mipFilter;
+  return a.wrapS == b.wrapS && a.wrapT == b.wrapT && a.magFilter == b.magFilter &&
+         a.minFilter == b.minFilter && a.mipmaps == b.mipmaps && a.mipFilter == b.mipFilter;
 }
 
 // Bit for bit: equal transforms then give equal uvs and lods (== would also match -0 with 0).
@@ -449,7 +461,8 @@ MipChain buildMipChain(const TextureImage& image, ColorSpace colorSpace) {
 }
 
 void decodeSmallLevels(MipChain& chain) {
-  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
+  const float* rgbTable =
+      chain.colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
   const float* alphaTable = tables().linear.data();
   for (MipLevel& level : chain.levels) {
     if (static_cast<long long>(level.width) * level.height > kDecodedLevelTexels) continue;
@@ -596,7 +609,6 @@ bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm:
   return true;
 }
 
-
 void SceneTextures::sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2],
                                 const float footprintUv[2]) const {
   constexpr int kSharedPlans = 5;  // one per glTF slot
@@ -625,7 +637,8 @@ void SceneTextures::sampleSlots(SlotLookup* lookups, int count, const glm::vec2 
     const Planned* shared = nullptr;
     for (int p = 0; p < plans && !shared; ++p) {
       const Planned& candidate = planned[p];
-      if (candidate.layout == entry.layout && candidate.set == set && sameTransform(*candidate.transform, ref.transform))
+      if (candidate.layout == entry.layout && candidate.set == set &&
+          sameTransform(*candidate.transform, ref.transform))
         shared = &candidate;
     }
     if (!shared) {

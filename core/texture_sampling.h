@@ -119,7 +119,8 @@ class SceneTextures {
   // (the usual glTF material: one uv layout, one sampler) share the transformed uv, the level of
   // detail, the levels and the texel addresses and weights, worked out once; each slot then only
   // loads and blends its own texels.
-  void sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2], const float footprintUv[2]) const;
+  void sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2],
+                   const float footprintUv[2]) const;
 
  private:
   struct Entry {

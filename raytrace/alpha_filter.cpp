@@ -58,7 +58,8 @@ AlphaFilter::AlphaFilter(std::vector<const Mesh*> geometryMeshes, const std::vec
     const TextureRef& base = material.baseColorTexture;
     // A texture whose alpha is 255 everywhere filters to exactly 1 (MipChain::alphaAllOne): the
     // factor alone decides, as without the texture (RGB images load with alpha 255).
-    const MipChain* baseChain = textures_->empty() ? nullptr : textures_->chain(base.texture, ColorSpace::Srgb);
+    const MipChain* baseChain =
+        textures_->empty() ? nullptr : textures_->chain(base.texture, ColorSpace::Srgb);
     geometry.alphaFromTexture =
         (slots & kSlotBaseColor) && base.present() && baseChain != nullptr && !baseChain->alphaAllOne;
     // A constant alpha decides once for the whole geometry: present everywhere needs no test.

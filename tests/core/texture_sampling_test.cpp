@@ -393,8 +393,8 @@ TEST(DecodeSmallLevels, LookupsReadTheSameValuesAsFromTheBytes) {
         ASSERT_EQ(level.decoded.size(), level.rgba.size());
         for (std::size_t i = 0; i < level.rgba.size(); ++i)
           ASSERT_EQ(level.decoded[i], i % 4 == 3 || space == ColorSpace::Linear
-                                           ? static_cast<float>(level.rgba[i] / 255.0)
-                                                                               : srgbToLinear(level.rgba[i]));
+                                          ? static_cast<float>(level.rgba[i] / 255.0)
+                                          : srgbToLinear(level.rgba[i]));
       }
       for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat})
         for (TextureFilter filter : {TextureFilter::Linear, TextureFilter::Nearest})
@@ -416,11 +416,13 @@ TEST(DecodeSmallLevels, LookupsReadTheSameValuesAsFromTheBytes) {
 
 // Only levels of at most kDecodedLevelTexels texels are decoded; SceneTextures decodes its chains.
 TEST(DecodeSmallLevels, DecodesOnlyTheSmallLevels) {
-  MipChain chain = buildMipChain(makeImage(512, 256, [](int, int) { return glm::u8vec4(9); }), ColorSpace::Linear);
+  MipChain chain =
+      buildMipChain(makeImage(512, 256, [](int, int) { return glm::u8vec4(9); }), ColorSpace::Linear);
   decodeSmallLevels(chain);
   ASSERT_EQ(chain.levels.size(), 10u);
   EXPECT_TRUE(chain.levels[0].decoded.empty()) << "512 x 256 is 131072 texels";
-  for (std::size_t i = 1; i < chain.levels.size(); ++i) EXPECT_EQ(chain.levels[i].decoded.size(), chain.levels[i].rgba.size());
+  for (std::size_t i = 1; i < chain.levels.size(); ++i)
+    EXPECT_EQ(chain.levels[i].decoded.size(), chain.levels[i].rgba.size());
   Material material;
   material.baseColorTexture.texture = 0;
   Texture texture;
@@ -441,7 +443,8 @@ TEST(BuildMipChain, LinearWeightsSumToExactlyOne) {
 // alphaAllOne holds exactly when every texel's alpha is 255, and then every lookup's alpha is
 // exactly 1, whatever the weights.
 TEST(BuildMipChain, AlphaAllOneWhenEveryAlphaIs255) {
-  const TextureImage opaque = makeImage(16, 8, [](int x, int y) { return glm::u8vec4(x * 16, y * 30, 7, 255); });
+  const TextureImage opaque =
+      makeImage(16, 8, [](int x, int y) { return glm::u8vec4(x * 16, y * 30, 7, 255); });
   TextureImage nearly = opaque;
   nearly.rgba[4 * 37 + 3] = 254;
   EXPECT_FALSE(buildMipChain(nearly, ColorSpace::Srgb).alphaAllOne);
@@ -451,8 +454,9 @@ TEST(BuildMipChain, AlphaAllOneWhenEveryAlphaIs255) {
   std::uniform_real_distribution<float> uv(-2.0f, 3.0f), lod(-1.0f, 6.0f);
   for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::MirroredRepeat})
     for (int i = 0; i < 2000; ++i)
-      ASSERT_EQ(sampleMipChain(chain, samplerWith(wrap, TextureFilter::Linear), glm::vec2(uv(random), uv(random)),
-                               lod(random)).a,
+      ASSERT_EQ(sampleMipChain(chain, samplerWith(wrap, TextureFilter::Linear),
+                               glm::vec2(uv(random), uv(random)), lod(random))
+                    .a,
                 1.0f);
 }
 
@@ -465,8 +469,9 @@ TEST(SceneTextures, SampleSlotsReadsWhatTrySampleReads) {
   for (int t = 0; t < 5; ++t) textures[t].image = t;
   textures[3].sampler.wrapS = TextureWrap::MirroredRepeat;
   // Images 0, 1 and 3 are 32 x 32, image 2 is 16 x 16, image 4 is 32 x 32.
-  const std::vector<TextureImage> images = {noiseImage(32, 32, 1), noiseImage(32, 32, 2), noiseImage(16, 16, 3),
-                                            noiseImage(32, 32, 4), noiseImage(32, 32, 5)};
+  const std::vector<TextureImage> images = {noiseImage(32, 32, 1), noiseImage(32, 32, 2),
+                                            noiseImage(16, 16, 3), noiseImage(32, 32, 4),
+                                            noiseImage(32, 32, 5)};
   material.baseColorTexture.texture = 0;
   material.metallicRoughnessTexture.texture = 1;  // shares 0's plan
   material.normalTexture.texture = 2;             // another size
@@ -478,13 +483,19 @@ TEST(SceneTextures, SampleSlotsReadsWhatTrySampleReads) {
   onSet1.texCoord = 1;
   TextureRef missing = material.baseColorTexture;
   missing.texture = 9;
-  const TextureRef* refs[] = {&material.baseColorTexture, &material.metallicRoughnessTexture, &material.normalTexture,
-                              &material.occlusionTexture, &material.emissiveTexture,         &onSet1,
-                              &missing,                   &material.baseColorTexture};  // the last shares the first's plan
+  const TextureRef* refs[] = {&material.baseColorTexture,
+                              &material.metallicRoughnessTexture,
+                              &material.normalTexture,
+                              &material.occlusionTexture,
+                              &material.emissiveTexture,
+                              &onSet1,
+                              &missing,
+                              &material.baseColorTexture};  // the last shares the first's plan
   const ColorSpace spaces[] = {ColorSpace::Srgb, ColorSpace::Linear, ColorSpace::Linear, ColorSpace::Linear,
                                ColorSpace::Srgb, ColorSpace::Linear, ColorSpace::Srgb,   ColorSpace::Srgb};
-  const unsigned masks[] = {SceneTextures::kRgba, SceneTextures::kGreenBlue, SceneTextures::kRgb, SceneTextures::kRed,
-                            SceneTextures::kRgb,  SceneTextures::kRgba,      SceneTextures::kRgba, SceneTextures::kAlpha};
+  const unsigned masks[] = {SceneTextures::kRgba, SceneTextures::kGreenBlue, SceneTextures::kRgb,
+                            SceneTextures::kRed,  SceneTextures::kRgb,       SceneTextures::kRgba,
+                            SceneTextures::kRgba, SceneTextures::kAlpha};
   constexpr int n = 8;
   std::mt19937 random(9);
   std::uniform_real_distribution<float> uv(-2.0f, 3.0f), footprint(0.0f, 0.3f);
@@ -504,7 +515,8 @@ TEST(SceneTextures, SampleSlotsReadsWhatTrySampleReads) {
       const bool found = scene.trySample(*refs[l], spaces[l], texcoords[set],
                                          SceneTextures::log2Footprint(footprints[set]), expected, masks[l]);
       ASSERT_EQ(lookups[l].found, found) << "lookup " << l;
-      for (int c = 0; c < 4; ++c) ASSERT_EQ(lookups[l].value[c], expected[c]) << "lookup " << l << " channel " << c;
+      for (int c = 0; c < 4; ++c)
+        ASSERT_EQ(lookups[l].value[c], expected[c]) << "lookup " << l << " channel " << c;
     }
     EXPECT_FALSE(lookups[6].found);
   }

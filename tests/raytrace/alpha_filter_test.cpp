@@ -28,8 +28,9 @@ struct FilteredScene {
       meshes.push_back(&mesh);
     }
     filter = std::make_shared<AlphaFilter>(
-        meshes, scene.materials, std::make_shared<SceneTextures>(scene.textures, scene.images, scene.materials),
-        kAllTextureSlots, cameraRays);
+        meshes, scene.materials,
+        std::make_shared<SceneTextures>(scene.textures, scene.images, scene.materials), kAllTextureSlots,
+        cameraRays);
     rays.setAlphaFilter(filter);
     rays.commit();
   }
@@ -116,9 +117,10 @@ TEST(AlphaFilter, AnOpaqueTextureLeavesTheFactorToDecide) {
     blend.alphaMode = AlphaMode::Blend;
     blend.doubleSided = true;
     s.scene.materials = {blend};
-    s.scene.materials[0].baseColorTexture = test::addTexture(s.scene, test::generatedImage(8, 8, [&](int x, int y) {
-      return glm::u8vec4(30 * x, 30 * y, 90, x == 3 && y == 5 && lowered ? 254 : 255);
-    }));
+    s.scene.materials[0].baseColorTexture =
+        test::addTexture(s.scene, test::generatedImage(8, 8, [&](int x, int y) {
+                           return glm::u8vec4(30 * x, 30 * y, 90, x == 3 && y == 5 && lowered ? 254 : 255);
+                         }));
     s.scene.meshes = {test::texturedQuad(0.0f, 1.0f, 0.0f, 0)};
     s.build();
     EXPECT_EQ(s.filter->needs(0), lowered ? unsigned(AlphaFilter::kAlphaTest) : 0u);
@@ -195,8 +197,9 @@ TEST(AlphaFilter, RefusesATableOfTheWrongSize) {
   const Mesh quad = test::texturedQuad(0.0f, 1.0f, 0.0f, 0);
   rays.addTriangleMesh(quad.positions, quad.indices);
   const std::vector<Material> materials = {Material{}};
-  EXPECT_THROW(rays.setAlphaFilter(std::make_shared<AlphaFilter>(std::vector<const Mesh*>{}, materials, nullptr)),
-               Error);
+  EXPECT_THROW(
+      rays.setAlphaFilter(std::make_shared<AlphaFilter>(std::vector<const Mesh*>{}, materials, nullptr)),
+      Error);
 }
 
 }  // namespace
