@@ -36,10 +36,11 @@ struct ReportSettings {
   // "Raster against reference": checker quad FLIP 0.047 at 16 against 0.016 at 1).
   int engineAnisotropy = 1;
   // --sample-shading with engineSamples > 1. The report turns it off for a textured scene
-  // (runCase): llvmpipe's sample-rate invocations read textures at wrong coordinates on surfaces
-  // seen at grazing angles (a grazing checker plane: FLIP 0.41 against the reference with it, 0.06
-  // without; docs/material-model.md "Raster against reference"); the K x K supersampling still
-  // shades K^2 points per pixel.
+  // (runCase): llvmpipe evaluates the varyings of sample-rate invocations far outside the pixel on
+  // surfaces seen at grazing angles (7 pixels' spread on a grazing plane; docs/engine.md "Per-sample
+  // shading on llvmpipe"), which smears textures (a grazing checker plane: FLIP 0.41 against the
+  // reference with it, 0.05 without; docs/material-model.md "Raster against reference"); the K x K
+  // supersampling still shades K^2 points per pixel.
   bool engineSampleShading = true;
   // iblkit-trace --integrator of the reference: path (full global illumination) or direct (one
   // bounce: what the engine's modes model without interreflection), for experiments.

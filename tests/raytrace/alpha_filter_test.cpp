@@ -28,8 +28,9 @@ struct FilteredScene {
       meshes.push_back(&mesh);
     }
     filter = std::make_shared<AlphaFilter>(
-        meshes, scene.materials, std::make_shared<SceneTextures>(scene.textures, scene.images, scene.materials),
-        kAllTextureSlots, cameraRays);
+        meshes, scene.materials,
+        std::make_shared<SceneTextures>(scene.textures, scene.images, scene.materials), kAllTextureSlots,
+        cameraRays);
     rays.setAlphaFilter(filter);
     rays.commit();
   }
@@ -106,6 +107,28 @@ TEST(AlphaFilter, ClosestHitGoesOnBehindAMaskedTexel) {
   EXPECT_EQ(stopped.geomId, 0u);
 }
 
+// A base colour texture whose alpha is 255 everywhere (an RGB image) filters to exactly 1, so the
+// factor alone decides, with no test: BLEND alpha 1 is there for every ray; one texel of alpha
+// 254 brings the test back.
+TEST(AlphaFilter, AnOpaqueTextureLeavesTheFactorToDecide) {
+  for (int lowered : {0, 1}) {
+    FilteredScene s;
+    Material blend;
+    blend.alphaMode = AlphaMode::Blend;
+    blend.doubleSided = true;
+    s.scene.materials = {blend};
+    s.scene.materials[0].baseColorTexture =
+        test::addTexture(s.scene, test::generatedImage(8, 8, [&](int x, int y) {
+                           return glm::u8vec4(30 * x, 30 * y, 90, x == 3 && y == 5 && lowered ? 254 : 255);
+                         }));
+    s.scene.meshes = {test::texturedQuad(0.0f, 1.0f, 0.0f, 0)};
+    s.build();
+    EXPECT_EQ(s.filter->needs(0), lowered ? unsigned(AlphaFilter::kAlphaTest) : 0u);
+    for (float x : {0.1f, 0.45f, 0.8f})
+      EXPECT_TRUE(s.rays.occluded({x, 0.3f, 1.0f}, {0.0f, 0.0f, -1.0f}, 0.0f, kInfinity));
+  }
+}
+
 // BLEND alpha 0.5: about half of many random rays are blocked; each ray decides the same way
 // in intersect and occluded, and again when traced again.
 TEST(AlphaFilter, BlendCoverageBlocksAboutAlphaAndIsDeterministic) {
@@ -166,7 +189,7 @@ TEST(AlphaFilter, TextureFootprintOfARayCone) {
   EXPECT_FLOAT_EQ(textureFootprint(0.1f, 0.25f, 1.0f), 0.05f);
   EXPECT_FLOAT_EQ(textureFootprint(0.1f, 0.25f, -0.5f), 0.1f);
   EXPECT_FLOAT_EQ(textureFootprint(0.1f, 0.25f, 0.001f), 0.05f * kMaxTextureAnisotropy);
-  EXPECT_FLOAT_EQ((RayCone{0.5f, 0.01f}.widthAt(10.0f)), 0.6f);
+  EXPECT_FLOAT_EQ((RayCone{0.5f, 0.01f, {}}.widthAt(10.0f)), 0.6f);
 }
 
 TEST(AlphaFilter, RefusesATableOfTheWrongSize) {
@@ -174,8 +197,9 @@ TEST(AlphaFilter, RefusesATableOfTheWrongSize) {
   const Mesh quad = test::texturedQuad(0.0f, 1.0f, 0.0f, 0);
   rays.addTriangleMesh(quad.positions, quad.indices);
   const std::vector<Material> materials = {Material{}};
-  EXPECT_THROW(rays.setAlphaFilter(std::make_shared<AlphaFilter>(std::vector<const Mesh*>{}, materials, nullptr)),
-               Error);
+  EXPECT_THROW(
+      rays.setAlphaFilter(std::make_shared<AlphaFilter>(std::vector<const Mesh*>{}, materials, nullptr)),
+      Error);
 }
 
 }  // namespace
