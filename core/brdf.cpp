@@ -29,7 +29,7 @@ using Lobes = BrdfLobes;
 }  // namespace
 
 BrdfLobes brdfLobes(const Material& material) {
-  const Material m = clampedToGltfRanges(material);
+  const GltfRangeFactors m = clampedFactors(material);
   BrdfLobes l;
   l.baseColor = m.baseColor;
   l.metallic = m.metallic;

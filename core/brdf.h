@@ -69,7 +69,7 @@ struct BrdfLobes {
   bool hasDiffuse = false;   // the diffuse term is non-zero somewhere
   bool hasSpecular = false;  // the specular term is non-zero somewhere
 };
-// The lobes of `material` (its factors clamped by clampedToGltfRanges).
+// The lobes of `material` (its factors clamped by clampedToGltfRanges, clampedFactors).
 BrdfLobes brdfLobes(const Material& material);
 // The specular layer's Fresnel tint F(v.h) = Schlick(f0, f90) at cosThetaD = v.h.
 glm::vec3 specularFresnel(const BrdfLobes& lobes, float cosThetaD);

@@ -49,4 +49,13 @@ struct Material {
 // CPU BRDF (brdfLobes) and the engine's material uniforms both apply.
 Material clampedToGltfRanges(const Material& material);
 
+// The factors clampedToGltfRanges clamps, clamped the same way, without copying the rest of the
+// material (its name and five texture refs): brdfLobes runs once per textured hit.
+struct GltfRangeFactors {
+  glm::vec3 baseColor;
+  float metallic, roughness, specular;
+  glm::vec3 specularColor;
+};
+GltfRangeFactors clampedFactors(const Material& material);
+
 }  // namespace iblkit

@@ -6,23 +6,26 @@ namespace iblkit {
 
 namespace {
 
-// The slot's texture value, or nullptr-like `false` when the slot is off, empty, or names a
-// texture without a chain in that colour space (an image that did not load): then its factors
-// stand alone, as for a slot without a texture.
-// log2Footprint: SceneTextures::log2Footprint of inputs.footprintUv, once per set for all slots.
-// channels: the SceneTextures channel mask the slot uses (the others are not read).
-bool readSlot(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, const SceneTextures& textures,
-              const SurfaceInputs& inputs, const float* log2Footprint, unsigned channels, glm::vec4& value) {
-  if (!(inputs.slots & bit) || !ref.present()) return false;
-  const int set = ref.texCoord == 1 ? 1 : 0;
-  return textures.trySample(ref, colorSpace, inputs.texcoords[set], log2Footprint[set], value, channels);
-}
-
-struct Log2Footprints {
-  float set[2];
-  explicit Log2Footprints(const SurfaceInputs& inputs)
-      : set{SceneTextures::log2Footprint(inputs.footprintUv[0]),
-            SceneTextures::log2Footprint(inputs.footprintUv[1])} {}
+// The lookups of one point's slots, gathered for one SceneTextures::sampleSlots call: a slot that
+// is off or has no texture gets none (its factors then stand alone), nor does one whose texture
+// has no chain in that colour space (an image that did not load: found stays false).
+struct SlotLookups {
+  SceneTextures::SlotLookup lookups[5];
+  int count = 0;
+  // The index of the slot's lookup, -1 for none. channels: the SceneTextures channel mask the slot
+  // uses (the others are not read).
+  int add(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, unsigned channels, const SurfaceInputs& inputs) {
+    if (!(inputs.slots & bit) || !ref.present()) return -1;
+    SceneTextures::SlotLookup& lookup = lookups[count];
+    lookup.ref = &ref;
+    lookup.colorSpace = colorSpace;
+    lookup.channels = channels;
+    return count++;
+  }
+  // The slot's value, or nullptr when it has none.
+  const glm::vec4* value(int index) const {
+    return index >= 0 && lookups[index].found ? &lookups[index].value : nullptr;
+  }
 };
 
 }  // namespace
@@ -46,42 +49,42 @@ SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTex
   m.alphaCutoff = material.alphaCutoff;
   m.doubleSided = material.doubleSided;
   out.normal = inputs.normal;
-  const Log2Footprints lf(inputs);
-  glm::vec4 value;
+  SlotLookups slots;
+  const int base = slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kRgba, inputs);
+  const int metallicRoughness = slots.add(material.metallicRoughnessTexture, kSlotMetallicRoughness,
+                                          ColorSpace::Linear, SceneTextures::kGreenBlue, inputs);
+  const int occlusion =
+      slots.add(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, SceneTextures::kRed, inputs);
+  const int emissive = slots.add(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, SceneTextures::kRgb, inputs);
+  const bool tangent = inputs.tangent.x != 0.0f || inputs.tangent.y != 0.0f || inputs.tangent.z != 0.0f;
+  const int normal =
+      tangent ? slots.add(material.normalTexture, kSlotNormal, ColorSpace::Linear, SceneTextures::kRgb, inputs) : -1;
+  textures.sampleSlots(slots.lookups, slots.count, inputs.texcoords, inputs.footprintUv);
   // glTF 2.0 section 3.9.2: base colour and its alpha are factor times the (decoded) texel.
-  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, lf.set,
-               SceneTextures::kRgba, value)) {
-    m.baseColor *= glm::vec3(value);
-    m.alpha *= value.a;
+  if (const glm::vec4* value = slots.value(base)) {
+    m.baseColor *= glm::vec3(*value);
+    m.alpha *= value->a;
   }
   out.alpha = m.alpha;
   // Section 3.9.2: roughness in G, metallic in B.
-  if (readSlot(material.metallicRoughnessTexture, kSlotMetallicRoughness, ColorSpace::Linear, textures,
-               inputs, lf.set, SceneTextures::kGreenBlue, value)) {
-    m.roughness *= value.g;
-    m.metallic *= value.b;
+  if (const glm::vec4* value = slots.value(metallicRoughness)) {
+    m.roughness *= value->g;
+    m.metallic *= value->b;
   }
   // Section 3.9.3: occlusion = 1 + strength (R - 1).
-  if (readSlot(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, textures, inputs, lf.set,
-               SceneTextures::kRed, value))
-    out.occlusion = 1.0f + material.occlusionStrength * (value.r - 1.0f);
+  if (const glm::vec4* value = slots.value(occlusion)) out.occlusion = 1.0f + material.occlusionStrength * (value->r - 1.0f);
   // Section 3.9.3: emissive = factor times the sRGB-decoded texel.
-  if (readSlot(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, textures, inputs, lf.set,
-               SceneTextures::kRgb, value))
-    m.emissive *= glm::vec3(value);
-  if (inputs.tangent.x != 0.0f || inputs.tangent.y != 0.0f || inputs.tangent.z != 0.0f)
-    if (readSlot(material.normalTexture, kSlotNormal, ColorSpace::Linear, textures, inputs, lf.set,
-                 SceneTextures::kRgb, value))
-      out.normal = perturbNormal(inputs.normal, inputs.tangent, glm::vec3(value), material.normalScale);
+  if (const glm::vec4* value = slots.value(emissive)) m.emissive *= glm::vec3(*value);
+  if (const glm::vec4* value = slots.value(normal))
+    out.normal = perturbNormal(inputs.normal, inputs.tangent, glm::vec3(*value), material.normalScale);
   return out;
 }
 
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs) {
-  const Log2Footprints lf(inputs);
-  glm::vec4 value;
-  if (readSlot(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, textures, inputs, lf.set,
-               SceneTextures::kAlpha, value))
-    return material.alpha * value.a;
+  SlotLookups slots;
+  const int base = slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kAlpha, inputs);
+  textures.sampleSlots(slots.lookups, slots.count, inputs.texcoords, inputs.footprintUv);
+  if (const glm::vec4* value = slots.value(base)) return material.alpha * value->a;
   return material.alpha;
 }
 

@@ -3,7 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace iblkit {
 
@@ -101,11 +106,55 @@ int floorToInt(float x) {
   return static_cast<int>(std::floor(std::clamp(x, -16777216.0f, 16777216.0f)));
 }
 
-// rgbTable decodes R, G and B; alpha is always linear (the table's linear half).
+// rgbTable decodes R, G and B; alpha is always linear (the table's linear half). A level with
+// decoded texels holds these very values.
 glm::vec4 fetch(const MipLevel& level, const float* rgbTable, const float* alphaTable, int x, int y) {
-  const std::uint8_t* texel = &level.rgba[(static_cast<std::size_t>(y) * level.width + x) * 4];
+  const std::size_t index = (static_cast<std::size_t>(y) * level.width + x) * 4;
+  if (!level.decoded.empty()) {
+    const float* texel = &level.decoded[index];
+    return glm::vec4(texel[0], texel[1], texel[2], texel[3]);
+  }
+  const std::uint8_t* texel = &level.rgba[index];
   return glm::vec4(rgbTable[texel[0]], rgbTable[texel[1]], rgbTable[texel[2]], alphaTable[texel[3]]);
 }
+
+// Four floats, one per channel, blended lane by lane: one SSE register where the target has SSE2
+// (every x86-64 target), four scalars elsewhere. Each lane does the IEEE operations the scalar
+// code does (no fused multiply-add: the x86-64 baseline has none), so the results are the same.
+struct Lanes4 {
+#if defined(__SSE2__)
+  __m128 v;
+  static Lanes4 load(const float* p) { return {_mm_loadu_ps(p)}; }
+  static Lanes4 set(float x, float y, float z, float w) { return {_mm_setr_ps(x, y, z, w)}; }
+  static Lanes4 splat(float x) { return {_mm_set1_ps(x)}; }
+  friend Lanes4 operator*(Lanes4 a, Lanes4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+  friend Lanes4 operator+(Lanes4 a, Lanes4 b) { return {_mm_add_ps(a.v, b.v)}; }
+  // The lanes whose bit is set in `channels` (bit k: lane k), the others 0.
+  template <unsigned kChannels>
+  Lanes4 masked() const {
+    if constexpr (kChannels == 0xF) return *this;
+    const __m128 keep = _mm_castsi128_ps(_mm_setr_epi32(kChannels & 1u ? -1 : 0, kChannels & 2u ? -1 : 0,
+                                                        kChannels & 4u ? -1 : 0, kChannels & 8u ? -1 : 0));
+    return {_mm_and_ps(v, keep)};
+  }
+  void store(glm::vec4& out) const { _mm_storeu_ps(&out.x, v); }
+#else
+  float v[4];
+  static Lanes4 load(const float* p) { return {{p[0], p[1], p[2], p[3]}}; }
+  static Lanes4 set(float x, float y, float z, float w) { return {{x, y, z, w}}; }
+  static Lanes4 splat(float x) { return {{x, x, x, x}}; }
+  friend Lanes4 operator*(Lanes4 a, Lanes4 b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1], a.v[2] * b.v[2], a.v[3] * b.v[3]}}; }
+  friend Lanes4 operator+(Lanes4 a, Lanes4 b) { return {{a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2], a.v[3] + b.v[3]}}; }
+  template <unsigned kChannels>
+  Lanes4 masked() const {
+    Lanes4 out = *this;
+    for (int k = 0; k < 4; ++k)
+      if (!((kChannels >> k) & 1u)) out.v[k] = 0.0f;
+    return out;
+  }
+  void store(glm::vec4& out) const { out = glm::vec4(v[0], v[1], v[2], v[3]); }
+#endif
+};
 
 // The wrapped neighbours i0 = wrap(i), i1 = wrap(i + 1) of a LINEAR lookup; REPEAT (the common
 // case) without a second division.
@@ -139,17 +188,25 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
   return glm::mix(top, bottom, fy);
 }
 
-// sampleLevel's LINEAR lookup for the common case, inlined into sampleMipChain's lookups (a call per
-// level returned the vec4 through the stack, and the perf profile showed the stall): both wraps
-// REPEAT on power-of-two sizes (a mask, no switch) and the coordinate well inside int range.
-// The same texels, weights and arithmetic order as sampleLevel, so the same result; false for
-// anything else, which then takes sampleLevel.
-// kChannels (SceneTextures::kRgba ...): the channels computed, the others set to 0 without
-// loading their texels.
-template <unsigned kChannels = 0xF>
-[[gnu::always_inline]] inline bool bilinearRepeatPow2(const MipLevel& level, const float* rgbTable,
-                                                      const float* alphaTable, glm::vec2 uv, float* out) {
-  const int w = level.width, h = level.height;
+// The 2 x 2 texels of sampleLevel's LINEAR lookup and their weights in the common case, worked
+// out once and read from any level of the same size: both wraps REPEAT on power-of-two sizes (a
+// mask, no switch) and the coordinate well inside int range. The same texels and weights as
+// sampleLevel, and blendTaps the same arithmetic order, so the same result.
+struct BilinearTaps {
+  std::size_t texel[4];  // y * width + x of (i0, j0), (i1, j0), (i0, j1), (i1, j1)
+  float fx, fy;
+  Lanes4 wx0, wx1, wy0, wy1;  // 1 - fx, fx, 1 - fy, fy in every lane (decoded levels' blend)
+};
+
+// Whether lookups of `sampler` with `filter` can take repeatPow2Taps.
+bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
+  return filter == TextureFilter::Linear && sampler.wrapS == TextureWrap::Repeat &&
+         sampler.wrapT == TextureWrap::Repeat;
+}
+
+// The taps at `uv` of a w x h level for a REPEAT LINEAR lookup; false for a size that is not a
+// power of two or a coordinate beyond 2^24 texels (or NaN), which then take sampleLevel.
+[[gnu::always_inline]] inline bool repeatPow2Taps(int w, int h, glm::vec2 uv, BilinearTaps& taps) {
   if (((w & (w - 1)) | (h & (h - 1))) != 0) return false;
   const float xs = uv.x * w - 0.5f, ys = uv.y * h - 0.5f;
   if (!(std::abs(xs) < 16777216.0f && std::abs(ys) < 16777216.0f)) return false;  // NaN, inf, huge
@@ -158,47 +215,175 @@ template <unsigned kChannels = 0xF>
   int i = static_cast<int>(xs), j = static_cast<int>(ys);
   i -= static_cast<float>(i) > xs;
   j -= static_cast<float>(j) > ys;
-  const float fx = xs - static_cast<float>(i), fy = ys - static_cast<float>(j);
-  const int i0 = i & (w - 1), i1 = (i + 1) & (w - 1);
-  const int j0 = j & (h - 1), j1 = (j + 1) & (h - 1);
-  const std::uint8_t* row0 = &level.rgba[static_cast<std::size_t>(j0) * w * 4];
-  const std::uint8_t* row1 = &level.rgba[static_cast<std::size_t>(j1) * w * 4];
-  const std::uint8_t *a = row0 + 4 * i0, *b = row0 + 4 * i1, *c = row1 + 4 * i0, *d = row1 + 4 * i1;
-  const float gx = 1.0f - fx, gy = 1.0f - fy;
+  taps.fx = xs - static_cast<float>(i);
+  taps.fy = ys - static_cast<float>(j);
+  taps.wx0 = Lanes4::splat(1.0f - taps.fx);
+  taps.wx1 = Lanes4::splat(taps.fx);
+  taps.wy0 = Lanes4::splat(1.0f - taps.fy);
+  taps.wy1 = Lanes4::splat(taps.fy);
+  const std::size_t i0 = static_cast<std::size_t>(i & (w - 1)), i1 = static_cast<std::size_t>((i + 1) & (w - 1));
+  const std::size_t row0 = static_cast<std::size_t>(j & (h - 1)) * static_cast<std::size_t>(w);
+  const std::size_t row1 = static_cast<std::size_t>((j + 1) & (h - 1)) * static_cast<std::size_t>(w);
+  taps.texel[0] = row0 + i0;
+  taps.texel[1] = row0 + i1;
+  taps.texel[2] = row1 + i0;
+  taps.texel[3] = row1 + i1;
+  return true;
+}
+
+// The bilinear blend of `level`'s texels at `taps` (sampleLevel's weights and order: the rows in
+// x, then the two rows in y), inlined into the lookups (a call per level returned the vec4 through
+// the stack, and the perf profile showed the stall). kChannels (SceneTextures::kRgba ...): the
+// channels computed, the others 0. A level with decoded texels loads each texel's four channels
+// at once (the tables' decodings) into one Lanes4; otherwise each used channel's four bytes are
+// decoded through the tables and the other channels' texels are not loaded.
+template <unsigned kChannels = 0xF>
+[[gnu::always_inline]] inline Lanes4 blendTaps(const MipLevel& level, const float* rgbTable,
+                                               const float* alphaTable, const BilinearTaps& taps) {
+  if (!level.decoded.empty()) {
+    const float* texels = level.decoded.data();
+    const Lanes4 top =
+        Lanes4::load(texels + 4 * taps.texel[0]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[1]) * taps.wx1;
+    const Lanes4 bottom =
+        Lanes4::load(texels + 4 * taps.texel[2]) * taps.wx0 + Lanes4::load(texels + 4 * taps.texel[3]) * taps.wx1;
+    return (top * taps.wy0 + bottom * taps.wy1).masked<kChannels>();
+  }
+  const float fx = taps.fx, fy = taps.fy, gx = 1.0f - fx, gy = 1.0f - fy;
+  const std::uint8_t* texels = level.rgba.data();
+  const std::uint8_t *a = texels + 4 * taps.texel[0], *b = texels + 4 * taps.texel[1],
+                     *c = texels + 4 * taps.texel[2], *d = texels + 4 * taps.texel[3];
+  float result[4];
   for (int k = 0; k < 3; ++k) {
     if (!((kChannels >> k) & 1u)) {
-      out[k] = 0.0f;
+      result[k] = 0.0f;
       continue;
     }
     const float top = rgbTable[a[k]] * gx + rgbTable[b[k]] * fx;
     const float bottom = rgbTable[c[k]] * gx + rgbTable[d[k]] * fx;
-    out[k] = top * gy + bottom * fy;
+    result[k] = top * gy + bottom * fy;
   }
   if constexpr ((kChannels & 8u) != 0) {
     const float top = alphaTable[a[3]] * gx + alphaTable[b[3]] * fx;
     const float bottom = alphaTable[c[3]] * gx + alphaTable[d[3]] * fx;
-    out[3] = top * gy + bottom * fy;
+    result[3] = top * gy + bottom * fy;
   } else {
-    out[3] = 0.0f;
+    result[3] = 0.0f;
   }
-  return true;
+  // From registers (set, not a load of `result`: four scalar stores read back as one vector
+  // would stall on store forwarding).
+  return Lanes4::set(result[0], result[1], result[2], result[3]);
 }
 
-// Whether lookups of `sampler` with `filter` can take bilinearRepeatPow2.
-bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
-  return filter == TextureFilter::Linear && sampler.wrapS == TextureWrap::Repeat &&
-         sampler.wrapT == TextureWrap::Repeat;
+// GL 4.5 section 8.14's choice of levels for lambda = `lod`: `level` alone (fraction 0) or
+// blended with level + 1 by `fraction` (LINEAR_MIPMAP_LINEAR), each read with `filter`.
+struct LevelChoice {
+  int level;
+  float fraction;
+  TextureFilter filter;
+};
+
+LevelChoice chooseLevels(const MipChain& chain, const TextureSampler& sampler, float lod) {
+  if (lod != lod) lod = 0.0f;
+  // Section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter pair;
+  // GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
+  if (lod <= 0.0f) return {0, 0.0f, sampler.magFilter};
+  if (!sampler.mipmaps) return {0, 0.0f, sampler.minFilter};
+  const int q = static_cast<int>(chain.levels.size()) - 1;
+  if (sampler.mipFilter == TextureFilter::Nearest) {
+    // Section 8.14.3: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
+    const int d = lod <= 0.5f ? 0 : std::min(q, static_cast<int>(std::ceil(std::min(lod, 1e6f) + 0.5f)) - 1);
+    return {d, 0.0f, sampler.minFilter};
+  }
+  if (lod >= static_cast<float>(q)) return {q, 0.0f, sampler.minFilter};
+  const int d1 = static_cast<int>(std::floor(lod));
+  return {d1, lod - static_cast<float>(d1), sampler.minFilter};
 }
 
-// One level's lookup with `filter`: the fast path when it applies. alphaTable: tables().linear.
+// A lookup worked out before any texel is read: its levels, and on the fast path (REPEAT LINEAR
+// power-of-two, repeatPow2Taps) the taps in each. It depends on the chain only through its level
+// sizes, so lookups of several chains of one size at one uv and lod share it (sampleSlots).
+struct LookupPlan {
+  LevelChoice choice;
+  bool fast;
+  BilinearTaps taps[2];
+  Lanes4 w0, w1;  // 1 - fraction, fraction in every lane (the fast trilinear blend)
+};
+
+[[gnu::always_inline]] inline LookupPlan planLookup(const MipChain& chain, const TextureSampler& sampler,
+                                                    glm::vec2 uv, float lod) {
+  LookupPlan plan;
+  plan.fast = false;
+  if (chain.levels.empty()) {
+    plan.choice = LevelChoice{};
+    return plan;
+  }
+  plan.choice = chooseLevels(chain, sampler, lod);
+  const int d = plan.choice.level;
+  plan.fast = repeatLinear(sampler, plan.choice.filter) &&
+              repeatPow2Taps(chain.levels[d].width, chain.levels[d].height, uv, plan.taps[0]) &&
+              (plan.choice.fraction == 0.0f ||
+               repeatPow2Taps(chain.levels[d + 1].width, chain.levels[d + 1].height, uv, plan.taps[1]));
+  plan.w0 = Lanes4::splat(1.0f - plan.choice.fraction);
+  plan.w1 = Lanes4::splat(plan.choice.fraction);
+  return plan;
+}
+
+// The lookup `plan` (made for a chain of `chain`'s level sizes at `uv`) in `chain`, written to
+// `out` (returning a glm::vec4 packs it into two registers through the stack, a store-forwarding
+// stall per lookup in perf annotate). An empty chain reads 1.
 template <unsigned kChannels = 0xF>
-[[gnu::always_inline]] inline glm::vec4 lookupLevel(const MipLevel& level, const float* rgbTable,
-                                                    const float* alphaTable, const TextureSampler& sampler,
-                                                    glm::vec2 uv, TextureFilter filter) {
-  float out[4];
-  if (repeatLinear(sampler, filter) && bilinearRepeatPow2<kChannels>(level, rgbTable, alphaTable, uv, out))
-    return glm::vec4(out[0], out[1], out[2], out[3]);
-  return sampleLevel(level, rgbTable, sampler, uv, filter);
+[[gnu::always_inline]] inline void runLookup(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
+                                             const LookupPlan& plan, glm::vec4& out) {
+  if (chain.levels.empty()) {
+    out = glm::vec4(1.0f);
+    return;
+  }
+  const DecodeTables& decode = tables();
+  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? decode.srgb.data() : decode.linear.data();
+  const float* alphaTable = decode.linear.data();
+  const int d = plan.choice.level;
+  const float fraction = plan.choice.fraction;
+  if (plan.fast) {
+    const Lanes4 a = blendTaps<kChannels>(chain.levels[d], rgbTable, alphaTable, plan.taps[0]);
+    if (fraction == 0.0f) {
+      a.store(out);
+      return;
+    }
+    // Trilinear in registers, the arithmetic of glm::mix below.
+    const Lanes4 b = blendTaps<kChannels>(chain.levels[d + 1], rgbTable, alphaTable, plan.taps[1]);
+    (a * plan.w0 + b * plan.w1).store(out);
+    return;
+  }
+  const glm::vec4 a = sampleLevel(chain.levels[d], rgbTable, sampler, uv, plan.choice.filter);
+  out = fraction == 0.0f ? a : glm::mix(a, sampleLevel(chain.levels[d + 1], rgbTable, sampler, uv, plan.choice.filter), fraction);
+}
+
+// runLookup with the channel mask given at run time (SceneTextures's masks).
+[[gnu::always_inline]] inline void runLookupChannels(unsigned channels, const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv,
+                       const LookupPlan& plan, glm::vec4& out) {
+  switch (channels) {
+    case SceneTextures::kRed:
+      return runLookup<SceneTextures::kRed>(chain, sampler, uv, plan, out);
+    case SceneTextures::kGreenBlue:
+      return runLookup<SceneTextures::kGreenBlue>(chain, sampler, uv, plan, out);
+    case SceneTextures::kRgb:
+      return runLookup<SceneTextures::kRgb>(chain, sampler, uv, plan, out);
+    case SceneTextures::kAlpha:
+      return runLookup<SceneTextures::kAlpha>(chain, sampler, uv, plan, out);
+    default:
+      return runLookup<SceneTextures::kRgba>(chain, sampler, uv, plan, out);
+  }
+}
+
+bool sameSampler(const TextureSampler& a, const TextureSampler& b) {
+  return a.wrapS == b.wrapS && a.wrapT == b.wrapT && a.magFilter == b.magFilter && a.minFilter == b.minFilter &&
+         a.mipmaps == b.mipmaps && a.mipFilter == b.mipFilter;
+}
+
+// Bit for bit: equal transforms then give equal uvs and lods (== would also match -0 with 0).
+bool sameTransform(const TextureTransform& a, const TextureTransform& b) {
+  static_assert(sizeof(TextureTransform) == 5 * sizeof(float));
+  return std::memcmp(&a, &b, sizeof(TextureTransform)) == 0;
 }
 
 // KHR_texture_transform without building the matrix (no trigonometry for the common unrotated
@@ -229,7 +414,25 @@ MipChain buildMipChain(const TextureImage& image, ColorSpace colorSpace) {
   chain.levels.push_back(std::move(base));
   while (chain.levels.back().width > 1 || chain.levels.back().height > 1)
     chain.levels.push_back(reduce(chain.levels.back(), colorSpace));
+  chain.alphaAllOne = std::all_of(chain.levels.begin(), chain.levels.end(), [](const MipLevel& level) {
+    for (std::size_t i = 3; i < level.rgba.size(); i += 4)
+      if (level.rgba[i] != 255) return false;
+    return true;
+  });
   return chain;
+}
+
+void decodeSmallLevels(MipChain& chain) {
+  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
+  const float* alphaTable = tables().linear.data();
+  for (MipLevel& level : chain.levels) {
+    if (static_cast<long long>(level.width) * level.height > kDecodedLevelTexels) continue;
+    level.decoded.resize(level.rgba.size());
+    for (std::size_t i = 0; i + 3 < level.rgba.size(); i += 4) {
+      for (std::size_t c = 0; c < 3; ++c) level.decoded[i + c] = rgbTable[level.rgba[i + c]];
+      level.decoded[i + 3] = alphaTable[level.rgba[i + 3]];
+    }
+  }
 }
 
 float textureLod(const MipChain& chain, float footprintUv) {
@@ -261,73 +464,9 @@ int wrapTexel(int i, int size, TextureWrap wrap) {
   }
 }
 
-namespace {
-
-// sampleMipChain's body, inlined into SceneTextures::trySample too, so that the result is written
-// where the caller wants it (returning a glm::vec4 packs it into two registers through the stack,
-// a store-forwarding stall per lookup in perf annotate).
-template <unsigned kChannels = 0xF>
-[[gnu::always_inline]] inline void sampleChainInto(const MipChain& chain, const TextureSampler& sampler,
-                                                   glm::vec2 uv, float lod, glm::vec4& out) {
-  if (chain.levels.empty()) {
-    out = glm::vec4(1.0f);
-    return;
-  }
-  const DecodeTables& decode = tables();
-  const float* rgbTable = chain.colorSpace == ColorSpace::Srgb ? decode.srgb.data() : decode.linear.data();
-  const float* alphaTable = decode.linear.data();
-  if (lod != lod) lod = 0.0f;
-  // GL 4.5 section 8.14: lambda <= c magnifies, with c = 0 (iblkit takes c = 0 for every filter
-  // pair; GL's c = 1/2 applies only to LINEAR magnification with a NEAREST_MIPMAP_* minification).
-  if (lod <= 0.0f) {
-    out = lookupLevel<kChannels>(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.magFilter);
-    return;
-  }
-  if (!sampler.mipmaps) {
-    out = lookupLevel<kChannels>(chain.levels[0], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
-    return;
-  }
-  const int q = static_cast<int>(chain.levels.size()) - 1;
-  if (sampler.mipFilter == TextureFilter::Nearest) {
-    // Section 8.14.3: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
-    const int d = lod <= 0.5f ? 0 : std::min(q, static_cast<int>(std::ceil(std::min(lod, 1e6f) + 0.5f)) - 1);
-    out = lookupLevel<kChannels>(chain.levels[d], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
-    return;
-  }
-  if (lod >= static_cast<float>(q)) {
-    out = lookupLevel<kChannels>(chain.levels[q], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
-    return;
-  }
-  const int d1 = static_cast<int>(std::floor(lod));
-  const float fraction = lod - static_cast<float>(d1);
-  if (fraction != 0.0f && repeatLinear(sampler, sampler.minFilter)) {
-    // Trilinear in scalars: blending two vec4 results went through the stack with a
-    // store-forwarding stall per lookup (perf). The same arithmetic as glm::mix below.
-    float a[4], b[4];
-    if (bilinearRepeatPow2<kChannels>(chain.levels[d1], rgbTable, alphaTable, uv, a) &&
-        bilinearRepeatPow2<kChannels>(chain.levels[d1 + 1], rgbTable, alphaTable, uv, b)) {
-      const float g = 1.0f - fraction;
-      out = glm::vec4(a[0] * g + b[0] * fraction, a[1] * g + b[1] * fraction, a[2] * g + b[2] * fraction,
-                      a[3] * g + b[3] * fraction);
-      return;
-    }
-  }
-  const glm::vec4 a =
-      lookupLevel<kChannels>(chain.levels[d1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
-  if (fraction == 0.0f) {
-    out = a;
-    return;
-  }
-  const glm::vec4 b =
-      lookupLevel<kChannels>(chain.levels[d1 + 1], rgbTable, alphaTable, sampler, uv, sampler.minFilter);
-  out = glm::mix(a, b, fraction);
-}
-
-}  // namespace
-
 glm::vec4 sampleMipChain(const MipChain& chain, const TextureSampler& sampler, glm::vec2 uv, float lod) {
   glm::vec4 out;
-  sampleChainInto(chain, sampler, uv, lod, out);
+  runLookup(chain, sampler, uv, planLookup(chain, sampler, uv, lod), out);
   return out;
 }
 
@@ -345,6 +484,7 @@ SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::ve
     if (chainOfImage[image] < 0) {
       MipChain chain = buildMipChain(images[image], colorSpace);
       if (chain.levels.empty()) return;
+      decodeSmallLevels(chain);
       chainOfImage[image] = static_cast<int>(chains_.size());
       chainLog2Size_.push_back(
           0.5f * std::log2(static_cast<float>(chain.width()) * static_cast<float>(chain.height())));
@@ -359,6 +499,22 @@ SceneTextures::SceneTextures(const std::vector<Texture>& textures, const std::ve
     use(material.normalTexture, ColorSpace::Linear);
     use(material.occlusionTexture, ColorSpace::Linear);
     use(material.emissiveTexture, ColorSpace::Srgb);
+  }
+  for (std::size_t t = 0; t < textures_.size(); ++t) {
+    Entry& entry = textures_[t];
+    const int chain = entry.linear >= 0 ? entry.linear : entry.srgb;
+    if (chain < 0) continue;
+    entry.layout = static_cast<int>(t);
+    for (std::size_t other = 0; other < t; ++other) {
+      const Entry& earlier = textures_[other];
+      const int otherChain = earlier.linear >= 0 ? earlier.linear : earlier.srgb;
+      if (otherChain >= 0 && sameSampler(earlier.sampler, entry.sampler) &&
+          chains_[otherChain].width() == chains_[chain].width() &&
+          chains_[otherChain].height() == chains_[chain].height()) {
+        entry.layout = earlier.layout;
+        break;
+      }
+    }
   }
 }
 
@@ -378,45 +534,88 @@ float SceneTextures::log2Footprint(float footprintUv) {
   return footprintUv > 0.0f ? std::log2(footprintUv) : -std::numeric_limits<float>::infinity();
 }
 
-bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
-                              float log2FootprintUv, glm::vec4& value) const {
-  return trySampleChannels<kRgba>(ref, colorSpace, uv, log2FootprintUv, value);
-}
-
-bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
-                              float log2FootprintUv, glm::vec4& value, unsigned channels) const {
-  switch (channels) {
-    case kRed:
-      return trySampleChannels<kRed>(ref, colorSpace, uv, log2FootprintUv, value);
-    case kGreenBlue:
-      return trySampleChannels<kGreenBlue>(ref, colorSpace, uv, log2FootprintUv, value);
-    case kRgb:
-      return trySampleChannels<kRgb>(ref, colorSpace, uv, log2FootprintUv, value);
-    case kAlpha:
-      return trySampleChannels<kAlpha>(ref, colorSpace, uv, log2FootprintUv, value);
-    default:
-      return trySampleChannels<kRgba>(ref, colorSpace, uv, log2FootprintUv, value);
-  }
-}
-
-template <unsigned kChannels>
-bool SceneTextures::trySampleChannels(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
-                                      float log2FootprintUv, glm::vec4& value) const {
-  if (ref.texture < 0 || ref.texture >= static_cast<int>(textures_.size())) return false;
+int SceneTextures::chainIndex(const TextureRef& ref, ColorSpace colorSpace) const {
+  if (ref.texture < 0 || ref.texture >= static_cast<int>(textures_.size())) return -1;
   const Entry& entry = textures_[ref.texture];
-  const int index = colorSpace == ColorSpace::Srgb ? entry.srgb : entry.linear;
-  if (index < 0) return false;
+  return colorSpace == ColorSpace::Srgb ? entry.srgb : entry.linear;
+}
+
+float SceneTextures::slotLod(const TextureRef& ref, int chain, float log2FootprintUv) const {
   // textureLod's log2(footprint * sqrt(width * height)) as a sum of logs (equal up to rounding).
   // The transform scales the footprint as it scales uv (isotropically: the geometric mean).
-  float lod = log2FootprintUv + chainLog2Size_[index];
+  float lod = log2FootprintUv + chainLog2Size_[chain];
   const glm::vec2 scale = ref.transform.scale;
   if (scale.x != 1.0f || scale.y != 1.0f) {
     const float area = std::abs(scale.x * scale.y);
     lod += area > 0.0f ? 0.5f * std::log2(area) : -std::numeric_limits<float>::infinity();
   }
   if (lod != lod) lod = -std::numeric_limits<float>::infinity();  // -inf + inf: a zero footprint
-  sampleChainInto<kChannels>(chains_[index], entry.sampler, applyTransform(ref.transform, uv), lod, value);
+  return lod;
+}
+
+bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
+                              float log2FootprintUv, glm::vec4& value) const {
+  return trySample(ref, colorSpace, uv, log2FootprintUv, value, kRgba);
+}
+
+bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
+                              float log2FootprintUv, glm::vec4& value, unsigned channels) const {
+  const int index = chainIndex(ref, colorSpace);
+  if (index < 0) return false;
+  const MipChain& chain = chains_[index];
+  const TextureSampler& sampler = textures_[ref.texture].sampler;
+  const glm::vec2 transformed = applyTransform(ref.transform, uv);
+  runLookupChannels(channels, chain, sampler, transformed,
+                    planLookup(chain, sampler, transformed, slotLod(ref, index, log2FootprintUv)), value);
   return true;
+}
+
+
+void SceneTextures::sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2],
+                                const float footprintUv[2]) const {
+  constexpr int kSharedPlans = 5;  // one per glTF slot
+  // The lookups planned so far: a later one of the same layout (SceneTextures::Entry), uv set and
+  // transform (so the same transformed uv and lod) reuses the plan.
+  struct Planned {
+    int layout, set;
+    const TextureTransform* transform;
+    glm::vec2 uv;
+    LookupPlan plan;
+  };
+  Planned planned[kSharedPlans], unshared;
+  int plans = 0;
+  float log2Footprints[2];
+  bool haveLog2[2] = {false, false};
+  for (int l = 0; l < count; ++l) {
+    SlotLookup& lookup = lookups[l];
+    const TextureRef& ref = *lookup.ref;
+    const int index = chainIndex(ref, lookup.colorSpace);
+    lookup.found = index >= 0;
+    if (index < 0) continue;
+    const MipChain& chain = chains_[index];
+    const Entry& entry = textures_[ref.texture];
+    const int set = ref.texCoord == 1 ? 1 : 0;
+    const Planned* shared = nullptr;
+    for (int p = 0; p < plans && !shared; ++p) {
+      const Planned& candidate = planned[p];
+      if (candidate.layout == entry.layout && candidate.set == set && sameTransform(*candidate.transform, ref.transform))
+        shared = &candidate;
+    }
+    if (!shared) {
+      if (!haveLog2[set]) {
+        log2Footprints[set] = log2Footprint(footprintUv[set]);
+        haveLog2[set] = true;
+      }
+      Planned& made = plans < kSharedPlans ? planned[plans++] : unshared;
+      made.layout = entry.layout;
+      made.set = set;
+      made.transform = &ref.transform;
+      made.uv = applyTransform(ref.transform, texcoords[set]);
+      made.plan = planLookup(chain, entry.sampler, made.uv, slotLod(ref, index, log2Footprints[set]));
+      shared = &made;
+    }
+    runLookupChannels(lookup.channels, chain, entry.sampler, shared->uv, shared->plan, lookup.value);
+  }
 }
 
 glm::vec4 SceneTextures::sample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,

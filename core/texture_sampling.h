@@ -32,14 +32,30 @@ const float* srgbDecodeTable();
 struct MipLevel {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // width * height * 4, in the chain's colour space
+  // The same texels decoded (linear RGBA floats, width * height * 4: the chain's sRGB or linear
+  // decoding of rgba), or empty. decodeSmallLevels fills it; lookups then load one texel's four
+  // channels at once instead of decoding four bytes through the tables, with the same values.
+  std::vector<float> decoded;
 };
 struct MipChain {
   ColorSpace colorSpace = ColorSpace::Linear;
   std::vector<MipLevel> levels;
+  // Every texel of every level has alpha 255 (buildMipChain sets it), so that every filtered
+  // alpha is exactly 1: the weights of a lookup sum to exactly 1 in float (1 - f + f rounds to 1
+  // for every float f in [0, 1]). A ray's alpha test can then be decided without a lookup.
+  bool alphaAllOne = false;
   int width() const { return levels.empty() ? 0 : levels[0].width; }
   int height() const { return levels.empty() ? 0 : levels[0].height; }
 };
 MipChain buildMipChain(const TextureImage& image, ColorSpace colorSpace);
+
+// Levels of at most this many texels get decoded texels (MipLevel::decoded, 16 bytes a texel:
+// at most 1 MiB a level, 4/3 MiB the decoded tail of a chain). Most lookups read such levels: a
+// level of detail picks about one texel per footprint, so a level above 256 x 256 is read only
+// where a surface spans more than 256 footprints across (the tracer's camera cone is half a pixel).
+inline constexpr int kDecodedLevelTexels = 256 * 256;
+// Fills MipLevel::decoded for every level of `chain` with at most kDecodedLevelTexels texels.
+void decodeSmallLevels(MipChain& chain);
 
 // The level of detail lambda for an isotropic footprint `footprintUv` wide in uv units (0: the
 // finest level): log2(footprintUv * sqrt(width * height)) of level 0 (Akenine-Möller et al. 2019,
@@ -89,17 +105,37 @@ class SceneTextures {
   bool trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
                  glm::vec4& value, unsigned channels) const;
 
+  // One slot's lookup in sampleSlots: `value` and `found` are trySample's value and result.
+  struct SlotLookup {
+    const TextureRef* ref = nullptr;  // present()
+    ColorSpace colorSpace = ColorSpace::Linear;
+    unsigned channels = kRgba;
+    glm::vec4 value{1.0f};
+    bool found = false;
+  };
+  // The lookups of several slots at one point (evaluateSurfaceMaterial's), each the value of
+  // trySample(*ref, colorSpace, texcoords[set], log2Footprint(footprintUv[set]), value, channels).
+  // Slots that read through the same uv set, transform and sampler from textures of the same size
+  // (the usual glTF material: one uv layout, one sampler) share the transformed uv, the level of
+  // detail, the levels and the texel addresses and weights, worked out once; each slot then only
+  // loads and blends its own texels.
+  void sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2], const float footprintUv[2]) const;
+
  private:
   struct Entry {
     TextureSampler sampler;
     int linear = -1, srgb = -1;  // indices into chains_
+    // Textures of one layout (the same sampler, and chains of the same level sizes: from images
+    // of one size) share a number, the first such texture's index; sampleSlots shares plans
+    // within it.
+    int layout = -1;
   };
   std::vector<Entry> textures_;
   std::vector<MipChain> chains_;
   std::vector<float> chainLog2Size_;  // per chain: log2(sqrt(width * height)) of level 0
-  template <unsigned kChannels>
-  bool trySampleChannels(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv, float log2FootprintUv,
-                         glm::vec4& value) const;
+  // The chain ref reads in colorSpace, -1 if none; the lod of ref's lookup in chain `chain`.
+  int chainIndex(const TextureRef& ref, ColorSpace colorSpace) const;
+  float slotLod(const TextureRef& ref, int chain, float log2FootprintUv) const;
 };
 
 }  // namespace iblkit

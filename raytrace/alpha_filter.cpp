@@ -56,8 +56,11 @@ AlphaFilter::AlphaFilter(std::vector<const Mesh*> geometryMeshes, const std::vec
     geometry.material = materials[static_cast<std::size_t>(geometry.mesh->material)];
     const Material& material = geometry.material;
     const TextureRef& base = material.baseColorTexture;
-    geometry.alphaFromTexture = (slots & kSlotBaseColor) && base.present() && !textures_->empty() &&
-                                textures_->chain(base.texture, ColorSpace::Srgb) != nullptr;
+    // A texture whose alpha is 255 everywhere filters to exactly 1 (MipChain::alphaAllOne): the
+    // factor alone decides, as without the texture (RGB images load with alpha 255).
+    const MipChain* baseChain = textures_->empty() ? nullptr : textures_->chain(base.texture, ColorSpace::Srgb);
+    geometry.alphaFromTexture =
+        (slots & kSlotBaseColor) && base.present() && baseChain != nullptr && !baseChain->alphaAllOne;
     // A constant alpha decides once for the whole geometry: present everywhere needs no test.
     bool partial = geometry.alphaFromTexture;
     if (material.alphaMode == AlphaMode::Mask) partial = partial || !(material.alpha >= material.alphaCutoff);

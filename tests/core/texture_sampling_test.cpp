@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <random>
 
 namespace iblkit {
 namespace {
@@ -364,6 +365,139 @@ TEST(SceneTextures, ChannelMaskReadsItsChannelsAsTheFullLookup) {
               EXPECT_EQ(masked[c], 0.0f) << "mask " << mask << " channel " << c << " footprint " << footprint;
           }
         }
+}
+
+// A size x size image of pseudo-random bytes (alpha included), for lookups that must agree bit
+// for bit.
+TextureImage noiseImage(int width, int height, unsigned seed) {
+  std::mt19937 random(seed);
+  return makeImage(width, height, [&](int, int) {
+    return glm::u8vec4(random() & 255u, random() & 255u, random() & 255u, random() & 255u);
+  });
+}
+
+// Decoded levels (decodeSmallLevels) hold the tables' decodings, and a lookup reads the same
+// values from them as from the bytes, bit for bit, on every path: REPEAT power-of-two (the SSE
+// blend), CLAMP and MIRRORED_REPEAT, a size that is not a power of two, NEAREST, magnification,
+// trilinear, mip NEAREST and beyond the last level.
+TEST(DecodeSmallLevels, LookupsReadTheSameValuesAsFromTheBytes) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> uv(-2.0f, 3.0f), lod(-1.0f, 7.0f);
+  for (const glm::ivec2 size : {glm::ivec2(32, 32), glm::ivec2(64, 16), glm::ivec2(24, 10)})
+    for (ColorSpace space : {ColorSpace::Srgb, ColorSpace::Linear}) {
+      const MipChain bytes = buildMipChain(noiseImage(size.x, size.y, 11), space);
+      MipChain decoded = bytes;
+      decodeSmallLevels(decoded);
+      for (const MipLevel& level : decoded.levels) {
+        ASSERT_EQ(level.decoded.size(), level.rgba.size());
+        for (std::size_t i = 0; i < level.rgba.size(); ++i)
+          ASSERT_EQ(level.decoded[i], i % 4 == 3 || space == ColorSpace::Linear
+                                           ? static_cast<float>(level.rgba[i] / 255.0)
+                                                                               : srgbToLinear(level.rgba[i]));
+      }
+      for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat})
+        for (TextureFilter filter : {TextureFilter::Linear, TextureFilter::Nearest})
+          for (TextureFilter mip : {TextureFilter::Linear, TextureFilter::Nearest}) {
+            TextureSampler sampler = samplerWith(wrap, filter);
+            sampler.mipFilter = mip;
+            for (int i = 0; i < 200; ++i) {
+              const glm::vec2 at(uv(random), uv(random));
+              const float lambda = lod(random);
+              const glm::vec4 a = sampleMipChain(bytes, sampler, at, lambda);
+              const glm::vec4 b = sampleMipChain(decoded, sampler, at, lambda);
+              for (int c = 0; c < 4; ++c)
+                ASSERT_EQ(a[c], b[c]) << size.x << "x" << size.y << " uv " << at.x << " " << at.y << " lod "
+                                      << lambda << " channel " << c;
+            }
+          }
+    }
+}
+
+// Only levels of at most kDecodedLevelTexels texels are decoded; SceneTextures decodes its chains.
+TEST(DecodeSmallLevels, DecodesOnlyTheSmallLevels) {
+  MipChain chain = buildMipChain(makeImage(512, 256, [](int, int) { return glm::u8vec4(9); }), ColorSpace::Linear);
+  decodeSmallLevels(chain);
+  ASSERT_EQ(chain.levels.size(), 10u);
+  EXPECT_TRUE(chain.levels[0].decoded.empty()) << "512 x 256 is 131072 texels";
+  for (std::size_t i = 1; i < chain.levels.size(); ++i) EXPECT_EQ(chain.levels[i].decoded.size(), chain.levels[i].rgba.size());
+  Material material;
+  material.baseColorTexture.texture = 0;
+  Texture texture;
+  texture.image = 0;
+  const SceneTextures textures({texture}, {quadrants()}, {material});
+  EXPECT_EQ(textures.chain(0, ColorSpace::Srgb)->levels[0].decoded.size(), 16u);
+}
+
+// alphaAllOne holds exactly when every texel's alpha is 255, and then every lookup's alpha is
+// exactly 1, whatever the weights.
+TEST(BuildMipChain, AlphaAllOneWhenEveryAlphaIs255) {
+  const TextureImage opaque = makeImage(16, 8, [](int x, int y) { return glm::u8vec4(x * 16, y * 30, 7, 255); });
+  TextureImage nearly = opaque;
+  nearly.rgba[4 * 37 + 3] = 254;
+  EXPECT_FALSE(buildMipChain(nearly, ColorSpace::Srgb).alphaAllOne);
+  const MipChain chain = buildMipChain(opaque, ColorSpace::Srgb);
+  ASSERT_TRUE(chain.alphaAllOne);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> uv(-2.0f, 3.0f), lod(-1.0f, 6.0f);
+  for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::MirroredRepeat})
+    for (int i = 0; i < 2000; ++i)
+      ASSERT_EQ(sampleMipChain(chain, samplerWith(wrap, TextureFilter::Linear), glm::vec2(uv(random), uv(random)),
+                               lod(random)).a,
+                1.0f);
+}
+
+// sampleSlots reads each slot's trySample value, bit for bit, whether its lookup shares the plan
+// of an earlier one (same size, sampler, uv set and transform) or not (another size, sampler, uv
+// set or transform), and reports a slot without a chain as not found.
+TEST(SceneTextures, SampleSlotsReadsWhatTrySampleReads) {
+  Material material;
+  std::vector<Texture> textures(5);
+  for (int t = 0; t < 5; ++t) textures[t].image = t;
+  textures[3].sampler.wrapS = TextureWrap::MirroredRepeat;
+  // Images 0, 1 and 3 are 32 x 32, image 2 is 16 x 16, image 4 is 32 x 32.
+  const std::vector<TextureImage> images = {noiseImage(32, 32, 1), noiseImage(32, 32, 2), noiseImage(16, 16, 3),
+                                            noiseImage(32, 32, 4), noiseImage(32, 32, 5)};
+  material.baseColorTexture.texture = 0;
+  material.metallicRoughnessTexture.texture = 1;  // shares 0's plan
+  material.normalTexture.texture = 2;             // another size
+  material.occlusionTexture.texture = 3;          // another sampler
+  material.emissiveTexture.texture = 4;
+  material.emissiveTexture.transform.scale = glm::vec2(2.0f, 3.0f);  // another transform
+  const SceneTextures scene(textures, images, {material});
+  TextureRef onSet1 = material.metallicRoughnessTexture;
+  onSet1.texCoord = 1;
+  TextureRef missing = material.baseColorTexture;
+  missing.texture = 9;
+  const TextureRef* refs[] = {&material.baseColorTexture, &material.metallicRoughnessTexture, &material.normalTexture,
+                              &material.occlusionTexture, &material.emissiveTexture,         &onSet1,
+                              &missing,                   &material.baseColorTexture};  // the last shares the first's plan
+  const ColorSpace spaces[] = {ColorSpace::Srgb, ColorSpace::Linear, ColorSpace::Linear, ColorSpace::Linear,
+                               ColorSpace::Srgb, ColorSpace::Linear, ColorSpace::Srgb,   ColorSpace::Srgb};
+  const unsigned masks[] = {SceneTextures::kRgba, SceneTextures::kGreenBlue, SceneTextures::kRgb, SceneTextures::kRed,
+                            SceneTextures::kRgb,  SceneTextures::kRgba,      SceneTextures::kRgba, SceneTextures::kAlpha};
+  constexpr int n = 8;
+  std::mt19937 random(9);
+  std::uniform_real_distribution<float> uv(-2.0f, 3.0f), footprint(0.0f, 0.3f);
+  for (int i = 0; i < 300; ++i) {
+    const glm::vec2 texcoords[2] = {{uv(random), uv(random)}, {uv(random), uv(random)}};
+    const float footprints[2] = {i % 7 == 0 ? 0.0f : footprint(random), footprint(random)};
+    SceneTextures::SlotLookup lookups[n];
+    for (int l = 0; l < n; ++l) {
+      lookups[l].ref = refs[l];
+      lookups[l].colorSpace = spaces[l];
+      lookups[l].channels = masks[l];
+    }
+    scene.sampleSlots(lookups, n, texcoords, footprints);
+    for (int l = 0; l < n; ++l) {
+      const int set = refs[l]->texCoord;
+      glm::vec4 expected(1.0f);
+      const bool found = scene.trySample(*refs[l], spaces[l], texcoords[set],
+                                         SceneTextures::log2Footprint(footprints[set]), expected, masks[l]);
+      ASSERT_EQ(lookups[l].found, found) << "lookup " << l;
+      for (int c = 0; c < 4; ++c) ASSERT_EQ(lookups[l].value[c], expected[c]) << "lookup " << l << " channel " << c;
+    }
+    EXPECT_FALSE(lookups[6].found);
+  }
 }
 
 }  // namespace

@@ -106,6 +106,27 @@ TEST(AlphaFilter, ClosestHitGoesOnBehindAMaskedTexel) {
   EXPECT_EQ(stopped.geomId, 0u);
 }
 
+// A base colour texture whose alpha is 255 everywhere (an RGB image) filters to exactly 1, so the
+// factor alone decides, with no test: BLEND alpha 1 is there for every ray; one texel of alpha
+// 254 brings the test back.
+TEST(AlphaFilter, AnOpaqueTextureLeavesTheFactorToDecide) {
+  for (int lowered : {0, 1}) {
+    FilteredScene s;
+    Material blend;
+    blend.alphaMode = AlphaMode::Blend;
+    blend.doubleSided = true;
+    s.scene.materials = {blend};
+    s.scene.materials[0].baseColorTexture = test::addTexture(s.scene, test::generatedImage(8, 8, [&](int x, int y) {
+      return glm::u8vec4(30 * x, 30 * y, 90, x == 3 && y == 5 && lowered ? 254 : 255);
+    }));
+    s.scene.meshes = {test::texturedQuad(0.0f, 1.0f, 0.0f, 0)};
+    s.build();
+    EXPECT_EQ(s.filter->needs(0), lowered ? unsigned(AlphaFilter::kAlphaTest) : 0u);
+    for (float x : {0.1f, 0.45f, 0.8f})
+      EXPECT_TRUE(s.rays.occluded({x, 0.3f, 1.0f}, {0.0f, 0.0f, -1.0f}, 0.0f, kInfinity));
+  }
+}
+
 // BLEND alpha 0.5: about half of many random rays are blocked; each ray decides the same way
 // in intersect and occluded, and again when traced again.
 TEST(AlphaFilter, BlendCoverageBlocksAboutAlphaAndIsDeterministic) {
