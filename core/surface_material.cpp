@@ -116,4 +116,14 @@ glm::vec3 perturbNormal(const glm::vec3& n, const glm::vec4& tangent, const glm:
   return world / length;
 }
 
+glm::vec3 shadingNormalFacingViewer(const glm::vec3& n, const glm::vec3& wo, const glm::vec3& geometric) {
+  const float cosine = glm::dot(n, wo);
+  if (cosine >= kMinShadingCosine) return n;
+  // n = cosine wo + p, p perpendicular to wo: keep p's direction, set the cosine to the least.
+  const glm::vec3 p = n - cosine * wo;
+  const float length = glm::length(p);
+  if (!(length > 0.0f)) return geometric;
+  return p * (std::sqrt(1.0f - kMinShadingCosine * kMinShadingCosine) / length) + kMinShadingCosine * wo;
+}
+
 }  // namespace iblkit

@@ -45,6 +45,22 @@ float surfaceAlpha(const Material& material, const SceneTextures& textures, cons
 // BLEND when `u` (uniform in [0, 1), the caller's random number) < alpha.
 bool surfacePresent(const Material& material, float alpha, float u);
 
+// The least cosine between the shading normal and the direction to the viewer
+// (shadingNormalFacingViewer); shared with the shaders (shared_constants.glsl).
+inline constexpr float kMinShadingCosine = 0.01f;
+
+// The shading normal on the viewer's side, the rule of every program (docs/material-model.md
+// "Shading normal"): `n` (unit: interpolated or normal-mapped, already on the viewer's side of the
+// geometric normal) where n . wo >= kMinShadingCosine, `wo` the unit direction to the viewer;
+// otherwise n turned towards wo in the plane of the two until n . wo = kMinShadingCosine, the
+// nearest normal that faces the viewer that much. The BRDF reflects nothing towards a viewer below
+// the shading normal, so such a normal would turn a visible surface black (silhouettes of coarse
+// meshes, normal maps seen at grazing angles). Turning it is continuous in n, so a pixel's samples
+// average the same normal field in the raster and the tracer; the geometric normal, the old
+// fallback, jumped there by the whole perturbation. `geometric` (unit, facing wo) only where n is
+// -wo, where the plane is undefined.
+glm::vec3 shadingNormalFacingViewer(const glm::vec3& n, const glm::vec3& wo, const glm::vec3& geometric);
+
 // The normal-texture perturbation: texel rgb in [0, 1] -> tangent-space (2 rgb - 1) with x and y
 // times `scale`, to world space by (t, w cross(n, t), n), normalised. Returns n for a zero tangent.
 glm::vec3 perturbNormal(const glm::vec3& n, const glm::vec4& tangent, const glm::vec3& texel, float scale);

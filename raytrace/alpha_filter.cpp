@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "core/surface_material.h"
 #include "raytrace/ray_scene.h"
@@ -29,6 +30,38 @@ float textureFootprint(float width, float uvPerWorldArea, float cosine) {
 float textureFootprintFromLength(float width, float uvPerWorldLength, float cosine) {
   const float c = std::max(std::abs(cosine), 1.0f / kMaxTextureAnisotropy);
   return width * uvPerWorldLength / c;
+}
+
+UvGradient uvGradient(const Mesh& mesh, std::size_t triangle, int set) {
+  const std::vector<glm::vec2>& uvs = set == 0 ? mesh.texcoords : mesh.texcoords1;
+  if (uvs.size() != mesh.positions.size()) return {};
+  const std::uint32_t* corner = &mesh.indices[3 * triangle];
+  const glm::vec3 p0 = mesh.positions[corner[0]];
+  const glm::vec3 e1 = mesh.positions[corner[1]] - p0, e2 = mesh.positions[corner[2]] - p0;
+  const glm::vec2 a = uvs[corner[1]] - uvs[corner[0]], b = uvs[corner[2]] - uvs[corner[0]];
+  // dP = beta1 e1 + beta2 e2 in the plane; the normal equations of the Gram matrix give
+  // beta1 = w1 . dP and beta2 = w2 . dP, and uv changes by beta1 a + beta2 b.
+  const float g11 = glm::dot(e1, e1), g12 = glm::dot(e1, e2), g22 = glm::dot(e2, e2);
+  const float det = g11 * g22 - g12 * g12;
+  if (!(det > 0.0f)) return {};
+  const glm::vec3 w1 = (g22 * e1 - g12 * e2) / det, w2 = (g11 * e2 - g12 * e1) / det;
+  const UvGradient gradient{w1 * a.x + w2 * b.x, w1 * a.y + w2 * b.y};
+  const float check = glm::dot(gradient.du, gradient.du) + glm::dot(gradient.dv, gradient.dv);
+  return std::isfinite(check) ? gradient : UvGradient{};
+}
+
+float textureFootprintFromDifferentials(const PixelDifferentials& pixel, const glm::vec3& direction, float t,
+                                        const glm::vec3& geometricNormal, const UvGradient& gradient) {
+  const float scale = t * glm::dot(direction, pixel.forward);
+  const float dn = glm::dot(direction, geometricNormal);
+  const auto uvStep = [&](const glm::vec3& dd) {
+    const glm::vec3 dp = scale * (dd - (glm::dot(dd, geometricNormal) / dn) * direction);
+    return glm::length(glm::vec2(glm::dot(gradient.du, dp), glm::dot(gradient.dv, dp)));
+  };
+  const float footprint = std::max(uvStep(pixel.dx), uvStep(pixel.dy));
+  if (std::isfinite(footprint)) return footprint;
+  return gradient.du == glm::vec3(0.0f) && gradient.dv == glm::vec3(0.0f) ? 0.0f
+                                                                          : std::numeric_limits<float>::max();
 }
 
 float uvPerWorldArea(const Mesh& mesh, std::size_t triangle, int set) {
@@ -99,7 +132,12 @@ bool AlphaFilter::accept(unsigned geometry, unsigned primitive, glm::vec2 baryce
       inputs.texcoords[ref.texCoord == 1 ? 1 : 0] = interpolateAtHit(uvs, corner, barycentrics);
     }
     const float width = query.cone.widthAt(t * glm::length(direction));
-    if (width > 0.0f) {
+    if (query.cone.pixel.present()) {
+      const float length = glm::length(direction);
+      const int set = ref.texCoord == 1 ? 1 : 0;
+      inputs.footprintUv[set] = textureFootprintFromDifferentials(query.cone.pixel, direction / length, t * length,
+                                                                  geometricNormal, uvGradient(mesh, primitive, set));
+    } else if (width > 0.0f) {
       const float cosine = glm::dot(glm::normalize(direction), glm::normalize(geometricNormal));
       const int set = ref.texCoord == 1 ? 1 : 0;
       inputs.footprintUv[set] = textureFootprint(width, uvPerWorldArea(mesh, primitive, set), cosine);

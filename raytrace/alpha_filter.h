@@ -35,9 +35,21 @@ enum class RayKind : std::uint8_t {
 // A ray's footprint as a cone (Akenine-Möller et al. 2019, "Texture Level of Detail Strategies
 // for Real-Time Ray Tracing", Ray Tracing Gems ch. 20): its width at distance t along the unit
 // direction is width + spread * t. Zero: the sharpest texture level.
+// A camera ray also carries its differentials (Igehy 1999, "Tracing Ray Differentials",
+// SIGGRAPH): how the pinhole camera's unnormalised direction d = forward + x right + y up
+// (core/camera.h, PrimaryRays) changes per footprint step along the image's x and y, from which
+// the first hit's footprint is the raster's own (textureFootprintFromDifferentials). A bounce drops
+// them (the integrator), and the cone alone follows the rest of the path.
+struct PixelDifferentials {
+  glm::vec3 forward{0.0f};  // the camera's unit view direction (d . forward = 1); zero: none
+  glm::vec3 dx{0.0f}, dy{0.0f};
+  bool present() const { return forward != glm::vec3(0.0f); }
+};
+
 struct RayCone {
   float width = 0.0f;
   float spread = 0.0f;  // radians (small-angle: the width grows by spread per unit distance)
+  PixelDifferentials pixel;
   float widthAt(float t) const { return width + spread * t; }
 };
 
@@ -63,6 +75,27 @@ float textureFootprint(float width, float uvPerWorldArea, float cosine);
 // per triangle (RenderScene) skips the sqrt and the triangle's corners per hit. Same arithmetic,
 // so the same value as textureFootprint(width, uvPerWorldLength^2 as computed, cosine).
 float textureFootprintFromLength(float width, float uvPerWorldLength, float cosine);
+
+// The world-space gradients of texCoord set `set` over triangle `triangle` of `mesh`: along a step
+// dP in the triangle's plane, u changes by du . dP and v by dv . dP. Zero when the mesh has no such
+// set or the triangle no area.
+struct UvGradient {
+  glm::vec3 du{0.0f}, dv{0.0f};
+};
+UvGradient uvGradient(const Mesh& mesh, std::size_t triangle, int set);
+
+// The uv footprint of a camera ray with differentials `pixel` (present()) that hits a triangle at
+// distance `t` along its unit `direction`, `geometricNormal` the triangle's normal (any length,
+// either side), `gradient` its uvGradient: max(|duv/dx|, |duv/dy|), the change of the uv per
+// footprint step along the image's axes. That is the level of detail OpenGL's isotropic filtering
+// takes (OpenGL 4.5 section 8.14.1, eq. 8.7, rho = max of the two derivatives' lengths in texels:
+// the same for a square texture; for a w x h one, textureLod's sqrt(w h) stands in for the axes'
+// sizes). The hit point moves by dP = t (D . forward) (d' - (d' . n) / (D . n) D) (Igehy 1999,
+// section 3.1.2, for the unit direction D = d / |d|, |d| = 1 / (D . forward)), and uv by the
+// gradient along dP. 0 for a zero gradient; the largest float when the ray grazes the triangle's
+// plane (the coarsest level).
+float textureFootprintFromDifferentials(const PixelDifferentials& pixel, const glm::vec3& direction, float t,
+                                        const glm::vec3& geometricNormal, const UvGradient& gradient);
 
 // The ratio uv area / world area of triangle `triangle` of `mesh` in texCoord set `set` (0 when
 // the mesh has no such set or the triangle no area), for textureFootprint.

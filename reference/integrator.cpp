@@ -152,6 +152,7 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, Cam
     result.radiance += throughput * point.emissive;
     // The path's next rays (shadow and bounce) start their cone at its width here.
     cone.width = cone.widthAt(hit.t);
+    cone.pixel = {};  // the camera's differentials end at the first hit
     if (depth == maxDepth) return;
 
     // Every vertex draws the same numbers in the same order, used or not, so the dimensions of

@@ -54,6 +54,7 @@ RenderScene::RenderScene(Scene scene, unsigned textureSlots) : scene_(std::move(
     textured_.push_back(shadesWithTextures(material, slots_));
   }
   uvPerWorldLength_.resize(scene_.meshes.size());
+  uvGradients_.resize(scene_.meshes.size());
   for (unsigned i = 0; i < scene_.meshes.size(); ++i) {
     const Mesh& mesh = scene_.meshes[i];
     if (mesh.triangleCount() == 0 || !textured_[static_cast<std::size_t>(mesh.material)]) continue;
@@ -61,6 +62,12 @@ RenderScene::RenderScene(Scene scene, unsigned textureSlots) : scene_(std::move(
     lengths.resize(mesh.triangleCount());
     for (std::size_t t = 0; t < lengths.size(); ++t)
       lengths[t] = glm::vec2(std::sqrt(uvPerWorldArea(mesh, t, 0)), std::sqrt(uvPerWorldArea(mesh, t, 1)));
+    for (int set = 0; set < 2; ++set) {
+      if ((set == 0 ? mesh.texcoords : mesh.texcoords1).size() != mesh.positions.size()) continue;
+      std::vector<UvGradient>& gradients = uvGradients_[i][set];
+      gradients.resize(mesh.triangleCount());
+      for (std::size_t t = 0; t < gradients.size(); ++t) gradients[t] = uvGradient(mesh, t, set);
+    }
   }
 }
 
@@ -108,7 +115,13 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
       }
     }
     const float width = cone.widthAt(hit.t);
-    if (width > 0.0f) {
+    if (cone.pixel.present()) {
+      const auto& gradients = uvGradients_[meshOfGeometry_[hit.geomId]];
+      for (int set = 0; set < 2; ++set)
+        if (!gradients[set].empty())
+          inputs.footprintUv[set] = textureFootprintFromDifferentials(cone.pixel, -wo, hit.t, hit.geometricNormal,
+                                                                      gradients[set][hit.primId]);
+    } else if (width > 0.0f) {
       const float cosine = glm::dot(wo, point.geometricNormal);
       const glm::vec2 lengths = uvPerWorldLength_[meshOfGeometry_[hit.geomId]][hit.primId];
       for (int set = 0; set < 2; ++set)
@@ -120,7 +133,7 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
     point.lobes = brdfLobes(surface.material);
     shading = surface.normal;
   }
-  point.shadingNormal = glm::dot(shading, wo) > 0.0f ? shading : point.geometricNormal;
+  point.shadingNormal = shadingNormalFacingViewer(shading, wo, point.geometricNormal);
   return point;
 }
 

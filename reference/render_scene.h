@@ -6,6 +6,7 @@
 // normal, the BRDF lobes. The alpha and doubleSided rules are the RayScene's AlphaFilter
 // (raytrace/alpha_filter.h), attached here; docs/reference-tracer.md "Textures and alpha".
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "core/material.h"
 #include "core/scene.h"
 #include "core/texture_sampling.h"
+#include "raytrace/alpha_filter.h"
 #include "raytrace/ray_scene.h"
 
 namespace iblkit {
@@ -23,9 +25,10 @@ struct SurfacePoint {
   // Unit normal of the triangle's plane, flipped towards the side the ray came from (wo).
   glm::vec3 geometricNormal{0.0f};
   // Unit interpolated vertex normal, flipped to the same side as geometricNormal. Where it still
-  // faces away from wo (silhouettes of coarse meshes, where interpolated and flat normals differ
-  // most) it is replaced by geometricNormal, so the BRDF (which reflects nothing when wo is below
-  // the shading normal) never turns a visible surface black.
+  // faces away from wo or nearly (silhouettes of coarse meshes, where interpolated and flat normals
+  // differ most) it is turned towards wo until it faces it by kMinShadingCosine
+  // (shadingNormalFacingViewer, core/surface_material.h), so the BRDF (which reflects nothing when
+  // wo is below the shading normal) never turns a visible surface black.
   // With a normal texture it is the perturbed normal (evaluateSurfaceMaterial about the
   // interpolated normal and tangent turned to wo's side), under the same rule. The glTF occlusion
   // texture is not applied: the tracer traces the visibility it approximates.
@@ -55,9 +58,9 @@ class RenderScene {
   unsigned textureSlots() const { return slots_; }
 
   // The shading data at `hit` (a hit of rays()) seen from direction `wo` (unit, pointing away from
-  // the surface, i.e. minus the ray direction). `cone` is the ray's footprint (its width at
-  // hit.t sets the texture level, textureFootprint in alpha_filter.h); the default reads the
-  // finest level.
+  // the surface, i.e. minus the ray direction). `cone` is the ray's footprint: a camera ray's
+  // differentials set the texture level (textureFootprintFromDifferentials in alpha_filter.h),
+  // else its width at hit.t (textureFootprint); the default reads the finest level.
   SurfacePoint surfacePoint(const Hit& hit, const glm::vec3& wo, const RayCone& cone = {}) const;
 
  private:
@@ -70,6 +73,9 @@ class RenderScene {
   // sqrt(uvPerWorldArea) of uv sets 0 and 1, the ray-cone footprint's per-triangle part
   // (textureFootprintFromLength), computed once rather than from the corners at every hit.
   std::vector<std::vector<glm::vec2>> uvPerWorldLength_;
+  // Per mesh and uv set (empty for the same meshes, and for a set the mesh lacks), uvGradient of
+  // each triangle, for camera rays' footprints (textureFootprintFromDifferentials).
+  std::vector<std::array<std::vector<UvGradient>, 2>> uvGradients_;
   std::shared_ptr<const SceneTextures> textures_;
   unsigned slots_ = kAllTextureSlots;
 };

@@ -76,7 +76,12 @@ RenderResult resolve(const std::vector<PixelSums>& sums, const RenderSettings& s
 }  // namespace
 
 RayCone cameraRayCone(const Camera& camera, int height, float footprint) {
-  return RayCone{0.0f, footprint * 2.0f * std::tan(0.5f * camera.yfovRadians) / float(std::max(height, 1))};
+  const float step = footprint * 2.0f * std::tan(0.5f * camera.yfovRadians) / float(std::max(height, 1));
+  // PrimaryRays' basis: d = forward + ndcX aspect tan right + ndcY tan up, so one pixel along x or y
+  // changes d by 2 tan / height along right or -up (square pixels).
+  const glm::vec3 right = glm::normalize(glm::cross(camera.forward, camera.up));
+  const glm::vec3 up = glm::cross(right, camera.forward);
+  return RayCone{0.0f, step, PixelDifferentials{camera.forward, step * right, -step * up}};
 }
 
 RenderResult render(const Integrator& integrator, const Camera& camera, const RenderSettings& settings,

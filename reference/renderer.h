@@ -25,7 +25,9 @@ inline constexpr int kMaxRenderThreads = 1024;
 inline constexpr float kDefaultTextureFootprint = 0.5f;
 
 // The camera ray cone of a width x height image through `camera`: width 0 at the eye, spread
-// `footprint` pixels' angular size (Akenine-Möller et al. 2019, eq. 30, small-angle form).
+// `footprint` pixels' angular size (Akenine-Möller et al. 2019, eq. 30, small-angle form), and the
+// differentials of PrimaryRays' direction per `footprint` pixels along x and y, which set the first
+// hit's texture footprint (textureFootprintFromDifferentials; the spread sets the rest of the path's).
 RayCone cameraRayCone(const Camera& camera, int height, float footprint);
 
 struct RenderSettings {
@@ -37,11 +39,11 @@ struct RenderSettings {
   std::uint32_t seed = 0;
   int threads = 0;                                // 0: all hardware threads, at most kMaxRenderThreads
   PixelFilterKind filter = PixelFilterKind::Box;  // pixel_filter.h
-  // The camera ray cone's spread as a fraction of the pixel's angular size at the image centre
-  // (2 tan(fov / 2) / height): the texture footprint (docs/reference-tracer.md "Texture
-  // filtering"). The default, half a pixel, is the report's engine frame: 2 x 2 supersampled, so
-  // its derivatives, and so its texture levels, are those of half an output pixel. 0 reads the
-  // finest level everywhere.
+  // The texture footprint in pixels: the step of the camera rays' differentials and the camera
+  // ray cone's spread as a fraction of the pixel's angular size at the image centre
+  // (2 tan(fov / 2) / height) (docs/reference-tracer.md "Texture filtering"). The default, half a
+  // pixel, is the report's engine frame: 2 x 2 supersampled, so its derivatives, and so its texture
+  // levels, are those of half an output pixel. 0 reads the finest level everywhere.
   float textureFootprint = kDefaultTextureFootprint;
 };
 

@@ -86,6 +86,17 @@ vec3 perturbNormal(vec3 n, vec4 tangent, vec3 texel, float scale) {
   return length2 > 0.0 ? perturbed * inversesqrt(length2) : n;
 }
 
+// shadingNormalFacingViewer of surface_material.cpp: n where n . wo >= kMinShadingCosine, else n
+// turned towards wo in their plane until n . wo = kMinShadingCosine; `geometric` for n = -wo.
+vec3 shadingNormalFacingViewer(vec3 n, vec3 wo, vec3 geometric) {
+  float cosine = dot(n, wo);
+  if (cosine >= kMinShadingCosine) return n;
+  vec3 p = n - cosine * wo;
+  float length2 = dot(p, p);
+  if (!(length2 > 0.0)) return geometric;
+  return p * (sqrt(1.0 - kMinShadingCosine * kMinShadingCosine) * inversesqrt(length2)) + kMinShadingCosine * wo;
+}
+
 #if TEXTURED != 0
 vec2 slotUv(SurfaceInputs inputs, int slot) {
   return textureTransformApply(slotTransform[slot], inputs.texcoords[slotTexCoord[slot] == 1 ? 1 : 0]);

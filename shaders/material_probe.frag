@@ -5,7 +5,8 @@
 // uniforms and textures are the renderer's (material.glsl). `quantity` selects the output:
 // 0 (baseColor, alpha), 1 (metallic, roughness, occlusion), 2 emissive, 3 normal,
 // 4 (slot 0's and slot 3's transformed uv: textureTransformApply), 5 the base colour texture's
-// texel x of level 0 as the texture unit decodes it (texelFetch).
+// texel x of level 0 as the texture unit decodes it (texelFetch), 6 shadingNormalFacingViewer with
+// n the normal, wo the tangent's xyz and the geometric normal the uvs' xyz.
 
 #define TEXTURED 31  // every slot (kAllTextureSlots)
 #include "shared_constants.glsl"
@@ -36,5 +37,6 @@ void main() {
   else if (quantity == 2) fragColor = vec4(m.emissive, 0.0);
   else if (quantity == 3) fragColor = vec4(m.normal, 0.0);
   else if (quantity == 4) fragColor = vec4(slotUv(inputs, 0), slotUv(inputs, 3));
+  else if (quantity == 6) fragColor = vec4(shadingNormalFacingViewer(inputs.normal, inputs.tangent.xyz, uv.xyz), 0.0);
   else fragColor = texelFetch(baseColorTexture, ivec2(texel.x, 0), 0);
 }

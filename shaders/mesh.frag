@@ -68,12 +68,13 @@ layout(location = 0) out vec4 fragColor;
 // Irradiance along the unit direction n from the cube, bilinear between its texel centres.
 vec3 irradianceFromCube(vec3 n) { return textureLod(irradianceCube, rotateAboutY(n, specularRotation), 0.0).rgb; }
 
-// The shading normal on the viewer's side, as iblkit-trace chooses it (docs/reference-tracer.md):
-// `n` (the interpolated or normal-mapped normal) turned towards the viewer, or the geometric
-// normal where it still faces away (silhouettes of coarse meshes). `geometric` faces the viewer.
+// The shading normal on the viewer's side, as iblkit-trace chooses it (docs/material-model.md
+// "Shading normal"): `n` (the interpolated or normal-mapped normal) flipped to the viewer's side
+// of the geometric normal, then turned towards the viewer where it still faces away or nearly
+// (silhouettes of coarse meshes, normal maps at grazing angles). `geometric` faces the viewer.
 vec3 shadingNormal(vec3 n, vec3 geometric, vec3 v) {
   if (dot(n, geometric) < 0.0) n = -n;
-  return dot(n, v) > 0.0 ? n : geometric;
+  return shadingNormalFacingViewer(n, v, geometric);
 }
 
 vec3 fullMaterialModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 bent, vec3 irradiance) {

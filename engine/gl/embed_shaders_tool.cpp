@@ -3,9 +3,9 @@
 //
 // `#include "shared_constants.glsl"` is no file of shaders/: it is generated here from the C++
 // constants the shaders share with the engine (shading modes, frame layers, tone curves, vertex
-// attribute locations, texture units, texture slots, alpha modes, the relMSE epsilon), which this tool includes, so the GLSL
-// values are derived from the C++ ones and cannot disagree with them. A copy is written to
-// EXPANDED_DIR for reading.
+// attribute locations, texture units, texture slots, alpha modes, the least shading cosine, the
+// relMSE epsilon), which this tool includes, so the GLSL values are derived from the C++ ones and
+// cannot disagree with them. A copy is written to EXPANDED_DIR for reading.
 //
 //   iblkit_embed_shaders SHADER_DIR EXPANDED_DIR OUTPUT_CPP STAGE...
 //
@@ -25,6 +25,7 @@
 
 #include "core/material.h"
 #include "core/relative_squared_error.h"
+#include "core/surface_material.h"
 #include "core/texture.h"
 #include "core/tone_curve.h"
 #include "engine/gl/frame_layer.h"
@@ -132,6 +133,8 @@ std::string sharedConstants() {
                        {{"kAlphaModeOpaque", int(AlphaMode::Opaque)},
                         {"kAlphaModeMask", int(AlphaMode::Mask)},
                         {"kAlphaModeBlend", int(AlphaMode::Blend)}});
+  text += "// iblkit::kMinShadingCosine (core/surface_material.h)\nconst float kMinShadingCosine = " +
+          floatLiteral(kMinShadingCosine) + ";\n";
   text += "// iblkit::kRelMseEpsilon (core/relative_squared_error.h)\nconst float kRelMseEpsilon = " +
           floatLiteral(float(kRelMseEpsilon)) + ";\n";
   return text + "#endif\n";

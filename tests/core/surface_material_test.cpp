@@ -215,5 +215,31 @@ TEST(EvaluateSurfaceMaterial, NormalMapOfAHeightFieldGivesItsNormal) {
   EXPECT_GT(worstFlat, 8.0f);  // the map does tilt normals by much more than the tolerance
 }
 
+// A normal that faces the viewer by kMinShadingCosine or more is kept; one that faces it less or
+// away is turned towards it in their common plane to exactly that cosine, the nearest normal that
+// does; the rule is continuous across the threshold (no jump to the geometric normal).
+TEST(ShadingNormalFacingViewer, TurnsANormalJustEnoughToFaceTheViewer) {
+  const glm::vec3 wo(0.0f, 0.0f, 1.0f), geometric = glm::normalize(glm::vec3(0.0f, 0.1f, 1.0f));
+  const glm::vec3 facing = glm::normalize(glm::vec3(1.0f, 0.0f, 0.5f));
+  EXPECT_EQ(shadingNormalFacingViewer(facing, wo, geometric), facing);
+  for (float z : {0.005f, 0.0f, -0.3f, -0.99f}) {
+    const glm::vec3 n = glm::normalize(glm::vec3(0.6f, -0.8f, z));
+    const glm::vec3 turned = shadingNormalFacingViewer(n, wo, geometric);
+    EXPECT_NEAR(glm::length(turned), 1.0f, 1e-6f) << z;
+    EXPECT_NEAR(glm::dot(turned, wo), kMinShadingCosine, 1e-6f) << z;
+    EXPECT_NEAR(glm::dot(glm::cross(n, wo), turned), 0.0f, 1e-6f) << z << ": in the plane of n and wo";
+    EXPECT_NEAR(turned.x / turned.y, n.x / n.y, 1e-5f) << z << ": the same azimuth about wo";
+  }
+  // Continuous: just below and just above the threshold the results are within the normals' step.
+  const float c = kMinShadingCosine;
+  const glm::vec3 above(std::sqrt(1.0f - (c + 1e-4f) * (c + 1e-4f)), 0.0f, c + 1e-4f);
+  const glm::vec3 below(std::sqrt(1.0f - (c - 1e-4f) * (c - 1e-4f)), 0.0f, c - 1e-4f);
+  EXPECT_LT(glm::length(shadingNormalFacingViewer(above, wo, geometric) -
+                        shadingNormalFacingViewer(below, wo, geometric)),
+            2e-4f);
+  // Straight away from the viewer no plane is defined: the geometric normal.
+  EXPECT_EQ(shadingNormalFacingViewer(-wo, wo, geometric), geometric);
+}
+
 }  // namespace
 }  // namespace iblkit

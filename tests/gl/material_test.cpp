@@ -242,5 +242,41 @@ TEST(MaterialGlsl, TextureUnitDecodesSrgbAsTheCore) {
   std::cout << "sRGB decode: GPU against srgbToLinear, max |difference| " << maxError << '\n';
 }
 
+// shadingNormalFacingViewer in GLSL against the C++: random normals, half of them facing away from
+// a random viewer direction or nearly (the turned case), with a fixed geometric normal.
+TEST(MaterialGlsl, ShadingNormalFacingViewerMatchesTheCpp) {
+  test::glContext();
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  const auto randomUnit = [&] {
+    glm::vec3 v;
+    do v = glm::vec3(unit(rng), unit(rng), unit(rng));
+    while (glm::length(v) < 0.2f);
+    return glm::normalize(v);
+  };
+  ProbePoints points;
+  std::vector<glm::vec3> n(kProbes), wo(kProbes), geometric(kProbes);
+  int turned = 0;
+  for (int i = 0; i < kProbes; ++i) {
+    n[i] = randomUnit();
+    wo[i] = randomUnit();
+    geometric[i] = randomUnit();
+    if (glm::dot(geometric[i], wo[i]) < 0.0f) geometric[i] = -geometric[i];
+    if (i % 8 == 0) wo[i] = glm::normalize(wo[i] - glm::dot(wo[i], n[i]) * n[i]);  // n . wo = 0
+    if (glm::dot(n[i], wo[i]) < kMinShadingCosine) ++turned;
+    points.normals.at(i, 0) = glm::vec4(n[i], 0.0f);
+    points.tangents.at(i, 0) = glm::vec4(wo[i], 1.0f);
+    points.uvs.at(i, 0) = glm::vec4(geometric[i], 0.0f);
+  }
+  ASSERT_GT(turned, kProbes / 4);
+  Scene scene = materialScene(TextureSampler{});
+  const MaterialTextures textures(scene, 1.0f);
+  const std::vector<glm::vec4> gpu = probe(points, textures, scene.materials[0], kAllTextureSlots, 6);
+  for (int i = 0; i < kProbes; ++i)
+    EXPECT_LE(maxDifference(gpu[i], glm::vec4(shadingNormalFacingViewer(n[i], wo[i], geometric[i]), 0.0f)),
+              1e-5f)
+        << "point " << i;
+}
+
 }  // namespace
 }  // namespace iblkit

@@ -162,19 +162,6 @@ ImageScores score(const fs::path& reference, const fs::path& test, std::span<con
   return scoreImages(readExr(reference), readExr(test), mask, options);
 }
 
-// Pixels whose 3 x 3 neighbourhood has alpha 1 in the raster's frame (wholly on the object).
-std::vector<std::uint8_t> interiorMask(const Image& raster) {
-  std::vector<std::uint8_t> mask(raster.pixelCount(), 0);
-  for (int y = 1; y + 1 < raster.height(); ++y)
-    for (int x = 1; x + 1 < raster.width(); ++x) {
-      bool inside = true;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) inside = inside && raster.at(x + dx, y + dy).a > 0.999f;
-      mask[static_cast<std::size_t>(y) * raster.width() + x] = inside ? 1 : 0;
-    }
-  return mask;
-}
-
 class TextureAgreement : public ::testing::Test {
  protected:
   fs::path dir = test::scratchDir();
@@ -253,13 +240,20 @@ TEST_F(TextureAgreement, NormalMappedQuadUnderSunFlipAtMost002) {
   EXPECT_GT(raster.stats().maxLuminance, 5.0f * raster.stats().meanLuminance);
 }
 
-// 3. The normal layers on a normal-mapped sphere (generated tangents: the sphere has no TANGENT),
-// where both are wholly on the sphere: within 1 degree where the sphere faces the camera within 60
-// degrees. The tracer's layer is the first hit's perturbed normal averaged over its pixel samples,
-// the raster's the mean of its 16 samples. Towards the limb the normal map is minified ever more
-// anisotropically and the normal varies fastest across a pixel; there the layers part by up to
-// 2 degrees (about as much at --anisotropy 1, or with the tracer at --texture-footprint 0, so the
-// cause is not settled): the whole disk's maximum is printed, not bounded.
+// 3. The normal layers on a normal-mapped sphere (generated tangents: the sphere has no TANGENT)
+// at the report's settings for a textured scene (report_case.cpp: no --sample-shading, and
+// --anisotropy 1) on every pixel wholly on the sphere in both frames (the raster's alpha and the
+// tracer's --mask 1; an edge pixel's mean mixes in the ground's normal by its coverage, which the
+// two programs sample differently): within 1 degree, the limb included. The tracer's layer is the
+// first hit's shading normal averaged over its 64 samples, the raster's the mean of its 2 x 2
+// shaded points (one per supersampled pixel). Two rules make that hold at the limb
+// (docs/material-model.md "Normal layers at the limb"): the shading normal is turned towards the
+// viewer continuously (shadingNormalFacingViewer; falling back to the geometric normal jumped by
+// the whole perturbation, 5.8 degrees between 4 and 64 samples), and the tracer's first-hit
+// footprint is GL's isotropic one from ray differentials (a ray cone's isotropic width read a level
+// too coarse or fine where the sphere's uv is anisotropic: +0.5 degree of tilt at the limb). What
+// is left is the raster's 4-point quadrature of a normal that turns 9 degrees per pixel at the
+// limb: 0.89 degrees measured, 0.22 with 64 points on both sides and level 0 only.
 TEST_F(TextureAgreement, NormalMappedSphereNormalLayersWithinOneDegree) {
   GltfBuilder builder;
   addSphere(builder, 48, 96);
@@ -270,46 +264,67 @@ TEST_F(TextureAgreement, NormalMappedSphereNormalLayersWithinOneDegree) {
   const fs::path scene =
       writeScene(dir, dir / "sphere.glb", dir / "constant.exr", {0.0f, 0.8f, 3.0f}, {0, 0, 0}, 45.0f);
   constexpr int kSize = 128;
-  ASSERT_NO_FATAL_FAILURE(view(scene, dir / "raster.exr", "sh", kSize, kSize, "--normal " + q(dir / "raster_n.exr")));
-  ASSERT_NO_FATAL_FAILURE(trace(scene, dir / "reference.exr", kSize, kSize, 64,
-                                "--integrator direct --normal " + q(dir / "reference_n.exr")));
+  ASSERT_NO_FATAL_FAILURE(view(scene, dir / "raster.exr", "sh", kSize, kSize,
+                               "--normal " + q(dir / "raster_n.exr"),
+                               " --samples 4 --supersample 2 --anisotropy 1"));
+  ASSERT_NO_FATAL_FAILURE(
+      trace(scene, dir / "reference.exr", kSize, kSize, 64,
+            "--integrator direct --normal " + q(dir / "reference_n.exr") + " --mask " + q(dir / "mask.exr")));
   const Image raster = readExr(dir / "raster.exr");
+  const Image coverage = readExr(dir / "mask.exr");
   const Image rasterNormal = readExr(dir / "raster_n.exr", nullptr, 0, PixelRepair::Keep);
   const Image referenceNormal = readExr(dir / "reference_n.exr", nullptr, 0, PixelRepair::Keep);
-  const std::vector<std::uint8_t> mask = interiorMask(raster);
   const Camera camera = sceneCamera(loadScene(scene), 1.0f);
-  std::vector<float> facing, all;
+  // Bands of the angle between the sphere's normal and the direction to the camera.
+  constexpr float kBandEdges[] = {0.0f, 60.0f, 75.0f, 80.0f, 90.0f};
+  constexpr int kBands = 4;
+  std::vector<float> bands[kBands];
   float perturbation = 0.0f;  // how far the map tilts the layer from the sphere's own normal
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * kSize + x;
-      if (!mask[i]) continue;
+      if (!(raster.at(x, y).a == 1.0f && coverage.at(x, y).r == 1.0f)) continue;
       const glm::vec3 a = glm::vec3(rasterNormal.at(x, y)), b = glm::vec3(referenceNormal.at(x, y));
       ASSERT_GT(glm::length(a), 0.5f);
       ASSERT_GT(glm::length(b), 0.5f);
       const float angle =
           std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f)) * 180.0f / kPi;
-      all.push_back(angle);
-      // The unit sphere's own normal at the pixel centre's ray.
+      // The unit sphere's own normal at the pixel centre's ray (a covered pixel's centre may miss
+      // the sphere's exact silhouette by a hair: such a pixel counts in the outermost band).
       const Ray ray = camera.primaryRay({x + 0.5f, y + 0.5f}, kSize, kSize);
       const float bq = glm::dot(ray.origin, ray.direction);
       const float disc = bq * bq - (glm::dot(ray.origin, ray.origin) - 1.0f);
-      if (disc <= 0.0f) continue;
-      const glm::vec3 n = glm::normalize(ray.origin + (-bq - std::sqrt(disc)) * ray.direction);
-      perturbation = std::max(perturbation, std::acos(std::clamp(glm::dot(n, glm::normalize(b)), -1.0f, 1.0f)));
-      if (-glm::dot(n, ray.direction) >= 0.5f) facing.push_back(angle);
+      float facing = 90.0f;
+      if (disc > 0.0f) {
+        const glm::vec3 n = glm::normalize(ray.origin + (-bq - std::sqrt(disc)) * ray.direction);
+        facing = std::acos(std::clamp(-glm::dot(n, ray.direction), -1.0f, 1.0f)) * 180.0f / kPi;
+        perturbation =
+            std::max(perturbation, std::acos(std::clamp(glm::dot(n, glm::normalize(b)), -1.0f, 1.0f)));
+      }
+      int band = 0;
+      while (band + 1 < kBands && facing >= kBandEdges[band + 1]) ++band;
+      bands[band].push_back(angle);
     }
-  ASSERT_GT(facing.size(), 3000u);
-  std::sort(facing.begin(), facing.end());
-  std::sort(all.begin(), all.end());
-  double mean = 0.0;
-  for (float a : facing) mean += a;
-  mean /= static_cast<double>(facing.size());
-  std::printf("normal-mapped sphere normal layers, facing within 60 degrees: %zu pixels, mean %.3f, p99 %.3f, "
-              "max %.3f degrees; whole disk: %zu pixels, max %.3f; the map tilts normals by up to %.1f degrees\n",
-              facing.size(), mean, facing[facing.size() * 99 / 100], facing.back(), all.size(), all.back(),
+  float worst = 0.0f;
+  std::size_t pixels = 0;
+  std::printf("normal-mapped sphere normal layers (the map tilts normals by up to %.1f degrees):\n",
               perturbation * 180.0f / kPi);
-  EXPECT_LE(facing.back(), 1.0f);
+  for (int band = 0; band < kBands; ++band) {
+    std::vector<float>& angles = bands[band];
+    ASSERT_FALSE(angles.empty()) << "no pixel faces the camera at " << kBandEdges[band] << " degrees or more";
+    std::sort(angles.begin(), angles.end());
+    double mean = 0.0;
+    for (float a : angles) mean += a;
+    mean /= static_cast<double>(angles.size());
+    std::printf("  facing %2.0f to %2.0f degrees: %5zu pixels, mean %.3f, p99 %.3f, max %.3f degrees\n",
+                kBandEdges[band], kBandEdges[band + 1], angles.size(), mean, angles[angles.size() * 99 / 100],
+                angles.back());
+    worst = std::max(worst, angles.back());
+    pixels += angles.size();
+  }
+  // The whole disk is compared, its limb included: 128 px, the sphere about 100 px across.
+  EXPECT_GT(pixels, 7500u);
+  EXPECT_GT(bands[kBands - 1].size(), 50u);
+  EXPECT_LE(worst, 1.0f);
   // The map is really applied (a sphere without it would agree to 0.5 degrees too).
   EXPECT_GT(perturbation * 180.0f / kPi, 10.0f);
 }

@@ -187,7 +187,7 @@ TEST(AlphaFilter, TextureFootprintOfARayCone) {
   EXPECT_FLOAT_EQ(textureFootprint(0.1f, 0.25f, 1.0f), 0.05f);
   EXPECT_FLOAT_EQ(textureFootprint(0.1f, 0.25f, -0.5f), 0.1f);
   EXPECT_FLOAT_EQ(textureFootprint(0.1f, 0.25f, 0.001f), 0.05f * kMaxTextureAnisotropy);
-  EXPECT_FLOAT_EQ((RayCone{0.5f, 0.01f}.widthAt(10.0f)), 0.6f);
+  EXPECT_FLOAT_EQ((RayCone{0.5f, 0.01f, {}}.widthAt(10.0f)), 0.6f);
 }
 
 TEST(AlphaFilter, RefusesATableOfTheWrongSize) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/procedural_mesh.h"
+#include "core/surface_material.h"
 #include "reference/test_scenes.h"
 #include "support/error_capture.h"
 
@@ -54,7 +55,8 @@ TEST(RenderScene, NormalsFaceTheViewer) {
 }
 
 // Interpolated normals that face away from the viewer (a grazing view where the vertex normals
-// lean away, as at silhouettes of coarse meshes) fall back to the triangle's own normal.
+// lean away, as at silhouettes of coarse meshes) are turned towards it until they face it by
+// kMinShadingCosine (shadingNormalFacingViewer), in the plane of the normal and the viewer.
 TEST(RenderScene, ShadingNormalNeverFacesAwayFromTheViewer) {
   Scene scene;
   scene.materials = {test::lambert(1.0f)};
@@ -65,10 +67,13 @@ TEST(RenderScene, ShadingNormalNeverFacesAwayFromTheViewer) {
   scene.meshes = {triangle};
   const RenderScene leaning(std::move(scene));
   // wo = (-1, 0.1, 0) normalised: above the triangle (y > 0) but behind the leaning normal.
-  const SurfacePoint grazing =
-      shade(leaning, Ray{{-1.0f, 0.1f, 0.0f}, glm::normalize(glm::vec3(1.0f, -0.1f, 0.0f))});
+  const Ray ray{{-1.0f, 0.1f, 0.0f}, glm::normalize(glm::vec3(1.0f, -0.1f, 0.0f))};
+  const SurfacePoint grazing = shade(leaning, ray);
   EXPECT_EQ(grazing.geometricNormal, glm::vec3(0.0f, 1.0f, 0.0f));
-  EXPECT_EQ(grazing.shadingNormal, glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_NEAR(glm::dot(grazing.shadingNormal, -ray.direction), kMinShadingCosine, 1e-6f);
+  EXPECT_NEAR(glm::length(grazing.shadingNormal), 1.0f, 1e-6f);
+  EXPECT_NEAR(grazing.shadingNormal.z, 0.0f, 1e-6f) << "in the plane of the normal and the viewer";
+  EXPECT_GT(grazing.shadingNormal.y, 0.0f);
   // Seen from the other side the leaning normal faces the viewer and is kept.
   const SurfacePoint facing =
       shade(leaning, Ray{{1.0f, 0.1f, 0.0f}, glm::normalize(glm::vec3(-1.0f, -0.1f, 0.0f))});

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "raytrace/alpha_filter.h"
+#include "reference/renderer.h"
 #include "reference/test_scenes.h"
 #include "support/generated_textures.h"
 
@@ -178,8 +180,10 @@ TEST(TexturedMaterials, RayConeWidthSelectsTheMipLevel) {
   ASSERT_TRUE(hit.hit);
   EXPECT_NEAR(renderScene.surfacePoint(hit, -ray.direction).baseColor.g, 0.0f, 1e-6f);
   // uv per metre 1/2: a cone 8 m wide at the hit is 4 uv wide, lod log2(4 * 2) = 3 >= the 1 x 1 level.
-  EXPECT_NEAR(renderScene.surfacePoint(hit, -ray.direction, RayCone{8.0f, 0.0f}).baseColor.g, 0.5f, 0.01f);
-  EXPECT_NEAR(renderScene.surfacePoint(hit, -ray.direction, RayCone{0.0f, 8.0f / 3.0f}).baseColor.g, 0.5f, 0.01f);
+  EXPECT_NEAR(renderScene.surfacePoint(hit, -ray.direction, RayCone{8.0f, 0.0f, {}}).baseColor.g, 0.5f,
+              0.01f);
+  EXPECT_NEAR(renderScene.surfacePoint(hit, -ray.direction, RayCone{0.0f, 8.0f / 3.0f, {}}).baseColor.g, 0.5f,
+              0.01f);
 }
 
 // The camera cone: spread = footprint x the pixel's angle 2 tan(fov / 2) / height.
@@ -189,6 +193,64 @@ TEST(TexturedMaterials, CameraRayConeIsAFractionOfThePixel) {
   const RayCone cone = cameraRayCone(camera, 16, 0.5f);
   EXPECT_FLOAT_EQ(cone.width, 0.0f);
   EXPECT_NEAR(cone.spread, 0.5f * 2.0f / 3.0f / 16.0f, 1e-7f);
+}
+
+// The camera ray's differentials give the raster's footprint: the longer of the uv steps between
+// rays `footprint` pixels apart along x and along y (what GL's dFdx and dFdy of the uv measure, OpenGL
+// 4.5 eq. 8.7), here by finite differences of exact plane hits, on a triangle seen at 75 degrees
+// whose uv stretches u three times as much as v. The ray cone's isotropic footprint, sqrt of the uv
+// area ratio over the cosine, is not that (it is checked to differ by more than a fifth).
+TEST(TexturedMaterials, CameraDifferentialsGiveTheUvStepsBetweenNeighbouringRays) {
+  const Camera camera = Camera::lookAt(glm::vec3(0.3f, 1.2f, 3.0f), glm::vec3(0.0f),
+                                       glm::vec3(0.0f, 1.0f, 0.0f), glm::radians(40.0f), 0.1f, 100.0f);
+  constexpr int kWidth = 96, kHeight = 64;
+  const float footprint = 0.5f;
+  const RayCone cone = cameraRayCone(camera, kHeight, footprint);
+  ASSERT_TRUE(cone.pixel.present());
+  // A plane through the origin, its normal 75 degrees from the view direction.
+  const glm::vec3 normal = glm::normalize(glm::vec3(0.0f, 0.26f, 1.0f) - 0.9f * camera.forward);
+  const glm::vec3 e1 = glm::normalize(glm::cross(normal, glm::vec3(0.0f, 1.0f, 0.0f)));
+  const glm::vec3 e2 = glm::cross(normal, e1);
+  Mesh mesh;
+  mesh.positions = {-4.0f * e1 - 4.0f * e2, 4.0f * e1 - 4.0f * e2, 4.0f * e2};
+  const auto uvOf = [&](const glm::vec3& p) { return glm::vec2(3.0f * glm::dot(p, e1), glm::dot(p, e2)); };
+  for (const glm::vec3& p : mesh.positions) mesh.texcoords.push_back(uvOf(p));
+  mesh.indices = {0, 1, 2};
+  const PrimaryRays rays(camera, kWidth, kHeight);
+  const auto hitUv = [&](glm::vec2 raster, float* t = nullptr) {
+    const Ray ray = rays(raster);
+    const float distance = -glm::dot(ray.origin, normal) / glm::dot(ray.direction, normal);
+    if (t) *t = distance;
+    return uvOf(ray.origin + distance * ray.direction);
+  };
+  int checked = 0;
+  float coneRatio = 1.0f;
+  for (glm::vec2 raster : {glm::vec2(48.0f, 32.0f), glm::vec2(10.0f, 50.0f), glm::vec2(80.0f, 12.0f)}) {
+    float t = 0.0f;
+    const glm::vec2 uv = hitUv(raster, &t);
+    const float dx = glm::length(hitUv(raster + glm::vec2(footprint, 0.0f)) - uv);
+    const float dy = glm::length(hitUv(raster + glm::vec2(0.0f, footprint)) - uv);
+    const Ray ray = rays(raster);
+    const float differential =
+        textureFootprintFromDifferentials(cone.pixel, ray.direction, t, normal, uvGradient(mesh, 0, 0));
+    EXPECT_NEAR(differential, std::max(dx, dy), 0.01f * std::max(dx, dy)) << raster.x << ", " << raster.y;
+    const float coneFootprint =
+        textureFootprint(cone.widthAt(t), uvPerWorldArea(mesh, 0, 0), glm::dot(ray.direction, normal));
+    coneRatio = std::min(coneRatio, std::abs(coneFootprint / differential - 1.0f));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+  EXPECT_GT(coneRatio, 0.2f);
+  // No such uv set: 0 (the sharpest level), as for a cone.
+  EXPECT_EQ(textureFootprintFromDifferentials(cone.pixel, camera.forward, 3.0f, normal, uvGradient(mesh, 0, 1)),
+            0.0f);
+  // A ray in the plane: the coarsest level, not a NaN.
+  EXPECT_EQ(textureFootprintFromDifferentials(cone.pixel, e1, 3.0f, normal, uvGradient(mesh, 0, 0)),
+            std::numeric_limits<float>::max());
+  // The gradient itself: u = 3 e1 . p and v = e2 . p on this plane.
+  const UvGradient gradient = uvGradient(mesh, 0, 0);
+  EXPECT_LT(glm::length(gradient.du - 3.0f * e1), 1e-5f);
+  EXPECT_LT(glm::length(gradient.dv - e2), 1e-5f);
 }
 
 }  // namespace
