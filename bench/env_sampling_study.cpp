@@ -2,11 +2,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/usage_error.h"
+#include "reference/environment_point_lights.h"
 #include "reference/environment_sampler.h"
+#include "reference/median_cut_sampler.h"
 #include "reference/render_scene.h"
 #include "reference/renderer.h"
 #include "score/image_metrics.h"
@@ -72,6 +75,12 @@ std::size_t studyStrategyIndex(EnvSampling sampling) {
   fail("sampling_study", "strategy not in the study");
 }
 
+std::size_t studyStrategyIndex(const std::string& name) {
+  for (std::size_t s = 0; s < kStudyStrategyCount; ++s)
+    if (kStudyStrategies[s].name == name) return s;
+  fail("sampling_study", "no strategy '" + name + "' in the study");
+}
+
 void validateSamplingStudySettings(const SamplingStudySettings& settings) {
   requireInRange("--width", settings.width, 1, kMaxImageSide);
   requireInRange("--height", settings.height, 1, kMaxImageSide);
@@ -128,8 +137,16 @@ MapStudy studyEnvironmentMap(const SamplingStudySettings& settings, const Scene&
   renderSettings.threads = settings.threads;
   const std::vector<int> levels = studySppLevels(settings.maxSpp);
   for (const StudyStrategy& strategy : kStudyStrategies) {
+    // The median-cut regions of the strategies that use them.
+    std::optional<MedianCutSampler> medianCut;
+    std::optional<EnvironmentPointLights> pointLights;
+    if (strategy.sampling == EnvSampling::MedianCut)
+      medianCut.emplace(environment, medianCutLevelsOf(strategy.lights).value());
+    if (strategy.sampling == EnvSampling::Lights)
+      pointLights.emplace(environment, medianCutLevelsOf(strategy.lights).value());
     const Integrator integrator(renderScene, environment, sampler,
-                                integratorSettings(settings, strategy.sampling));
+                                integratorSettings(settings, strategy.sampling),
+                                {medianCut ? &*medianCut : nullptr, pointLights ? &*pointLights : nullptr});
     std::vector<double> scores;
     double seconds = 0.0, samples = 0.0;
     for (std::size_t level = 0; level < levels.size(); ++level) {

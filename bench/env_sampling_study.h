@@ -1,9 +1,9 @@
 #pragma once
-// The environment-sampling study of the reference path tracer (issue 3; docs/benchmarks.md,
+// The environment-sampling study of the reference path tracer (issues 3 and 15; docs/benchmarks.md,
 // "Sampling study"): a scene rendered under one environment map with each --env-sampling strategy
-// at equal sample counts 1, 2, 4, ..., maxSpp, every render scored by its relMSE
-// (score/image_metrics.h) against a high-spp MIS render of the same map with another seed. The
-// program bench/sampling_study.cpp runs it over several maps and writes the results
+// (and the point lights at several light counts) at equal sample counts 1, 2, 4, ..., maxSpp, every render
+// scored by its relMSE (score/image_metrics.h) against a high-spp MIS render of the same map with another
+// seed. The program bench/sampling_study.cpp runs it over several maps and writes the results
 // (sampling_study_report.h); tests/bench checks the claim it measures.
 //
 // The reference has noise of its own: the expected relMSE of a test render against it is the
@@ -26,18 +26,27 @@ namespace iblkit {
 
 // The strategies compared, in the order of every table, plot and MapStudy row.
 struct StudyStrategy {
-  const char* name;  // as --env-sampling spells it
+  const char* name;  // as --env-sampling spells it, with the light count for lights
   EnvSampling sampling;
+  int lights;          // median-cut regions (mediancut) or point lights (lights); 0 for the others
+  const char* colour;  // the plot's line colour
 };
-inline constexpr StudyStrategy kStudyStrategies[] = {{"uniform", EnvSampling::Uniform},
-                                                     {"cosine", EnvSampling::Cosine},
-                                                     {"brdf", EnvSampling::Brdf},
-                                                     {"env", EnvSampling::Env},
-                                                     {"mis", EnvSampling::Mis}};
+// The five unbiased strategies of issue 3, the median-cut sampler with 64 regions (unbiased too),
+// and the biased point-light approximation with 4 to 256 lights (issue 15: its aliasing against
+// the exact environment sampler). Colours: matplotlib's tab10, uniform in grey; the point lights
+// in purples, darker with more lights.
+inline constexpr StudyStrategy kStudyStrategies[] = {
+    {"uniform", EnvSampling::Uniform, 0, "#7f7f7f"},  {"cosine", EnvSampling::Cosine, 0, "#1f77b4"},
+    {"brdf", EnvSampling::Brdf, 0, "#2ca02c"},        {"env", EnvSampling::Env, 0, "#ff7f0e"},
+    {"mis", EnvSampling::Mis, 0, "#d62728"},          {"mediancut", EnvSampling::MedianCut, 64, "#8c564b"},
+    {"lights4", EnvSampling::Lights, 4, "#c994c7"},   {"lights16", EnvSampling::Lights, 16, "#9e9ac8"},
+    {"lights64", EnvSampling::Lights, 64, "#6a51a3"}, {"lights256", EnvSampling::Lights, 256, "#3f007d"}};
 inline constexpr std::size_t kStudyStrategyCount = std::size(kStudyStrategies);
 
-// The row of `sampling` in kStudyStrategies (and in MapStudy::relMse).
+// The row of the first strategy of `sampling` in kStudyStrategies (and in MapStudy::relMse).
 std::size_t studyStrategyIndex(EnvSampling sampling);
+// The row of the strategy named `name` ("lights16").
+std::size_t studyStrategyIndex(const std::string& name);
 
 struct SamplingStudySettings {
   int width = 160, height = 90;

@@ -17,23 +17,6 @@ std::string format(const char* pattern, double value) {
   return buffer;
 }
 
-// The plot's line colours (matplotlib's tab10, uniform in grey).
-const char* strategyColour(EnvSampling sampling) {
-  switch (sampling) {
-    case EnvSampling::Uniform:
-      return "#7f7f7f";
-    case EnvSampling::Cosine:
-      return "#1f77b4";
-    case EnvSampling::Brdf:
-      return "#2ca02c";
-    case EnvSampling::Env:
-      return "#ff7f0e";
-    case EnvSampling::Mis:
-      return "#d62728";
-  }
-  return "black";
-}
-
 // `text` with the characters that XML reserves escaped (map names and labels come from the command line).
 std::string xmlEscaped(const std::string& text) {
   std::string out;
@@ -90,6 +73,21 @@ std::string samplingStudyMarkdown(const SamplingStudySettings& settings, const s
     }
     md << (m ? "; " : "") << "**" << maps[m].name << "** " << formatStudyNumber(lo) << "x to "
        << formatStudyNumber(hi) << "x";
+  }
+  md << ".\n\n";
+  // The median-cut strategies against mis where the noise is lowest: the unbiased sampler stays
+  // near 1x, the point lights level off at their bias.
+  md << "Median cut and point lights, relMSE over mis's at " << levels.back() << " spp, per map: ";
+  const std::size_t mis = studyStrategyIndex(EnvSampling::Mis);
+  for (std::size_t m = 0; m < maps.size(); ++m) {
+    md << (m ? "; " : "") << "**" << maps[m].name << "**";
+    bool first = true;
+    for (std::size_t s = 0; s < kStudyStrategyCount; ++s) {
+      if (kStudyStrategies[s].lights == 0) continue;
+      md << (first ? " " : ", ") << kStudyStrategies[s].name << " "
+         << formatStudyNumber(maps[m].relMse[s].back() / maps[m].relMse[mis].back()) << "x";
+      first = false;
+    }
   }
   md << ".\n";
   for (const MapStudy& map : maps) {
@@ -162,8 +160,8 @@ std::string samplingStudySvg(const SamplingStudySettings& settings, const std::v
       svg << "<text transform=\"translate(14 " << kTop + plotHeight / 2
           << ") rotate(-90)\" text-anchor=\"middle\">relMSE</text>\n";
     for (std::size_t s = 0; s < kStudyStrategyCount; ++s) {
-      svg << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\""
-          << strategyColour(kStudyStrategies[s].sampling) << "\" points=\"";
+      svg << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << kStudyStrategies[s].colour
+          << "\" points=\"";
       for (std::size_t i = 0; i < levels.size(); ++i)
         if (map.relMse[s][i] > 0.0) svg << px(static_cast<int>(i)) << "," << py(map.relMse[s][i]) << " ";
       svg << "\"/>\n";
@@ -173,9 +171,8 @@ std::string samplingStudySvg(const SamplingStudySettings& settings, const std::v
   for (std::size_t s = 0; s < kStudyStrategyCount; ++s) {
     const double y = kTop + 10 + 18 * static_cast<double>(s);
     svg << "<line x1=\"" << legendX << "\" x2=\"" << legendX + 24 << "\" y1=\"" << y << "\" y2=\"" << y
-        << "\" stroke-width=\"2\" stroke=\"" << strategyColour(kStudyStrategies[s].sampling)
-        << "\"/><text x=\"" << legendX + 30 << "\" y=\"" << y + 4 << "\">" << kStudyStrategies[s].name
-        << "</text>\n";
+        << "\" stroke-width=\"2\" stroke=\"" << kStudyStrategies[s].colour << "\"/><text x=\"" << legendX + 30
+        << "\" y=\"" << y + 4 << "\">" << kStudyStrategies[s].name << "</text>\n";
   }
   svg << "</svg>\n";
   return svg.str();

@@ -14,7 +14,8 @@ namespace iblkit {
 std::string formatStudyNumber(double value);
 
 // The markdown of the study of `sceneName` (a file name, e.g. "bunny.json") with `settings`: a
-// sentence on the setup, the range of cosine / MIS ratios per map, then one table per map (a row
+// sentence on the setup, the range of cosine / MIS ratios per map, the median-cut strategies' relMSE
+// over MIS's at the highest spp per map, then one table per map (a row
 // per strategy, a column per spp level, us / sample, and the geometric mean of cosine / strategy).
 // Every MapStudy has a row for each strategy and a column for each level of studySppLevels(settings.maxSpp).
 std::string samplingStudyMarkdown(const SamplingStudySettings& settings, const std::string& sceneName,

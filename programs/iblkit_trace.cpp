@@ -17,8 +17,10 @@
 #include "core/scene.h"
 #include "core/scene_environment.h"
 #include "core/usage_error.h"
+#include "reference/environment_point_lights.h"
 #include "reference/environment_sampler.h"
 #include "reference/integrator.h"
+#include "reference/median_cut_sampler.h"
 #include "reference/render_scene.h"
 #include "reference/renderer.h"
 
@@ -32,6 +34,7 @@ struct Options {
   bool misCompensation = false;
   std::string integrator = "path", envSampling = "mis", filter = "box";
   int maxDepth = 16;
+  int environmentLights = 64;
   float aoDistance = std::numeric_limits<float>::infinity();
   int samplesPerPixel = 64;
   double timeSeconds = 0.0;
@@ -82,6 +85,14 @@ int run(const Options& options, const CLI::App& app) {
   IntegratorSettings integratorSettings;
   integratorSettings.kind = parseIntegratorKind(options.integrator);
   integratorSettings.envSampling = parseEnvSampling(options.envSampling);
+  const bool medianCut = integratorSettings.envSampling == EnvSampling::MedianCut ||
+                         integratorSettings.envSampling == EnvSampling::Lights;
+  if (app.count("--env-lights") && !medianCut)
+    failUsage("--env-lights", "needs --env-sampling mediancut or lights");
+  const std::optional<int> medianCutLevels = medianCutLevelsOf(options.environmentLights);
+  if (!medianCutLevels)
+    failUsage("--env-lights",
+              "must be a power of 2 in 1..4096, not " + std::to_string(options.environmentLights));
   integratorSettings.maxDepth = options.maxDepth;
   integratorSettings.aoDistance = options.aoDistance;
   const PixelFilterKind filter = parsePixelFilter(options.filter);
@@ -122,7 +133,16 @@ int run(const Options& options, const CLI::App& app) {
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
   const Camera camera = sceneCamera(scene, aspect);
   const RenderScene renderScene(std::move(scene), options.noTextures ? 0u : kAllTextureSlots);
-  const Integrator integrator(renderScene, environment, environmentSampler, integratorSettings);
+  // The median-cut regions, only for the strategies that use them.
+  std::optional<MedianCutSampler> medianCutSampler;
+  std::optional<EnvironmentPointLights> pointLights;
+  if (integratorSettings.envSampling == EnvSampling::MedianCut)
+    medianCutSampler.emplace(environment, *medianCutLevels, options.misCompensation);
+  if (integratorSettings.envSampling == EnvSampling::Lights)
+    pointLights.emplace(environment, *medianCutLevels);
+  const Integrator integrator(
+      renderScene, environment, environmentSampler, integratorSettings,
+      {medianCutSampler ? &*medianCutSampler : nullptr, pointLights ? &*pointLights : nullptr});
 
   const bool terminal = isatty(STDERR_FILENO) != 0;
   const RenderResult result =
@@ -163,7 +183,11 @@ int main(int argc, char** argv) {
   app.add_option("--variance", options.variance, "variance of each beauty pixel's mean, OpenEXR");
   app.add_option("--mask", options.mask, "coverage of non-ground objects, OpenEXR");
   app.add_option("--bent-normal", options.bentNormal, "ao only: mean unoccluded direction, OpenEXR");
-  app.add_flag("--mis-compensation", options.misCompensation, "MIS compensation in the environment sampler");
+  app.add_flag("--mis-compensation", options.misCompensation,
+               "MIS compensation in the environment sampler (env, mis, mediancut)");
+  app.add_option("--env-lights", options.environmentLights,
+                 "median-cut regions of --env-sampling mediancut and point lights of lights (a power of 2 "
+                 "in 1..4096, default 64)");
   app.add_option("--phong", options.phongExponent,
                  "every surface uses the modified Phong lobe of this exponent (sampling study)");
   app.add_option("--max-depth", options.maxDepth, "most scattering events of a path");

@@ -1,120 +1,29 @@
 #include "reference/environment_sampler.h"
 
 #include <algorithm>
-#include <cmath>
-#include <glm/gtc/constants.hpp>
-#include <numbers>
-
-#include "core/fast_atan2.h"
-#include "core/latlong.h"
 
 namespace iblkit {
 
-namespace {
-// cos(theta) at the top edge of each texel row of a map `height` texels high, and at the bottom of
-// the last: y = cos(pi * row / height), 1 at the north pole (+Y) to -1 at the south pole.
-std::vector<float> rowEdges(int height) {
-  std::vector<float> edges(static_cast<std::size_t>(height) + 1);
-  for (int y = 0; y <= height; ++y)
-    edges[static_cast<std::size_t>(y)] = static_cast<float>(std::cos(std::numbers::pi * y / height));
-  edges.front() = 1.0f;
-  edges.back() = -1.0f;
-  return edges;
-}
-// Floor of the compensated weights, relative to the mean (pbrt-v4).
-constexpr float kCompensationFloor = 1e-3f;
-// Maps whose weights vary by less than this fraction of their mean are not compensated (Mitsuba 3).
-constexpr float kNearConstant = 1e-2f;
-}  // namespace
-
-std::vector<float> EnvironmentSampler::texelWeights(const EnvironmentMap& map, const std::vector<float>& edges,
-                                                    bool misCompensation, bool* compensated) {
-  const int width = map.width(), height = map.height();
-  std::vector<float> luminance(static_cast<std::size_t>(width) * height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      luminance[static_cast<std::size_t>(y) * width + x] = map.texelLuminance(x, y);
-
-  // Each texel's weight is its luminance times its solid angle, which is proportional to its
-  // row's cos(theta) span (times height / 2, which keeps the weights near sin(theta) x luminance).
-  std::vector<float> weights(luminance.size());
-  for (int y = 0; y < height; ++y) {
-    const float rowSolidAngle =
-        (edges[static_cast<std::size_t>(y)] - edges[static_cast<std::size_t>(y) + 1]) * 0.5f * static_cast<float>(height);
-    for (int x = 0; x < width; ++x) {
-      float neighbourhoodMax = 0.0f;
-      for (int dy = -1; dy <= 1; ++dy) {
-        const int sy = std::clamp(y + dy, 0, height - 1);
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int sx = (x + dx + width) % width;
-          neighbourhoodMax = std::max(neighbourhoodMax, luminance[static_cast<std::size_t>(sy) * width + sx]);
-        }
-      }
-      weights[static_cast<std::size_t>(y) * width + x] = neighbourhoodMax * rowSolidAngle;
-    }
-  }
-
-  *compensated = false;
-  if (misCompensation) {
-    double sum = 0.0;
-    float lo = weights.front(), hi = weights.front();
-    for (const float w : weights) {
-      sum += w;
-      lo = std::min(lo, w);
-      hi = std::max(hi, w);
-    }
-    const float mean = static_cast<float>(sum / static_cast<double>(weights.size()));
-    if (mean > 0.0f && hi - lo > kNearConstant * mean) {
-      for (float& w : weights) w = std::max(w - mean, std::min(kCompensationFloor * mean, w));
-      *compensated = true;
-    }
-  }
-  return weights;
-}
-
 EnvironmentSampler::EnvironmentSampler(const EnvironmentMap& map, bool misCompensation)
-    : map_(map),
-      rowCosTheta_(rowEdges(map.height())),
-      distribution_(texelWeights(map, rowCosTheta_, misCompensation, &compensated_), map.width(), map.height()) {
+    : texels_(map),
+      distribution_(texels_.weights(misCompensation, &compensated_), map.width(), map.height()) {
   black_ = distribution_.integral() <= 0.0f;
-  const double height = map.height();
-  rowPdfScale_.resize(static_cast<std::size_t>(map.height()));
-  for (std::size_t y = 0; y < rowPdfScale_.size(); ++y) {
-    const double span = static_cast<double>(rowCosTheta_[y]) - static_cast<double>(rowCosTheta_[y + 1]);
-    rowPdfScale_[y] = static_cast<float>(1.0 / (2.0 * std::numbers::pi * height * span));
-  }
 }
 
 EnvironmentSampler::Sample EnvironmentSampler::sample(glm::vec2 u) const {
   const PiecewiseConstant2D::Sample s = distribution_.sample(u);
   // Uniform over the texel's solid angle: the fraction of the way down the row, linear in cos(theta).
-  const std::size_t row = static_cast<std::size_t>(s.offset.y);
-  const float along = std::clamp(s.p.y * static_cast<float>(distribution_.height()) - static_cast<float>(row), 0.0f, 1.0f);
-  const float cosTheta = std::clamp(glm::mix(rowCosTheta_[row], rowCosTheta_[row + 1], along), -1.0f, 1.0f);
-  const float sinTheta = std::sqrt(std::max(0.0f, (1.0f - cosTheta) * (1.0f + cosTheta)));
-  const float longitude = 2.0f * glm::pi<float>() * (0.5f - s.p.x);
-  const glm::vec3 mapDirection(sinTheta * std::sin(longitude), cosTheta, sinTheta * std::cos(longitude));
-  const glm::vec2 uv(s.p.x, fastAtan2(sinTheta, cosTheta) / glm::pi<float>());  // theta / pi
-  Sample out;
-  out.direction = map_.toWorldDirection(mapDirection);
-  // The bilinear lookup at the sampled (u, v) itself: map_.radiance(out.direction) would find the
-  // same point again through two arctangents.
-  out.radiance = map_.intensity() * sampleLatLongBilinear(map_.image(), uv);
-  out.pdf = solidAnglePdf(s.pdf, s.offset.y);
-  return out;
+  const float along = std::clamp(
+      s.p.y * static_cast<float>(distribution_.height()) - static_cast<float>(s.offset.y), 0.0f, 1.0f);
+  const EnvironmentTexels::Point point = texels_.pointInRow(s.p.x, s.offset.y, along);
+  return {point.direction, point.radiance, texels_.solidAnglePdf(s.pdf, s.offset.y)};
 }
 
 float EnvironmentSampler::pdf(const glm::vec3& worldDirection) const { return lookup(worldDirection).pdf; }
 
 EnvironmentSampler::Lookup EnvironmentSampler::lookup(const glm::vec3& worldDirection) const {
-  const glm::vec3 mapDirection = glm::normalize(map_.toMapDirection(worldDirection));
-  const glm::vec2 uv = latLongUv(mapDirection);
-  Lookup out;
-  out.radiance = map_.intensity() * sampleLatLongBilinear(map_.image(), uv);
-  const int height = distribution_.height();
-  const int row = std::clamp(static_cast<int>(uv.y * static_cast<float>(height)), 0, height - 1);
-  out.pdf = solidAnglePdf(distribution_.pdf(uv), row);
-  return out;
+  const EnvironmentTexels::Location at = texels_.locate(worldDirection);
+  return {at.radiance, texels_.solidAnglePdf(distribution_.pdf(at.uv), at.texel.y)};
 }
 
 }  // namespace iblkit

@@ -10,21 +10,20 @@
 // so a constant map is sampled exactly uniformly over the sphere (the usual uniform-in-theta row,
 // with its density pdf_uv / (2 pi^2 sin theta), varies by 2x and more across the rows nearest the
 // poles of a small map, which costs the white furnace test its noise floor).
-// Lookups are bilinear, which spreads a texel's radiance into its neighbours; each texel's weight
-// is therefore the maximum luminance of its 3x3 neighbourhood (wrapped in longitude), so the pdf
-// is non-zero wherever the looked-up radiance is (no bias when used alone).
+// The texel weights (the 3x3-maximum luminance x solid angle, optionally MIS-compensated) and the
+// direction within a texel are EnvironmentTexels' (environment_texels.h), shared with the median-cut
+// sampler.
 //
 // MIS compensation (Karlik et al. 2019, "MIS Compensation: Optimizing Sampling Techniques in
-// Multiple Importance Sampling"; pbrt-v4's ImageInfiniteLight, Mitsuba 3's `mis_compensation`):
-// the mean weight is subtracted, keeping a floor of 0.1% of the mean, so directions that BRDF
-// sampling finds well are left to it. Only valid combined with BRDF sampling by MIS; it is skipped
-// for near-constant maps (max - min <= 1% of the mean), where it would leave almost nothing.
+// Multiple Importance Sampling") leaves directions that BRDF sampling finds well to it: only valid
+// combined with BRDF sampling by MIS.
 
 #include <glm/glm.hpp>
 #include <vector>
 
 #include "core/distribution.h"
 #include "core/environment_map.h"
+#include "reference/environment_texels.h"
 
 namespace iblkit {
 
@@ -55,18 +54,10 @@ class EnvironmentSampler {
   bool misCompensated() const { return compensated_; }
 
  private:
-  // Luminance (3x3 maximum) x solid angle per texel; rowCosTheta: the rows' edges (rowCosTheta_).
-  static std::vector<float> texelWeights(const EnvironmentMap& map, const std::vector<float>& rowCosTheta,
-                                         bool misCompensation, bool* compensated);
-  // Density per steradian of a direction in the texel row `row` whose density in (u, v) is pdfUv.
-  float solidAnglePdf(float pdfUv, int row) const { return pdfUv * rowPdfScale_[static_cast<std::size_t>(row)]; }
-
-  const EnvironmentMap& map_;
+  EnvironmentTexels texels_;
   bool compensated_ = false;
   bool black_ = false;
-  std::vector<float> rowCosTheta_;   // height + 1 row edges: cos of the polar angle from +Y, 1 to -1
   PiecewiseConstant2D distribution_;
-  std::vector<float> rowPdfScale_;   // per row: 1 / (2 pi H (rowCosTheta_[y] - rowCosTheta_[y + 1]))
 };
 
 }  // namespace iblkit

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
+#include <stdexcept>
 
 #include "core/brdf.h"
 #include "core/error.h"
@@ -49,11 +50,18 @@ EnvSampling parseEnvSampling(const std::string& name) {
 }
 
 Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environment,
-                       const EnvironmentSampler& environmentSampler, const IntegratorSettings& settings)
+                       const EnvironmentSampler& environmentSampler, const IntegratorSettings& settings,
+                       const MedianCutLighting& medianCut)
     : scene_(scene),
       environment_(environment),
       environmentSampler_(environmentSampler),
-      settings_(settings) {}
+      settings_(settings),
+      medianCut_(medianCut) {
+  if (settings.envSampling == EnvSampling::MedianCut && !medianCut.sampler)
+    throw std::invalid_argument("Integrator: mediancut needs a MedianCutSampler");
+  if (settings.envSampling == EnvSampling::Lights && !medianCut.pointLights)
+    throw std::invalid_argument("Integrator: lights needs EnvironmentPointLights");
+}
 
 glm::vec3 Integrator::evalReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
                                      const glm::vec3& wo, const glm::vec3& wi) const {
@@ -66,8 +74,9 @@ float Integrator::pdfReflection(const BrdfAtPoint* brdf, const glm::vec3& n, con
   return brdf ? brdf->pdf(wi) : pdfPhongLobe(*settings_.phong, n, wo, wi);
 }
 
-BrdfSample Integrator::sampleReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
-                                        const glm::vec3& wo, glm::vec2 u, float uLobe) const {
+BrdfSample Integrator::sampleReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor,
+                                        const glm::vec3& n, const glm::vec3& wo, glm::vec2 u,
+                                        float uLobe) const {
   if (brdf) return brdf->sample(u, uLobe);
   BrdfSample sample = samplePhongLobe(*settings_.phong, n, wo, u);
   sample.weight *= baseColor;
@@ -114,6 +123,15 @@ Integrator::LightSample Integrator::sampleLight(const glm::vec3& n, glm::vec2 u)
       const EnvironmentSampler::Sample s = environmentSampler_.sample(u);
       return {s.direction, s.radiance, s.pdf};
     }
+    case EnvSampling::MedianCut: {
+      const MedianCutSampler::Sample s = medianCut_.sampler->sample(u);
+      return {s.direction, s.radiance, s.pdf};
+    }
+    case EnvSampling::Lights: {
+      // A delta light: "radiance" E_i / p_i with "pdf" 1 gives the estimator's f E_i cos / p_i.
+      const EnvironmentPointLights::Sample s = medianCut_.pointLights->sample(u.x);
+      return {s.direction, s.irradiance, 1.0f};
+    }
     case EnvSampling::Brdf:
       return sample;
   }
@@ -121,10 +139,15 @@ Integrator::LightSample Integrator::sampleLight(const glm::vec3& n, glm::vec2 u)
   return sample;
 }
 
+EnvironmentSampler::Lookup Integrator::lookupLight(const glm::vec3& w) const {
+  return settings_.envSampling == EnvSampling::MedianCut ? medianCut_.sampler->lookup(w)
+                                                         : environmentSampler_.lookup(w);
+}
+
 void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, CameraSample& result) const {
   const EnvSampling strategy = settings_.envSampling;
   const bool sampleLights = strategy != EnvSampling::Brdf;
-  const bool combine = strategy == EnvSampling::Mis;
+  const bool combine = strategy == EnvSampling::Mis || strategy == EnvSampling::MedianCut;
   const int maxDepth = settings_.kind == IntegratorKind::Direct ? 1 : settings_.maxDepth;
 
   glm::vec3 throughput(1.0f);
@@ -135,12 +158,13 @@ void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, Cam
     ++result.rays;
     if (!hit.hit) {
       // The environment seen by a BRDF-sampled ray counts when BRDF sampling is a strategy of
-      // its own (brdf), MIS-weighted against the light strategy (mis), or fully after a delta
-      // bounce, which no light strategy can reach.
+      // its own (brdf), MIS-weighted against the light strategy (mis, mediancut), or fully after a
+      // delta bounce, which no light strategy can reach. With lights the point lights stand for it
+      // at every other vertex.
       if (previousDelta || strategy == EnvSampling::Brdf) {
         result.radiance += throughput * environment_.radiance(ray.direction);
       } else if (combine) {
-        const EnvironmentSampler::Lookup seen = environmentSampler_.lookup(ray.direction);
+        const EnvironmentSampler::Lookup seen = lookupLight(ray.direction);
         result.radiance += throughput * powerHeuristic(previousPdf, seen.pdf) * seen.radiance;
       }
       return;

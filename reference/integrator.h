@@ -16,8 +16,15 @@
 // --env-sampling selects which strategies estimate the environment at a vertex (the sampling
 // study): uniform (uniform sphere directions), cosine (cosine-weighted hemisphere about the
 // shading normal), env (environment importance sampling), brdf (BRDF sampling alone) each on its
-// own, or mis (env + brdf, power heuristic, the default). Whatever the strategy the path is
-// continued by BRDF sampling, so every choice converges to the same image.
+// own, mis (env + brdf, power heuristic, the default), or mediancut (median-cut sampling,
+// median_cut_sampler.h, + brdf, power heuristic, like mis). Whatever the strategy the path is
+// continued by BRDF sampling, so every one of these converges to the same image.
+//
+// lights is the biased approximation (environment_point_lights.h): at every non-delta vertex one of
+// the N median-cut point lights, picked by its power, with a shadow ray (next-event estimation,
+// weighted by 1 / its probability: in expectation the sum over all N lights). BRDF-sampled rays
+// that escape add nothing, except after a delta bounce: the camera ray and a perfect mirror's ray
+// see the map itself. It converges to the image of the N point lights, not to the map's.
 
 #include <cstdint>
 #include <limits>
@@ -28,7 +35,9 @@
 #include "core/enum_names.h"
 #include "core/environment_map.h"
 #include "core/ray.h"
+#include "reference/environment_point_lights.h"
 #include "reference/environment_sampler.h"
+#include "reference/median_cut_sampler.h"
 #include "reference/pixel_sampler.h"
 #include "reference/ray_recorder.h"
 #include "reference/render_scene.h"
@@ -36,16 +45,15 @@
 namespace iblkit {
 
 enum class IntegratorKind { Path, Direct, AmbientOcclusion };
-enum class EnvSampling { Uniform, Cosine, Brdf, Env, Mis };
+enum class EnvSampling { Uniform, Cosine, Brdf, Env, Mis, MedianCut, Lights };
 
 inline constexpr EnumName<IntegratorKind> kIntegratorNames[] = {{IntegratorKind::Path, "path"},
                                                                 {IntegratorKind::Direct, "direct"},
                                                                 {IntegratorKind::AmbientOcclusion, "ao"}};
-inline constexpr EnumName<EnvSampling> kEnvSamplingNames[] = {{EnvSampling::Uniform, "uniform"},
-                                                              {EnvSampling::Cosine, "cosine"},
-                                                              {EnvSampling::Brdf, "brdf"},
-                                                              {EnvSampling::Env, "env"},
-                                                              {EnvSampling::Mis, "mis"}};
+inline constexpr EnumName<EnvSampling> kEnvSamplingNames[] = {
+    {EnvSampling::Uniform, "uniform"}, {EnvSampling::Cosine, "cosine"}, {EnvSampling::Brdf, "brdf"},
+    {EnvSampling::Env, "env"},         {EnvSampling::Mis, "mis"},       {EnvSampling::MedianCut, "mediancut"},
+    {EnvSampling::Lights, "lights"}};
 
 // Parse a name of the tables above; anything else throws Error("--integrator: unknown integrator
 // 'x' (expected one of path, direct, ao)") and the like.
@@ -80,12 +88,22 @@ struct CameraSample {
   std::uint32_t rays = 0;  // rays traced (closest-hit and shadow)
 };
 
+// The light samplers of the median-cut strategies, both of `environment`: the median-cut sampler
+// (mediancut) and the point lights (lights). Only the chosen strategy's need be set.
+struct MedianCutLighting {
+  const MedianCutSampler* sampler = nullptr;
+  const EnvironmentPointLights* pointLights = nullptr;
+};
+
 class Integrator {
  public:
-  // `scene`, `environment` and `environmentSampler` must outlive the integrator.
-  // `environmentSampler` samples `environment` (used by the env and mis strategies).
+  // `scene`, `environment`, `environmentSampler` and what `medianCut` points to must outlive the
+  // integrator. `environmentSampler` samples `environment` (used by the env and mis strategies).
+  // Throws std::invalid_argument when settings.envSampling is mediancut or lights and `medianCut`
+  // lacks its sampler.
   Integrator(const RenderScene& scene, const EnvironmentMap& environment,
-             const EnvironmentSampler& environmentSampler, const IntegratorSettings& settings);
+             const EnvironmentSampler& environmentSampler, const IntegratorSettings& settings,
+             const MedianCutLighting& medianCut = {});
 
   const IntegratorSettings& settings() const { return settings_; }
 
@@ -104,10 +122,15 @@ class Integrator {
   struct LightSample {
     glm::vec3 direction{0.0f};
     glm::vec3 radiance{0.0f};
-    float pdf = 0.0f;  // per steradian; 0: no sample
+    // Per steradian; 0: no sample. A point light (lights) has 1, its radiance being its
+    // irradiance over its probability.
+    float pdf = 0.0f;
   };
-  // The environment strategy's direction at a point with shading normal n (not for brdf).
+  // The environment strategy's direction at a point with shading normal n (not for brdf or lights).
   LightSample sampleLight(const glm::vec3& n, glm::vec2 u) const;
+  // The density with which the light strategy of mis or mediancut samples world direction w, and
+  // the environment's radiance there.
+  EnvironmentSampler::Lookup lookupLight(const glm::vec3& w) const;
   // The surface reflection model: the glTF BRDF prepared at the vertex (`brdf`), or, when it is
   // null (settings_.phong set), the Phong lobe.
   glm::vec3 evalReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
@@ -126,6 +149,7 @@ class Integrator {
   const EnvironmentMap& environment_;
   const EnvironmentSampler& environmentSampler_;
   IntegratorSettings settings_;
+  MedianCutLighting medianCut_;
   RayRecorder* recorder_ = nullptr;
 };
 

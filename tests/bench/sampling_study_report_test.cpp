@@ -11,7 +11,7 @@
 namespace iblkit {
 namespace {
 
-// 1, 2 and 4 spp; uniform, cosine, brdf, env, mis.
+// 1, 2 and 4 spp; uniform, cosine, brdf, env, mis, mediancut, lights4, lights16, lights64, lights256.
 SamplingStudySettings settings() {
   SamplingStudySettings out;
   out.width = 32;
@@ -27,15 +27,35 @@ MapStudy study(const std::string& name, const std::string& label, std::vector<st
   out.label = label;
   out.referenceFloor = 7.89e-4;
   out.relMse = std::move(relMse);
-  out.microsecondsPerSample = {0.9, 1.0, 0.75, 0.95, 1.25};
+  out.microsecondsPerSample = {0.9, 1.0, 0.75, 0.95, 1.25, 1.3, 0.5, 0.5, 0.5, 0.5};
   return out;
 }
 
-// Cosine / mis: 100x, 10x and 1000x on sky; 2x at every level on venice.
+// Cosine / mis: 100x, 10x and 1000x on sky; 2x at every level on venice. At 4 spp, over mis: on
+// sky mediancut 1.1x, the point lights 2000x, 600x, 150x and 10x; on venice 1x, 20x, 10x, 4x, 1.2x.
 std::vector<MapStudy> twoMaps() {
-  return {study("sky", "sunny", {{2, 3, 4}, {100, 1, 10}, {50, 2, 5}, {2, 0.2, 0.02}, {1, 0.1, 0.01}}),
+  return {study("sky", "sunny",
+                {{2, 3, 4},
+                 {100, 1, 10},
+                 {50, 2, 5},
+                 {2, 0.2, 0.02},
+                 {1, 0.1, 0.01},
+                 {1, 0.1, 0.011},
+                 {40, 30, 20},
+                 {10, 8, 6},
+                 {3, 2, 1.5},
+                 {1.2, 0.3, 0.1}}),
           study("venice", "soft",
-                {{1, 0.5, 0.25}, {0.4, 0.2, 0.1}, {0.4, 0.2, 0.1}, {0.4, 0.2, 0.1}, {0.2, 0.1, 0.05}})};
+                {{1, 0.5, 0.25},
+                 {0.4, 0.2, 0.1},
+                 {0.4, 0.2, 0.1},
+                 {0.4, 0.2, 0.1},
+                 {0.2, 0.1, 0.05},
+                 {0.2, 0.1, 0.05},
+                 {1, 1, 1},
+                 {0.5, 0.5, 0.5},
+                 {0.3, 0.2, 0.2},
+                 {0.2, 0.1, 0.06}})};
 }
 
 // Every element closed in order (<a ...>...</a> or <a .../>), no text outside the root, and every
@@ -88,10 +108,16 @@ TEST(SamplingStudyReport, MarkdownHasTheRatiosAndOneTableRowPerStrategy) {
           "Ratio cosine / mis (relMSE at equal spp), per map: **sky** 10x to 1e+03x; **venice** 2x to 2x.\n"),
       std::string::npos)
       << md;
+  EXPECT_NE(
+      md.find("Median cut and point lights, relMSE over mis's at 4 spp, per map: **sky** mediancut 1.1x, "
+              "lights4 2e+03x, lights16 600x, lights64 150x, lights256 10x; **venice** mediancut 1x, "
+              "lights4 20x, lights16 10x, lights64 4x, lights256 1.2x.\n"),
+      std::string::npos)
+      << md;
   EXPECT_NE(md.find("\n**sky** (sunny), reference floor 7.89e-04\n"), std::string::npos) << md;
   EXPECT_NE(md.find("\n**venice** (soft), reference floor 7.89e-04\n"), std::string::npos) << md;
 
-  // Each map: a header, the alignment row and five strategies, each with 1 + 3 + 2 cells.
+  // Each map: a header, the alignment row and ten strategies, each with 1 + 3 + 2 cells.
   const std::vector<std::string> all = test::splitLines(md);
   std::vector<std::string> rows;
   for (const std::string& line : all)
@@ -103,6 +129,7 @@ TEST(SamplingStudyReport, MarkdownHasTheRatiosAndOneTableRowPerStrategy) {
   // The last column is the geometric mean of cosine / strategy: (100 * 10 * 1000)^(1/3) = 100 for mis.
   EXPECT_EQ(rows[3], "| cosine | 100 | 1 | 10 | 1.00 | 1 |");
   EXPECT_EQ(rows[6], "| mis | 1 | 0.1 | 0.01 | 1.25 | 100 |");
+  EXPECT_EQ(rows[8], "| lights4 | 40 | 30 | 20 | 0.50 | 0.347 |");
   EXPECT_EQ(rows[2 + kStudyStrategyCount + 2], "| uniform | 1 | 0.5 | 0.25 | 0.90 | 0.4 |");
   EXPECT_EQ(all.back(),
             "\"cosine / strategy\" is the geometric mean over the spp levels of cosine's relMSE over the "

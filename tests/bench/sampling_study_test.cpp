@@ -85,17 +85,19 @@ TEST_F(SamplingStudyProgram, WritesTheTableThePlotAndOnlyItsSectionOfTheUpdatedF
   std::vector<std::string> rows;
   for (const std::string& line : test::splitLines(table))
     if (line.rfind("|", 0) == 0) rows.push_back(line);
-  ASSERT_EQ(rows.size(), 7u) << md;  // header, alignment, five strategies
+  ASSERT_EQ(rows.size(), 12u) << md;  // header, alignment, ten strategies
   EXPECT_EQ(rows[0], "| strategy | 1 spp | 2 spp | 4 spp | us / sample | cosine / strategy |");
   for (const std::string& row : rows) EXPECT_EQ(test::countOccurrences(row, "|"), 7u) << row;
   EXPECT_EQ(rows[6].rfind("| mis | ", 0), 0u) << rows[6];
+  EXPECT_EQ(rows[7].rfind("| mediancut | ", 0), 0u) << rows[7];
+  EXPECT_EQ(rows[11].rfind("| lights256 | ", 0), 0u) << rows[11];
   // The table is also the end of stdout.
   EXPECT_TRUE(output.ends_with(table)) << output;
 
   const std::string svg = readText(dir_ / "out" / "study.svg");
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\" ", 0), 0u) << svg;
   EXPECT_TRUE(svg.ends_with("</svg>\n")) << svg;
-  EXPECT_EQ(test::countOccurrences(svg, "<polyline "), 5u) << svg;
+  EXPECT_EQ(test::countOccurrences(svg, "<polyline "), 10u) << svg;
   EXPECT_NE(svg.find(">sky (sunny)</text>"), std::string::npos) << svg;
 
   // The section holds the table; every other byte of the file is as it was.
@@ -139,7 +141,9 @@ TEST_F(SamplingStudyProgram, BadInputFailsWithOneLineBeforeAnythingIsWritten) {
        "sampling_study: notes.md: has no <!-- other2:begin --> ... <!-- other2:end --> section"},
       {{{"--name", "a/b"}}, 2, "sampling_study: --name: 'a/b' is not a file name"},
       {{{"--out-dir", "missing"}}, 1, "sampling_study: missing: folder does not exist"},
-      {{{"--scene", "missing.json"}}, 1, "sampling_study: missing.json: cannot open: No such file or directory"},
+      {{{"--scene", "missing.json"}},
+       1,
+       "sampling_study: missing.json: cannot open: No such file or directory"},
       {{{"--width", "0"}}, 2, "sampling_study: --width: must be in 1..16384, not 0"},
       {{{"--height", "20000"}}, 2, "sampling_study: --height: must be in 1..16384, not 20000"},
       {{{"--max-spp", "99999999"}}, 2, "sampling_study: --max-spp: must be in 1..16777216, not 99999999"},

@@ -7,6 +7,7 @@
 #include "core/environment_map_file.h"
 #include "core/latlong.h"
 #include "core/sampling.h"
+#include "reference/environment_sampling_checks.h"
 #include "support/chi2.h"
 #include "support/test_paths.h"
 
@@ -15,61 +16,12 @@ namespace {
 
 constexpr int kChi2Tests = 5;  // Sidak correction over the suite
 
-test::Chi2Options chi2Options(const std::string& name) {
-  test::Chi2Options options;
-  options.name = name;
-  options.testCount = kChi2Tests;
-  // Bin in theta so the rows of a small map are resolved near the poles, and refine the
-  // quadrature: the pdf is a step function on the map's texels.
-  options.sphereBinning = test::SphereBinning::Theta;
-  options.integrationPanels = 8;
-  return options;
-}
-
-// The harness bins about +Z; the lat-long map's poles (where its density per steradian has the
-// integrable 1/sin(theta) of the parameterisation) are on +-Y. The cyclic permutation (x, y, z) ->
-// (z, x, y), a rotation, puts them on the harness's poles, where its sin(theta) Jacobian cancels it.
-glm::vec3 toHarness(const glm::vec3& d) { return glm::vec3(d.z, d.x, d.y); }
-glm::vec3 fromHarness(const glm::vec3& h) { return glm::vec3(h.y, h.z, h.x); }
-
 test::Chi2Result runChi2(const EnvironmentSampler& sampler, const std::string& name) {
-  return test::chi2TestSphere(
-      [&](PCG32& rng) { return std::optional(toHarness(sampler.sample(rng.uniform2D()).direction)); },
-      [&](const glm::vec3& h) { return double(sampler.pdf(fromHarness(h))); }, chi2Options(name));
+  return test::latLongChi2(sampler, name, kChi2Tests);
 }
 
-// Integral of f(direction) over the sphere by the midpoint rule on a thetaSteps x 2*thetaSteps
-// grid in (theta, phi) about +Y, each cell weighted by its exact solid angle.
-template <class Value, class Function>
-Value integrateOverSphere(Function&& f, int thetaSteps) {
-  Value sum(0.0);
-  const double pi = glm::pi<double>(), dPhi = pi / thetaSteps;
-  for (int i = 0; i < thetaSteps; ++i) {
-    const double t0 = pi * i / thetaSteps, t1 = pi * (i + 1) / thetaSteps, t = 0.5 * (t0 + t1);
-    for (int j = 0; j < 2 * thetaSteps; ++j) {
-      const double phi = (j + 0.5) * dPhi;
-      const glm::vec3 d(std::sin(t) * std::cos(phi), std::cos(t), std::sin(t) * std::sin(phi));
-      sum += Value(f(d)) * (dPhi * (std::cos(t0) - std::cos(t1)));
-    }
-  }
-  return sum;
-}
-
-// A synthetic map with a bright soft spot and a dim gradient: smooth but far from constant.
-EnvironmentMap spotMap() {
-  const glm::vec3 spot = glm::normalize(glm::vec3(0.3f, 0.6f, -0.7f));
-  EnvironmentMap map = EnvironmentMap::fromImage(
-      latLongFromRadiance(64, 32, 2,
-                          [&](const glm::vec3& d) {
-                            const float c = std::max(0.0f, glm::dot(d, spot));
-                            return glm::vec3(0.2f + 0.1f * d.y) +
-                                   glm::vec3(40.0f, 30.0f, 20.0f) * std::pow(c, 64.0f);
-                          }),
-      "spot");
-  map.setRotationDegrees(35.0f);
-  map.setIntensity(2.0f);
-  return map;
-}
+using test::integrateOverSphere;
+using test::spotMap;
 
 TEST(EnvironmentSampler, OneHotPixelPassesChiSquare) {
   const EnvironmentMap map = EnvironmentMap::hotPixel(32, 9, 5, glm::vec3(100.0f));
@@ -86,8 +38,9 @@ TEST(EnvironmentSampler, ConstantMapPassesChiSquareAndIsUniformOverSolidAngle) {
   // Each texel is sampled uniformly over its solid angle: exactly 1/(4 pi) everywhere, the rows
   // at the poles included (a uniform-in-theta row is off by 2x and more there), for samples too.
   const float uniform = 1.0f / (4.0f * glm::pi<float>());
-  for (const glm::vec3 w : {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), glm::vec3(0.01f, 1, 0),
-                            glm::vec3(0.3f, -0.9f, 0.2f), glm::vec3(-0.5f, 0.5f, 0.7f)})
+  for (const glm::vec3 w :
+       {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), glm::vec3(0.01f, 1, 0),
+        glm::vec3(0.3f, -0.9f, 0.2f), glm::vec3(-0.5f, 0.5f, 0.7f)})
     EXPECT_NEAR(sampler.pdf(w), uniform, 1e-5f * uniform) << w.x << "," << w.y << "," << w.z;
   PCG32 rng(1, 2);
   for (int i = 0; i < 1000; ++i) ASSERT_NEAR(sampler.sample(rng.uniform2D()).pdf, uniform, 1e-5f * uniform);

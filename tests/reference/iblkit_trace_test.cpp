@@ -58,6 +58,30 @@ TEST_F(IblkitTrace, WritesTheBeautyLayersAndPreview) {
   EXPECT_GT(readExr(dir_ / "depth.exr").stats().max.r, 0.0f);
 }
 
+// mediancut samples the map unbiasedly (the image's mean is mis's within the noise of 64 spp);
+// lights with 16 point lights renders the biased approximation; both show the map itself where
+// the camera sees it.
+TEST_F(IblkitTrace, MedianCutStrategiesRender) {
+  std::string output;
+  ASSERT_EQ(trace("scene.json -o mis.exr --spp 64 --threads 2", &output), 0) << output;
+  ASSERT_EQ(trace("scene.json -o mediancut.exr --spp 64 --threads 2 --env-sampling mediancut --env-lights 16",
+                  &output),
+            0)
+      << output;
+  ASSERT_EQ(
+      trace("scene.json -o lights.exr --spp 64 --threads 2 --env-sampling lights --env-lights 16", &output),
+      0)
+      << output;
+  const Image mis = readExr(dir_ / "mis.exr"), medianCut = readExr(dir_ / "mediancut.exr"),
+              lights = readExr(dir_ / "lights.exr");
+  EXPECT_NEAR(medianCut.stats().meanLuminance / mis.stats().meanLuminance, 1.0, 0.01);
+  for (const Image* image : {&medianCut, &lights}) {
+    EXPECT_EQ(image->at(0, 0), glm::vec4(0.5f, 0.625f, 0.75f, 1.0f));
+    EXPECT_TRUE(std::isfinite(image->stats().meanLuminance));
+  }
+  EXPECT_GT(lights.stats().meanLuminance, 0.0f);
+}
+
 TEST_F(IblkitTrace, OverridesSizeAndEnvironment) {
   writeExr(dir_ / "red.exr", Image(16, 8, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f)));
   std::string output;
@@ -130,23 +154,26 @@ TEST_F(IblkitTrace, MaskedHoleInAGlbShowsTheEnvironment) {
   nlohmann::json& doc = gltf.document();
   doc["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9728}}};
   doc["textures"] = {{{"source", image}, {"sampler", 0}}};
-  doc["materials"] = {{{"pbrMetallicRoughness",
-                        {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}, {"baseColorTexture", {{"index", 0}}}}},
-                       {"alphaMode", "MASK"},
-                       {"doubleSided", true}}};
+  doc["materials"] = {
+      {{"pbrMetallicRoughness",
+        {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}, {"baseColorTexture", {{"index", 0}}}}},
+       {"alphaMode", "MASK"},
+       {"doubleSided", true}}};
   gltf.addPrimitiveNode({{"attributes",
                           {{"POSITION", gltf.addFloats(positions)},
                            {"NORMAL", gltf.addFloats(normals)},
                            {"TEXCOORD_0", gltf.addFloats(uvs)}}},
                          {"indices", gltf.addIndices({0, 1, 2, 0, 2, 3})},
                          {"material", 0}});
-  doc["cameras"] = {{{"type", "perspective"},
-                     {"perspective", {{"yfov", 2.0 * std::atan(1.0 / 3.0)}, {"znear", 0.1}, {"aspectRatio", 1.0}}}}};
+  doc["cameras"] = {
+      {{"type", "perspective"},
+       {"perspective", {{"yfov", 2.0 * std::atan(1.0 / 3.0)}, {"znear", 0.1}, {"aspectRatio", 1.0}}}}};
   gltf.addNode({{"camera", 0}, {"translation", {0, 0, 3}}});
   gltf.write(dir_ / "holed.glb", test::GltfBuilder::Storage::Glb);
 
   std::string output;
-  ASSERT_EQ(trace("holed.glb --env env.exr -o holed.exr --width 16 --height 16 --spp 4 --threads 2", &output), 0)
+  ASSERT_EQ(trace("holed.glb --env env.exr -o holed.exr --width 16 --height 16 --spp 4 --threads 2", &output),
+            0)
       << output;
   const Image beauty = readExr(dir_ / "holed.exr");
   const glm::vec4 sky(0.5f, 0.625f, 0.75f, 1.0f);
@@ -174,14 +201,21 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
       {"scene.json -o out.exr --width 20000", 2, "iblkit-trace: --width: must be in 1..16384, not 20000\n"},
       {"scene.json -o out.exr --height -4", 2, "iblkit-trace: --height: must be in 1..16384, not -4\n"},
       {"scene.json -o out.exr --threads -1", 2, "iblkit-trace: --threads: must be in 0..1024, not -1\n"},
-      {"scene.json -o out.exr --threads 70000", 2, "iblkit-trace: --threads: must be in 0..1024, not 70000\n"},
+      {"scene.json -o out.exr --threads 70000", 2,
+       "iblkit-trace: --threads: must be in 0..1024, not 70000\n"},
       // Checked before anything is read: the range error, not the missing scene.
       {"missing.json -o out.exr --spp 0", 2, "iblkit-trace: --spp: must be in 1..16777216, not 0\n"},
       {"scene.json -o out.exr --integrator bidir", 2,
        "iblkit-trace: --integrator: unknown integrator 'bidir' (expected one of path, direct, ao)\n"},
       {"scene.json -o out.exr --env-sampling light", 2,
        "iblkit-trace: --env-sampling: unknown strategy 'light' (expected one of uniform, cosine, brdf, env, "
-       "mis)\n"},
+       "mis, mediancut, lights)\n"},
+      {"scene.json -o out.exr --env-sampling lights --env-lights 48", 2,
+       "iblkit-trace: --env-lights: must be a power of 2 in 1..4096, not 48\n"},
+      {"scene.json -o out.exr --env-sampling mediancut --env-lights 8192", 2,
+       "iblkit-trace: --env-lights: must be a power of 2 in 1..4096, not 8192\n"},
+      {"scene.json -o out.exr --env-lights 16", 2,
+       "iblkit-trace: --env-lights: needs --env-sampling mediancut or lights\n"},
       {"scene.json -o out.exr --env missing.exr", 1,
        "iblkit-trace: missing.exr: cannot open: No such file or directory\n"},
       {"scene.json -o out.exr --filter tent", 2,
@@ -189,7 +223,8 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
       {"scene.json -o nowhere/out.exr", 1, "iblkit-trace: nowhere/out.exr: folder does not exist\n"},
       {"scene.json -o out.exr --bent-normal b.exr", 2,
        "iblkit-trace: --bent-normal: needs --integrator ao\n"},
-      {"scene.json -o out.exr --texture-footprint -1", 2, "iblkit-trace: --texture-footprint: must be >= 0 (pixels)\n"},
+      {"scene.json -o out.exr --texture-footprint -1", 2,
+       "iblkit-trace: --texture-footprint: must be >= 0 (pixels)\n"},
       {"scene.json", 2, "iblkit-trace: --output is required\n"},
       {"scene.json -o out.exr --no-such-option", 2,
        "iblkit-trace: The following argument was not expected: --no-such-option\n"},

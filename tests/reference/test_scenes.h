@@ -3,6 +3,7 @@
 // under analytic environments, rendered small so each test program stays fast.
 
 #include <glm/gtc/constants.hpp>
+#include <optional>
 #include <utility>
 
 #include "core/environment_map.h"
@@ -48,14 +49,22 @@ inline Scene sphereScene(const Material& material) {
   return scene;
 }
 
-// Renders `scene` under `environment` at width x height, spp samples per pixel.
+// Renders `scene` under `environment` at width x height, spp samples per pixel; mediancut and
+// lights use 2^medianCutLevels regions.
 inline RenderResult renderWith(Scene scene, const EnvironmentMap& environment,
                                const IntegratorSettings& integratorSettings, int size, int spp,
-                               std::uint32_t seed = 1, int threads = 2) {
+                               std::uint32_t seed = 1, int threads = 2, int medianCutLevels = 6) {
   const Camera camera = sceneCamera(scene, 1.0f);
   const RenderScene renderScene(std::move(scene));
   const EnvironmentSampler sampler(environment);
-  const Integrator integrator(renderScene, environment, sampler, integratorSettings);
+  std::optional<MedianCutSampler> medianCut;
+  std::optional<EnvironmentPointLights> pointLights;
+  if (integratorSettings.envSampling == EnvSampling::MedianCut)
+    medianCut.emplace(environment, medianCutLevels);
+  if (integratorSettings.envSampling == EnvSampling::Lights)
+    pointLights.emplace(environment, medianCutLevels);
+  const Integrator integrator(renderScene, environment, sampler, integratorSettings,
+                              {medianCut ? &*medianCut : nullptr, pointLights ? &*pointLights : nullptr});
   RenderSettings settings;
   settings.width = settings.height = size;
   settings.samplesPerPixel = spp;

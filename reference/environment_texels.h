@@ -1,0 +1,65 @@
+#pragma once
+// The texels of a lat-long environment as the reference's light samplers draw them
+// (environment_sampler.h, median_cut_sampler.h): each texel's sampling weight, and a direction
+// uniform over a texel's solid angle with its density per steradian. Both samplers pick a texel,
+// and a point of [0,1]^2 inside it, from a piecewise-constant distribution over these weights; this
+// is what turns that point into a direction.
+//
+// Weights: luminance x solid angle per texel, the luminance being the maximum of the texel's 3x3
+// neighbourhood (wrapped in longitude): lookups are bilinear, which spreads a texel's radiance into
+// its neighbours, so the pdf is non-zero wherever the looked-up radiance is. Optionally with MIS
+// compensation (Karlik et al. 2019; pbrt-v4's ImageInfiniteLight, Mitsuba 3's `mis_compensation`):
+// the mean weight subtracted, keeping a floor of 0.1% of the mean, skipped for near-constant maps
+// (max - min <= 1% of the mean).
+//
+// Directions: within a texel the fraction of the way down its row is linear in cos(theta), not
+// theta, so the density per steradian is exactly constant on each texel:
+//   pdf(w) = pdf_uv(texel) / (2 pi H (cos theta_top - cos theta_bottom)).
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "core/environment_map.h"
+
+namespace iblkit {
+
+class EnvironmentTexels {
+ public:
+  // Keeps a reference to `map`, which must outlive this.
+  explicit EnvironmentTexels(const EnvironmentMap& map);
+
+  const EnvironmentMap& map() const { return map_; }
+
+  // The weights of the texels, row by row (row 0 first), proportional to the 3x3-maximum
+  // luminance x solid angle; MIS-compensated when asked and the map is not near-constant
+  // (*compensated says whether it was).
+  std::vector<float> weights(bool misCompensation, bool* compensated) const;
+
+  struct Point {
+    glm::vec3 direction{0.0f};  // world direction, unit length
+    glm::vec3 radiance{0.0f};   // the map's bilinear radiance there, intensity applied
+  };
+  // The point at longitude fraction u in [0,1] (u = 0.5 is the map's +Z) in texel row `row`, a
+  // fraction `along` in [0,1] of the way down the row's solid angle.
+  Point pointInRow(float u, int row, float along) const;
+
+  // Density per steradian of a direction in texel row `row` whose density in (u, v) is pdfUv.
+  float solidAnglePdf(float pdfUv, int row) const {
+    return pdfUv * rowPdfScale_[static_cast<std::size_t>(row)];
+  }
+
+  struct Location {
+    glm::vec2 uv{0.0f};        // lat-long coordinates in [0,1]^2
+    glm::ivec2 texel{0};       // the texel uv lies in (column, row), clamped to the map
+    glm::vec3 radiance{0.0f};  // the map's bilinear radiance, intensity applied
+  };
+  // Where world direction w (any non-zero length) lies in the map, and its radiance.
+  Location locate(const glm::vec3& worldDirection) const;
+
+ private:
+  const EnvironmentMap& map_;
+  std::vector<float> rowCosTheta_;  // height + 1 row edges: cos of the polar angle from +Y, 1 to -1
+  std::vector<float> rowPdfScale_;  // per row: 1 / (2 pi H (rowCosTheta_[y] - rowCosTheta_[y + 1]))
+};
+
+}  // namespace iblkit
