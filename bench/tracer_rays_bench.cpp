@@ -215,8 +215,10 @@ const Tracer& tracer(SceneVariant variant, unsigned slots = kAllTextureSlots, bo
 }
 
 bool replay(RTCScene scene, const RecordedRay& r) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  // The query's context, as RayScene passes it: the scene's filter callbacks (single-sided back
+  // faces culled for camera rays, alpha) read it, and run in the replay as in the render.
+  RayQueryContext queryContext(r.query);
+  RTCIntersectContext& context = queryContext.context;
   if (r.occlusion) {
     RTCRay query{};
     query.org_x = r.origin.x, query.org_y = r.origin.y, query.org_z = r.origin.z;

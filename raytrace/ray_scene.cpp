@@ -52,19 +52,13 @@ void checkEmbree() {
   fail("Embree", message);
 }
 
-// Embree's intersect context extended by the query (Embree 3 passes the context pointer to filter
-// callbacks unchanged, and documents embedding it first in a larger struct for this purpose).
-struct QueryContext {
-  RTCIntersectContext context;
-  const RayQuery* query;
-};
-static_assert(offsetof(QueryContext, context) == 0);
+static_assert(offsetof(RayQueryContext, context) == 0);
 
 // The filter callback of intersect and occluded queries alike: reject (valid = 0) the candidates
 // the AlphaFilter says are not there. Embree passes N candidates (1 for rtcIntersect1).
 void filterCandidates(const RTCFilterFunctionNArguments* args) {
   const auto* filter = static_cast<const AlphaFilter*>(args->geometryUserPtr);
-  const RayQuery& query = *reinterpret_cast<const QueryContext*>(args->context)->query;
+  const RayQuery& query = *reinterpret_cast<const RayQueryContext*>(args->context)->query;
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
     RTCRayN* ray = args->ray;
@@ -178,8 +172,7 @@ void RayScene::requireCommitted(const char* query) const {
 Hit RayScene::intersect(const Ray& ray, float tmin, float tmax, const RayQuery& rayQuery) const {
   requireCommitted("intersect");
   // A context per call: it carries no shared state, which is what makes concurrent queries safe.
-  QueryContext context{{}, &rayQuery};
-  rtcInitIntersectContext(&context.context);
+  RayQueryContext context(rayQuery);
   RTCRayHit query{};
   query.ray.org_x = ray.origin.x;
   query.ray.org_y = ray.origin.y;
@@ -213,8 +206,7 @@ Hit RayScene::intersect(const Ray& ray, float tmin, float tmax, const RayQuery& 
 bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float tmax,
                         const RayQuery& rayQuery) const {
   requireCommitted("occluded");
-  QueryContext context{{}, &rayQuery};
-  rtcInitIntersectContext(&context.context);
+  RayQueryContext context(rayQuery);
   RTCRay query{};
   query.org_x = origin.x;
   query.org_y = origin.y;

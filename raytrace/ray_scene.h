@@ -45,6 +45,16 @@ T interpolateAtHit(const std::vector<T>& values, const std::uint32_t* corner, gl
   return (1.0f - u - v) * values[corner[0]] + u * values[corner[1]] + v * values[corner[2]];
 }
 
+// Embree's intersect context extended by the query (Embree 3 passes the context pointer to filter
+// callbacks unchanged, and documents embedding it first in a larger struct for this purpose): the
+// filter callbacks of a RayScene with an AlphaFilter read the query through it, so a caller that
+// calls Embree directly on embreeScene() (the replay benchmark) must pass &context of one of these.
+struct RayQueryContext {
+  RTCIntersectContext context;
+  const RayQuery* query;
+  explicit RayQueryContext(const RayQuery& rayQuery) : query(&rayQuery) { rtcInitIntersectContext(&context); }
+};
+
 class RayScene {
  public:
   struct Bounds {
@@ -112,7 +122,7 @@ class RayScene {
   unsigned meshCount() const { return static_cast<unsigned>(meshes_.size()); }
 
   // The committed Embree scene, for queries this class does not wrap (ray packets and streams) and
-  // for the raw-throughput benchmark.
+  // for the raw-throughput benchmark; pass a RayQueryContext to every query on it.
   RTCScene embreeScene() const { return scene_.get(); }
 
  private:

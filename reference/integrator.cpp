@@ -85,14 +85,14 @@ BrdfSample Integrator::sampleReflection(const BrdfAtPoint* brdf, const glm::vec3
 
 Hit Integrator::intersect(const Ray& ray, const RayQuery& query) const {
   if (recorder_) [[unlikely]]
-    recorder_->record({ray.origin, 0.0f, ray.direction, kInfinity, false});
+    recorder_->record({ray.origin, 0.0f, ray.direction, kInfinity, false, query});
   return scene_.rays().intersect(ray, 0.0f, kInfinity, query);
 }
 
 bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax,
                           const RayQuery& query) const {
   if (recorder_) [[unlikely]]
-    recorder_->record({origin, 0.0f, direction, tmax, true});
+    recorder_->record({origin, 0.0f, direction, tmax, true, query});
   return scene_.rays().occluded(origin, direction, 0.0f, tmax, query);
 }
 

@@ -14,6 +14,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "raytrace/alpha_filter.h"
+
 namespace iblkit {
 
 struct RecordedRay {
@@ -22,6 +24,7 @@ struct RecordedRay {
   glm::vec3 direction{0.0f};
   float tmax = 0.0f;
   bool occlusion = false;  // true: a shadow query (RayScene::occluded); false: closest hit (intersect)
+  RayQuery query;          // what the alpha filter was told (the ray's kind and cone)
 };
 
 class RayRecorder {

@@ -181,6 +181,28 @@ TEST(AlphaFilter, SingleSidedBackFacesAreCulledForCameraRaysOnly) {
   EXPECT_EQ(baker.filter->needs(0), 0u);
 }
 
+// Embree called directly on the scene (the replay benchmark) through a RayQueryContext runs the
+// same callbacks with the same query: a camera ray passes through the back face, another does not.
+TEST(AlphaFilter, DirectEmbreeQueriesThroughARayQueryContextSeeTheQuery) {
+  FilteredScene s;
+  s.scene.materials = {Material{}};
+  s.scene.meshes = {test::texturedQuad(0.0f, 1.0f, 0.0f, 0)};
+  s.build();
+  ASSERT_EQ(s.filter->needs(0), unsigned(AlphaFilter::kCullCameraBackFaces));
+  for (const RayKind kind : {RayKind::Camera, RayKind::Secondary}) {
+    const RayQuery query{kind, {}};
+    RayQueryContext context(query);
+    RTCRayHit ray{};
+    ray.ray.org_x = 0.5f, ray.ray.org_y = 0.5f, ray.ray.org_z = -1.0f;
+    ray.ray.dir_z = 1.0f;
+    ray.ray.tfar = kInfinity;
+    ray.ray.mask = ~0u;
+    ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(s.rays.embreeScene(), &context.context, &ray);
+    EXPECT_EQ(ray.hit.geomID != RTC_INVALID_GEOMETRY_ID, kind == RayKind::Secondary);
+  }
+}
+
 // The footprint: width sqrt(uv area / world area) / cosine, the cosine clamped at 1 / 16.
 TEST(AlphaFilter, TextureFootprintOfARayCone) {
   Mesh quad = test::texturedQuad(0.0f, 2.0f, 0.0f, 0);  // uv [0, 1]^2 over 2 x 2 metres

@@ -42,14 +42,18 @@ TEST(RayRecorder, RecordsEveryRayTracedWithoutChangingTheImage) {
   EXPECT_EQ(recorder.size(), recorded.rays);
   const std::vector<RecordedRay> rays = recorder.rays();
   ASSERT_EQ(rays.size(), recorded.rays);
-  std::size_t shadow = 0;
+  std::size_t shadow = 0, camera = 0;
   for (const RecordedRay& ray : rays) {
     shadow += ray.occlusion;
+    // The query as the alpha filter saw it: one camera ray per sample, every other one secondary.
+    camera += ray.query.kind == RayKind::Camera;
+    EXPECT_TRUE(!ray.occlusion || ray.query.kind == RayKind::Secondary);
     EXPECT_NEAR(glm::length(ray.direction), 1.0f, 1e-4f);
     EXPECT_EQ(ray.tmin, 0.0f);
   }
   EXPECT_GT(shadow, 0u);
-  EXPECT_GE(rays.size() - shadow, std::size_t{16 * 16 * 4});  // at least the camera rays
+  EXPECT_EQ(camera, std::size_t{16 * 16 * 4});
+  EXPECT_GE(rays.size() - shadow, camera);
 
   // Replayed through the scene, the closest-hit queries hit as often as the render's did: the
   // camera rays that hit the sphere or ground (mask or depth non-zero) are among them.
