@@ -59,6 +59,25 @@ std::string stbReason() {
   return reason ? printableExcerpt(reason, 80) : "unknown reason";
 }
 
+// Every chunk up to IEND (PNG specification section 5.3: a 4-byte length, the type, the data and
+// a CRC) lies inside the data. stb_image trusts a chunk's length and grows its IDAT buffer to it
+// before reading: a 3 x 2 PNG whose second IDAT claimed 0x71717171 bytes asked for 2 GiB (a fuzz
+// finding, fuzz/corpus/texture/).
+void requirePngChunksInside(std::span<const std::uint8_t> bytes, const std::filesystem::path& file,
+                            const std::string& what) {
+  std::size_t at = sizeof(kPngSignature);
+  while (at + 12 <= bytes.size()) {
+    const std::uint64_t length = bigEndian32(bytes.data() + at);
+    const std::string type(reinterpret_cast<const char*>(bytes.data() + at + 4), 4);
+    const std::uint64_t remaining = bytes.size() - at - 12;
+    if (length > remaining)
+      fail(file, what + ": PNG chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) +
+                     " bytes of data, but only " + std::to_string(remaining) + " follow (corrupt or truncated)");
+    if (type == "IEND") return;
+    at += 12 + std::size_t(length);
+  }
+}
+
 // PNG and JPEG through stb_image. The PNG size comes from IHDR (PNG specification section 11.2.2,
 // the first chunk), since stbi_info refuses sizes it would not decode with a vaguer "too large".
 void decodeWithStb(TextureImage& image, std::span<const std::uint8_t> bytes, bool png,
@@ -70,6 +89,7 @@ void decodeWithStb(TextureImage& image, std::span<const std::uint8_t> bytes, boo
     if (bytes.size() < 24 || std::memcmp(bytes.data() + 12, "IHDR", 4) != 0)
       fail(file, what + ": PNG does not start with an IHDR chunk");
     requireTextureSize(bigEndian32(bytes.data() + 16), bigEndian32(bytes.data() + 20), file, what);
+    requirePngChunksInside(bytes, file, what);
   }
   int width = 0, height = 0, channels = 0;
   if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels))

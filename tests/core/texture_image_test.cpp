@@ -134,14 +134,34 @@ TEST(TextureImage, BadDataGivesTheDecodersReason) {
   const std::vector<std::uint8_t> png = test::encodePng(4, 4, std::vector<std::uint8_t>(64, 3));
   EXPECT_EQ(decodeError(std::vector<std::uint8_t>(png.begin(), png.begin() + 20)),
             "PNG does not start with an IHDR chunk");
+  // Cut inside its IDAT: the chunk claims more bytes than follow.
   std::vector<std::uint8_t> cut(png.begin(), png.end() - 20);
-  EXPECT_EQ(decodeError(cut).rfind("PNG does not decode (", 0), 0u) << decodeError(cut);
+  EXPECT_EQ(decodeError(cut).rfind("PNG chunk at byte ", 0), 0u) << decodeError(cut);
+  EXPECT_NE(decodeError(cut).find("(corrupt or truncated)"), std::string::npos) << decodeError(cut);
+  // Cut after its IDAT, before IEND: the chunks are whole, stb_image gives its reason.
+  std::vector<std::uint8_t> noEnd(png.begin(), png.end() - 12);
+  const std::string noEndError = decodeError(noEnd);
+  EXPECT_TRUE(noEndError == "(no error)" || noEndError.rfind("PNG does not decode (", 0) == 0u) << noEndError;
   std::vector<std::uint8_t> webp = test::encodeWebp(4, 4, std::vector<std::uint8_t>(64, 3));
   webp.resize(webp.size() - 6);
   EXPECT_EQ(decodeError(webp).rfind("WebP does not decode (", 0), 0u) << decodeError(webp);
   const std::vector<std::uint8_t> jpeg = test::encodeJpeg(8, 8, std::vector<std::uint8_t>(256, 3));
   EXPECT_EQ(decodeError(std::vector<std::uint8_t>(jpeg.begin(), jpeg.begin() + 4)).rfind("JPEG does not decode (", 0),
             0u);
+}
+
+// The fuzz finding fuzz/corpus/texture/finding_png_idat_claims_2gib.png: a valid small PNG followed
+// by an IDAT whose length says 0x71717171 bytes. stb_image grew its buffer to that length (2 GiB)
+// before reading; the chunk walk refuses it first.
+TEST(TextureImage, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
+  std::vector<std::uint8_t> png = test::encodePng(3, 2, std::vector<std::uint8_t>(3 * 2 * 4, 7));
+  std::size_t iend = png.size() - 12;
+  ASSERT_EQ(std::memcmp(png.data() + iend + 4, "IEND", 4), 0);
+  const std::uint8_t chunk[] = {0x71, 0x71, 0x71, 0x71, 'I', 'D', 'A', 'T', 0x71, 0x71, 0x71, 0x71};
+  png.insert(png.begin() + std::ptrdiff_t(iend), std::begin(chunk), std::end(chunk));
+  EXPECT_EQ(decodeError(png), "PNG chunk at byte " + std::to_string(iend) + " claims " + std::to_string(0x71717171) +
+                                  " bytes of data, but only " + std::to_string(png.size() - iend - 12) +
+                                  " follow (corrupt or truncated)");
 }
 
 }  // namespace
