@@ -11,27 +11,14 @@
 #include "baker/environment_stages.h"
 #include "baker/specular_prefilter.h"
 #include "core/environment_lights.h"
-#include "core/environment_map_file.h"
 #include "core/environment_sh.h"
-#include "core/latlong.h"
+#include "bench/asset_environment.h"
 
 namespace {
 
 using iblkit::EnvironmentMap;
 
-std::filesystem::path assetMap() {
-  const char* assets = std::getenv("IBLKIT_ASSETS");
-  return std::filesystem::path(assets ? assets : "assets") / "hdri" / "sky.exr";
-}
-
-// The asset map (width 512) or its bilinear upsampling to 2048.
-const EnvironmentMap& environment(int width) {
-  static const EnvironmentMap asset = iblkit::loadEnvironmentMap(assetMap());
-  static const EnvironmentMap large = EnvironmentMap::fromImage(
-      iblkit::latLongFromRadiance(2048, 1024, 1, [](const glm::vec3& d) { return asset.radiance(d); }),
-      "upsampled");
-  return width == asset.width() ? asset : large;
-}
+const EnvironmentMap& environment(int width) { return iblkit::bench::assetEnvironment("sky", width); }
 
 // The map without its suns (extractSuns with the defaults).
 const EnvironmentMap& residual(int width) {

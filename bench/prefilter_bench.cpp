@@ -3,32 +3,17 @@
 // the viewer's size) for a 512 x 256 asset map and the same map upsampled to 2048 x 1024. Set IBLKIT_ASSETS to the folder holding hdri/ (default: ./assets).
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
-#include <filesystem>
 
 #include "core/environment_sh.h"
 #include "baker/irradiance_cube.h"
 #include "baker/specular_prefilter.h"
-#include "core/environment_map_file.h"
-#include "core/latlong.h"
+#include "bench/asset_environment.h"
 
 namespace {
 
 using iblkit::EnvironmentMap;
 
-std::filesystem::path assetMap() {
-  const char* assets = std::getenv("IBLKIT_ASSETS");
-  return std::filesystem::path(assets ? assets : "assets") / "hdri" / "park.exr";
-}
-
-// The asset map (width 512) or its bilinear upsampling to `width`.
-const EnvironmentMap& environment(int width) {
-  static const EnvironmentMap asset = iblkit::loadEnvironmentMap(assetMap());
-  static const EnvironmentMap large = EnvironmentMap::fromImage(
-      iblkit::latLongFromRadiance(2048, 1024, 1, [](const glm::vec3& d) { return asset.radiance(d); }),
-      "upsampled");
-  return width == asset.width() ? asset : large;
-}
+const EnvironmentMap& environment(int width) { return iblkit::bench::assetEnvironment("park", width); }
 
 void BM_ProjectSh9(benchmark::State& state) {
   const EnvironmentMap& map = environment(static_cast<int>(state.range(0)));
