@@ -21,11 +21,17 @@ command -v npm >/dev/null 2>&1 || { echo "assets: npm not found; run scripts/set
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 echo "assets: fetching $package from the npm registry"
-if ! (cd "$work" && npm pack --silent "$package" >npm.log 2>&1); then
-  echo "assets: could not download $package with npm pack (offline, or the registry is unreachable):" >&2
-  tail -n 3 "$work/npm.log" >&2
-  exit 1
-fi
+# Three tries, 5 s apart: a registry connection that drops once does not fail a CI run.
+for try in 1 2 3; do
+  if (cd "$work" && npm pack --silent "$package" >npm.log 2>&1); then break; fi
+  if [ "$try" = 3 ]; then
+    echo "assets: 'npm pack $package' failed 3 times (offline, or the registry is unreachable):" >&2
+    tail -n 3 "$work/npm.log" >&2
+    exit 1
+  fi
+  echo "assets: 'npm pack $package' failed (try $try of 3), retrying in 5 s" >&2
+  sleep 5
+done
 tar -xzf "$work"/pmndrs-assets-*.tgz -C "$work"
 
 # Each module reads: export default 'data:<mime>;base64,<payload>'
@@ -46,7 +52,10 @@ extract_view0() {
   view=$(dd if="$glb" bs=1 skip=20 count="$json_length" 2>/dev/null | grep -o '"bufferViews":\[{[^}]*}')
   offset=$(sed -E 's/.*"byteOffset":([0-9]+).*/\1/' <<<"$view")
   length=$(sed -E 's/.*"byteLength":([0-9]+).*/\1/' <<<"$view")
-  tail -c +$((20 + json_length + 8 + offset + 1)) "$glb" | head -c "$length" >"$dst.tmp"
+  # One dd, not tail | head: under pipefail, head's early exit kills tail with SIGPIPE (status
+  # 141), a race that failed a CI run.
+  dd if="$glb" of="$dst.tmp" iflag=skip_bytes,count_bytes skip=$((20 + json_length + 8 + offset)) \
+    count="$length" status=none
   mv "$dst.tmp" "$dst"
 }
 
