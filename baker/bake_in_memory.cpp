@@ -1,6 +1,7 @@
 #include "baker/bake_in_memory.h"
 
 #include <iostream>
+#include <optional>
 
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
@@ -14,14 +15,15 @@ BakedScene bakeInMemory(const fs::path& sceneFile, const InMemoryBakeOptions& op
   BakedScene bake;
   bake.scene = loadScene(sceneFile);
   bake.bakedInMemory = true;
-  const EnvironmentMap environment = loadSceneEnvironment(bake.scene, options.environment);
+  std::optional<EnvironmentMap> environment;
+  if (!options.environmentStages) environment = loadSceneEnvironment(bake.scene, options.environment);
   std::cerr << sceneFile.string() << ": a scene, not a bake folder: baking it in memory (" << options.aoRays
             << " visibility rays per vertex)\n";
   VisibilitySettings settings;
   settings.rayCount = options.aoRays;
   useSceneMaterials(settings, bake.scene);  // AO rays pass through masked texels
   attachVisibilityAttributes(bake.scene.meshes, bakeVertexVisibility(bake.scene.meshes, settings));
-  bake.env = computeEnvironmentStages(environment, options.stages);
+  bake.env = options.environmentStages ? *options.environmentStages : computeEnvironmentStages(*environment, options.stages);
   return bake;
 }
 

@@ -17,6 +17,9 @@ struct InMemoryBakeOptions {
   // The environment map, its rotation and intensity; unset: the scene's.
   EnvironmentOverride environment;
   EnvironmentStageOptions stages = kViewerEnvironmentStages;
+  // Given: these stages light the scene as they are (no map is loaded; `environment` and `stages`
+  // are unused): the viewer opening a model under the environment it already shows.
+  const EnvironmentStages* environmentStages = nullptr;
 };
 
 // Loads `sceneFile` (.json, .gltf or .glb), bakes its vertex visibility and its environment's

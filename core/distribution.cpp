@@ -64,17 +64,45 @@ PiecewiseConstant1D::PiecewiseConstant1D(std::span<const float> f) : f_(f.begin(
   guide_[n] = static_cast<int>(n);
 }
 
-PiecewiseConstant1D::Sample PiecewiseConstant1D::sample(float u) const {
-  u = std::clamp(u, 0.0f, kOneMinusEpsilon);
+int PiecewiseConstant1D::searchCell(float u) const {
   // The last cell whose CDF start is <= u: its CDF end is > u, so it has non-zero probability.
   // Searched between the guide entries one cell below and two above u's (a margin for the
   // rounding of u * n): every CDF value before the first is <= u and the one after the last is
   // > u, so the result is that of a search over the whole CDF.
+  const SearchRange range = searchRange(u);
+  const auto upper = std::upper_bound(cdf_.begin() + range.first, cdf_.begin() + range.last, u);
+  return std::clamp(static_cast<int>(upper - cdf_.begin()) - 1, 0, size() - 1);
+}
+
+PiecewiseConstant1D::SearchRange PiecewiseConstant1D::searchRange(float u) const {
   const int n = size(), g = cellOf(u, n);
   const int first = guide_[static_cast<std::size_t>(std::max(g - 1, 0))];
   const int last = std::min(guide_[static_cast<std::size_t>(std::min(g + 2, n))] + 2, n + 1);
-  const auto upper = std::upper_bound(cdf_.begin() + first, cdf_.begin() + last, u);
-  const int offset = std::clamp(static_cast<int>(upper - cdf_.begin()) - 1, 0, size() - 1);
+  return {first, last};
+}
+
+int PiecewiseConstant1D::prefetchSample(float u, int stage) const {
+  u = std::clamp(u, 0.0f, kOneMinusEpsilon);
+  if (stage <= 0) {
+    const int n = size(), g = cellOf(u, n);
+    __builtin_prefetch(&guide_[static_cast<std::size_t>(std::max(g - 1, 0))]);
+    __builtin_prefetch(&guide_[static_cast<std::size_t>(std::min(g + 2, n))]);
+    return -1;
+  }
+  if (stage == 1) {
+    const SearchRange range = searchRange(u);
+    __builtin_prefetch(&cdf_[static_cast<std::size_t>(range.first)]);
+    __builtin_prefetch(&cdf_[static_cast<std::size_t>(range.last - 1)]);
+    return -1;
+  }
+  const int offset = searchCell(u);
+  __builtin_prefetch(&f_[static_cast<std::size_t>(offset)]);
+  return offset;
+}
+
+PiecewiseConstant1D::Sample PiecewiseConstant1D::sample(float u) const {
+  u = std::clamp(u, 0.0f, kOneMinusEpsilon);
+  const int offset = searchCell(u);
   const float width = cdf_[offset + 1] - cdf_[offset];
   const float du = width > 0.0f ? std::min((u - cdf_[offset]) / width, kOneMinusEpsilon) : 0.0f;
   Sample s;
@@ -88,6 +116,8 @@ float PiecewiseConstant1D::pdf(float x) const {
   if (!(x >= 0.0f && x <= 1.0f)) return 0.0f;
   return integral_ > 0.0f ? f_[cellOf(x, size())] / integral_ : 1.0f;
 }
+
+void PiecewiseConstant1D::prefetchValue(float x) const { __builtin_prefetch(&f_[static_cast<std::size_t>(cellOf(x, size()))]); }
 
 float PiecewiseConstant1D::invert(float x) const {
   x = std::clamp(x, 0.0f, 1.0f);
@@ -138,6 +168,17 @@ PiecewiseConstant2D::Sample PiecewiseConstant2D::sample(glm::vec2 u) const {
   s.pdf = column.pdf * row.pdf;
   s.offset = {column.offset, row.offset};
   return s;
+}
+
+glm::ivec2 PiecewiseConstant2D::prefetchSample(glm::vec2 u, int stage) const {
+  const int row = marginal_.sample(u.y).offset;
+  const int column = conditional_[static_cast<std::size_t>(row)].prefetchSample(u.x, stage);
+  return column < 0 ? glm::ivec2(-1) : glm::ivec2(column, row);
+}
+
+void PiecewiseConstant2D::prefetchPdf(glm::vec2 p) const {
+  if (!(p.x >= 0.0f && p.x <= 1.0f && p.y >= 0.0f && p.y <= 1.0f)) return;
+  conditional_[static_cast<std::size_t>(cellOf(p.y, height()))].prefetchValue(p.x);
 }
 
 float PiecewiseConstant2D::pdf(glm::vec2 p) const {

@@ -33,13 +33,29 @@ class PiecewiseConstant1D {
   // it returns the CDF value at the cell's start.
   float invert(float x) const;
 
+  // Software prefetch ahead of sample(u), for a caller that draws many samples at once and wants
+  // their cache misses to overlap (the reference tracer's batches of paths): stage 0 brings in the
+  // guide entries sample(u) reads, stage 1 (once those are in cache) the CDF cells it searches,
+  // stage 2 (once those are) the function value of the cell it picks. Each stage reads only what
+  // the stage before brought in and changes nothing: sample(u) returns the same whatever was
+  // prefetched. Returns the cell at stage 2 (-1 before).
+  int prefetchSample(float u, int stage) const;
+
   int size() const { return static_cast<int>(f_.size()); }
   // The CDF at the cell boundaries: size() + 1 values from 0 to 1.
   std::span<const float> cdf() const { return cdf_; }
   // Integral of the function over [0, 1] (the mean of the values).
   float integral() const { return integral_; }
+  // Software prefetch of what pdf(x) reads, for x in [0, 1].
+  void prefetchValue(float x) const;
 
  private:
+  struct SearchRange {
+    int first = 0, last = 0;  // the CDF entries sample() searches, [first, last)
+  };
+  SearchRange searchRange(float u) const;  // u in [0, 1)
+  int searchCell(float u) const;           // the cell sample(u) picks, u in [0, 1)
+
   std::vector<float> f_;
   std::vector<float> cdf_;  // size() + 1 entries, cdf_[0] = 0, cdf_.back() = 1
   std::vector<int> guide_;  // size() + 1 entries: where sample() starts searching (see there)
@@ -63,6 +79,12 @@ class PiecewiseConstant2D {
   float pdf(glm::vec2 p) const;
   // The u with sample(u).p == p, for p in [0,1]^2.
   glm::vec2 invert(glm::vec2 p) const;
+  // PiecewiseConstant1D::prefetchSample for sample(u): the row is found from the marginal (small,
+  // assumed cached) at every stage, then the row's own stage is run. Returns the cell at stage 2,
+  // (-1, -1) before.
+  glm::ivec2 prefetchSample(glm::vec2 u, int stage) const;
+  // Software prefetch of what pdf(p) reads.
+  void prefetchPdf(glm::vec2 p) const;
 
   int width() const { return static_cast<int>(conditional_.front().size()); }
   int height() const { return marginal_.size(); }

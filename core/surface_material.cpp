@@ -6,91 +6,100 @@ namespace iblkit {
 
 namespace {
 
-// The lookups of one point's slots, gathered for one SceneTextures::sampleSlots call: a slot that
-// is off or has no texture gets none (its factors then stand alone), nor does one whose texture
-// has no chain in that colour space (an image that did not load: found stays false).
+// The lookups of one material's slots, gathered for a SceneTextures::SlotSet: a slot that is off
+// or has no texture gets none (its factors then stand alone), nor does one whose texture has no
+// chain in that colour space (an image that did not load: SlotSet::found is false).
 struct SlotLookups {
   SceneTextures::SlotLookup lookups[5];
   int count = 0;
   // The index of the slot's lookup, -1 for none. channels: the SceneTextures channel mask the slot
   // uses (the others are not read).
-  int add(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, unsigned channels,
-          const SurfaceInputs& inputs) {
-    if (!(inputs.slots & bit) || !ref.present()) return -1;
+  int add(const TextureRef& ref, unsigned bit, ColorSpace colorSpace, unsigned channels, unsigned slots) {
+    if (!(slots & bit) || !ref.present()) return -1;
     SceneTextures::SlotLookup& lookup = lookups[count];
     lookup.ref = &ref;
     lookup.colorSpace = colorSpace;
     lookup.channels = channels;
     return count++;
   }
-  // The slot's value, or nullptr when it has none.
-  const glm::vec4* value(int index) const {
-    return index >= 0 && lookups[index].found ? &lookups[index].value : nullptr;
-  }
 };
 
 }  // namespace
 
-SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTextures& textures,
-                                        const SurfaceInputs& inputs) {
-  SurfaceMaterial out;
-  Material& m = out.material;
-  // Every field but the name (copying a std::string could allocate, once per hit) and the texture
-  // refs (left cleared: the result is ready for the BRDF).
-  m.baseColor = material.baseColor;
-  m.metallic = material.metallic;
-  m.roughness = material.roughness;
-  m.specular = material.specular;
-  m.specularColor = material.specularColor;
-  m.emissive = material.emissive;
-  m.alpha = material.alpha;
-  m.normalScale = material.normalScale;
-  m.occlusionStrength = material.occlusionStrength;
-  m.alphaMode = material.alphaMode;
-  m.alphaCutoff = material.alphaCutoff;
-  m.doubleSided = material.doubleSided;
+PreparedSurfaceMaterial::PreparedSurfaceMaterial(const Material& material, const SceneTextures& textures,
+                                                 unsigned slots) {
+  factors_.baseColor = material.baseColor;
+  factors_.metallic = material.metallic;
+  factors_.roughness = material.roughness;
+  factors_.specular = material.specular;
+  factors_.specularColor = material.specularColor;
+  factors_.emissive = material.emissive;
+  factors_.alpha = material.alpha;
+  normalScale_ = material.normalScale;
+  occlusionStrength_ = material.occlusionStrength;
+  SlotLookups lookups;
+  base_ = lookups.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kRgba, slots);
+  metallicRoughness_ = lookups.add(material.metallicRoughnessTexture, kSlotMetallicRoughness, ColorSpace::Linear,
+                                   SceneTextures::kGreenBlue, slots);
+  occlusion_ =
+      lookups.add(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, SceneTextures::kRed, slots);
+  emissive_ = lookups.add(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, SceneTextures::kRgb, slots);
+  normal_ = lookups.add(material.normalTexture, kSlotNormal, ColorSpace::Linear, SceneTextures::kRgb, slots);
+  lookups_ = SceneTextures::SlotSet(textures, lookups.lookups, lookups.count);
+  for (int* slot : {&base_, &metallicRoughness_, &occlusion_, &emissive_, &normal_})
+    if (*slot >= 0 && !lookups_.found(*slot)) *slot = -1;
+}
+
+SurfaceMaterial PreparedSurfaceMaterial::evaluate(const SurfaceInputs& inputs) const {
+  SurfaceMaterial out = factors_;
   out.normal = inputs.normal;
-  SlotLookups slots;
-  const int base =
-      slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kRgba, inputs);
-  const int metallicRoughness = slots.add(material.metallicRoughnessTexture, kSlotMetallicRoughness,
-                                          ColorSpace::Linear, SceneTextures::kGreenBlue, inputs);
-  const int occlusion =
-      slots.add(material.occlusionTexture, kSlotOcclusion, ColorSpace::Linear, SceneTextures::kRed, inputs);
-  const int emissive =
-      slots.add(material.emissiveTexture, kSlotEmissive, ColorSpace::Srgb, SceneTextures::kRgb, inputs);
+  // The normal texture only with a tangent frame.
   const bool tangent = inputs.tangent.x != 0.0f || inputs.tangent.y != 0.0f || inputs.tangent.z != 0.0f;
-  const int normal = tangent ? slots.add(material.normalTexture, kSlotNormal, ColorSpace::Linear,
-                                         SceneTextures::kRgb, inputs)
-                             : -1;
-  textures.sampleSlots(slots.lookups, slots.count, inputs.texcoords, inputs.footprintUv);
+  const int normal = tangent ? normal_ : -1;
+  unsigned active = ~0u;
+  if (normal_ >= 0 && normal < 0) active &= ~(1u << normal_);
+  glm::vec4 values[5];
+  lookups_.sample(inputs.texcoords, inputs.footprintUv, values, active);
   // glTF 2.0 section 3.9.2: base colour and its alpha are factor times the (decoded) texel.
-  if (const glm::vec4* value = slots.value(base)) {
-    m.baseColor *= glm::vec3(*value);
-    m.alpha *= value->a;
+  if (base_ >= 0) {
+    out.baseColor *= glm::vec3(values[base_]);
+    out.alpha *= values[base_].a;
   }
-  out.alpha = m.alpha;
   // Section 3.9.2: roughness in G, metallic in B.
-  if (const glm::vec4* value = slots.value(metallicRoughness)) {
-    m.roughness *= value->g;
-    m.metallic *= value->b;
+  if (metallicRoughness_ >= 0) {
+    out.roughness *= values[metallicRoughness_].g;
+    out.metallic *= values[metallicRoughness_].b;
   }
   // Section 3.9.3: occlusion = 1 + strength (R - 1).
-  if (const glm::vec4* value = slots.value(occlusion))
-    out.occlusion = 1.0f + material.occlusionStrength * (value->r - 1.0f);
+  if (occlusion_ >= 0) out.occlusion = 1.0f + occlusionStrength_ * (values[occlusion_].r - 1.0f);
   // Section 3.9.3: emissive = factor times the sRGB-decoded texel.
-  if (const glm::vec4* value = slots.value(emissive)) m.emissive *= glm::vec3(*value);
-  if (const glm::vec4* value = slots.value(normal))
-    out.normal = perturbNormal(inputs.normal, inputs.tangent, glm::vec3(*value), material.normalScale);
+  if (emissive_ >= 0) out.emissive *= glm::vec3(values[emissive_]);
+  if (normal >= 0) out.normal = perturbNormal(inputs.normal, inputs.tangent, glm::vec3(values[normal]), normalScale_);
   return out;
+}
+
+SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTextures& textures,
+                                        const SurfaceInputs& inputs) {
+  return PreparedSurfaceMaterial(material, textures, inputs.slots).evaluate(inputs);
+}
+
+BrdfLobes brdfLobes(const SurfaceMaterial& surface) {
+  // brdfLobes(Material) reads (and clamps) just these factors.
+  Material factors;
+  factors.baseColor = surface.baseColor;
+  factors.metallic = surface.metallic;
+  factors.roughness = surface.roughness;
+  factors.specular = surface.specular;
+  factors.specularColor = surface.specularColor;
+  return brdfLobes(factors);
 }
 
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs) {
   SlotLookups slots;
   const int base =
-      slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kAlpha, inputs);
+      slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kAlpha, inputs.slots);
   textures.sampleSlots(slots.lookups, slots.count, inputs.texcoords, inputs.footprintUv);
-  if (const glm::vec4* value = slots.value(base)) return material.alpha * value->a;
+  if (base >= 0 && slots.lookups[base].found) return material.alpha * slots.lookups[base].value.a;
   return material.alpha;
 }
 

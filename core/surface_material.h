@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/brdf.h"
 #include "core/material.h"
 #include "core/texture_sampling.h"
 
@@ -26,10 +27,16 @@ struct SurfaceInputs {
 };
 
 struct SurfaceMaterial {
-  // The factors with the textures applied: baseColor = factor * texture.rgb, metallic = factor *
-  // texture.b, roughness = factor * texture.g, emissive = factor * texture.rgb, alpha = factor *
-  // texture.a; texture refs cleared. Ready for brdfLobes / BrdfAtPoint.
-  Material material;
+  // The factors with the textures applied (glTF 2.0 section 3.9): baseColor = factor * texture.rgb,
+  // metallic = factor * texture.b, roughness = factor * texture.g, emissive = factor *
+  // texture.rgb, alpha = factor * texture.a; specular and specularColor are the material's
+  // (KHR_materials_specular's textures are not read). Ready for brdfLobes(SurfaceMaterial).
+  glm::vec3 baseColor{1.0f};
+  float metallic = 1.0f;
+  float roughness = 1.0f;
+  float specular = 1.0f;
+  glm::vec3 specularColor{1.0f};
+  glm::vec3 emissive{0.0f};
   float alpha = 1.0f;
   float occlusion = 1.0f;  // 1 + strength (R - 1); the reference ignores it (it traces the truth)
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit shading normal: the perturbed normal, or the input's
@@ -37,6 +44,30 @@ struct SurfaceMaterial {
 
 SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTextures& textures,
                                         const SurfaceInputs& inputs);
+
+// evaluateSurfaceMaterial for one material and one set of slots, prepared once: the slots'
+// lookups resolved against the scene's textures (SceneTextures::SlotSet), for a caller that
+// evaluates the material at many points (the tracer: one per material). evaluate(inputs) is
+// evaluateSurfaceMaterial(material, textures, inputs) with inputs.slots = `slots`, bit for bit
+// (evaluateSurfaceMaterial prepares one per call). It points into `textures`, which must outlive it.
+class PreparedSurfaceMaterial {
+ public:
+  PreparedSurfaceMaterial() = default;
+  PreparedSurfaceMaterial(const Material& material, const SceneTextures& textures, unsigned slots);
+  // inputs.slots is not read: the slots are the ones prepared.
+  SurfaceMaterial evaluate(const SurfaceInputs& inputs) const;
+
+ private:
+  SurfaceMaterial factors_;  // the material's factors (the normal is the input's)
+  float normalScale_ = 1.0f, occlusionStrength_ = 1.0f;
+  SceneTextures::SlotSet lookups_;
+  // Each slot's lookup in lookups_, -1 for none (off, no texture, or no chain).
+  int base_ = -1, metallicRoughness_ = -1, occlusion_ = -1, emissive_ = -1, normal_ = -1;
+};
+
+// The BRDF lobes at a point (brdfLobes of its textured factors, clamped to the glTF ranges as
+// brdfLobes(Material) clamps a material's).
+BrdfLobes brdfLobes(const SurfaceMaterial& surface);
 
 // The base colour alpha only (factor times texture alpha), for alpha tests in ray filters.
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs);

@@ -424,6 +424,24 @@ bool sameTransform(const TextureTransform& a, const TextureTransform& b) {
   return std::memcmp(&a, &b, sizeof(TextureTransform)) == 0;
 }
 
+// The level of detail of a lookup from its terms: textureLod's log2(footprint * sqrt(width *
+// height)) as a sum of logs (equal up to rounding), log2FootprintUv + log2Size, plus log2Scale
+// when the transform scales (`scaled`): it scales the footprint as it scales uv (isotropically:
+// the geometric mean, log2TransformScale). -inf for -inf + inf (a zero footprint).
+float lodFromTerms(float log2FootprintUv, float log2Size, bool scaled, float log2Scale) {
+  float lod = log2FootprintUv + log2Size;
+  if (scaled) lod += log2Scale;
+  if (lod != lod) lod = -std::numeric_limits<float>::infinity();
+  return lod;
+}
+bool scalesFootprint(const TextureTransform& transform) {
+  return transform.scale.x != 1.0f || transform.scale.y != 1.0f;
+}
+float log2TransformScale(const TextureTransform& transform) {
+  const float area = std::abs(transform.scale.x * transform.scale.y);
+  return area > 0.0f ? 0.5f * std::log2(area) : -std::numeric_limits<float>::infinity();
+}
+
 // KHR_texture_transform without building the matrix (no trigonometry for the common unrotated
 // case); the same arithmetic as TextureTransform::matrix().
 glm::vec2 applyTransform(const TextureTransform& transform, glm::vec2 uv) {
@@ -580,16 +598,8 @@ int SceneTextures::chainIndex(const TextureRef& ref, ColorSpace colorSpace) cons
 }
 
 float SceneTextures::slotLod(const TextureRef& ref, int chain, float log2FootprintUv) const {
-  // textureLod's log2(footprint * sqrt(width * height)) as a sum of logs (equal up to rounding).
-  // The transform scales the footprint as it scales uv (isotropically: the geometric mean).
-  float lod = log2FootprintUv + chainLog2Size_[chain];
-  const glm::vec2 scale = ref.transform.scale;
-  if (scale.x != 1.0f || scale.y != 1.0f) {
-    const float area = std::abs(scale.x * scale.y);
-    lod += area > 0.0f ? 0.5f * std::log2(area) : -std::numeric_limits<float>::infinity();
-  }
-  if (lod != lod) lod = -std::numeric_limits<float>::infinity();  // -inf + inf: a zero footprint
-  return lod;
+  const bool scaled = scalesFootprint(ref.transform);
+  return lodFromTerms(log2FootprintUv, chainLog2Size_[chain], scaled, scaled ? log2TransformScale(ref.transform) : 0.0f);
 }
 
 bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm::vec2 uv,
@@ -609,52 +619,91 @@ bool SceneTextures::trySample(const TextureRef& ref, ColorSpace colorSpace, glm:
   return true;
 }
 
-void SceneTextures::sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2],
-                                const float footprintUv[2]) const {
-  constexpr int kSharedPlans = 5;  // one per glTF slot
+SceneTextures::SlotSet::SlotSet(const SceneTextures& textures, const SlotLookup* lookups, int count) {
+  count = std::min(count, kMaxLookups);
+  // Each lookup's group: a later one of the same layout (SceneTextures::Entry), uv set and
+  // transform (so the same transformed uv and lod) joins an earlier one's.
+  int groupOf[kMaxLookups];
+  int ref[kMaxLookups];  // lookups[l]'s chain index, -1 for none
+  for (int l = 0; l < count; ++l) {
+    const TextureRef& r = *lookups[l].ref;
+    ref[l] = textures.chainIndex(r, lookups[l].colorSpace);
+    groupOf[l] = -1;
+    if (ref[l] < 0) continue;
+    found_ |= 1u << l;
+    const Entry& entry = textures.textures_[r.texture];
+    const int set = r.texCoord == 1 ? 1 : 0;
+    for (int g = 0; g < groupCount_ && groupOf[l] < 0; ++g) {
+      const Group& candidate = groups_[g];
+      if (candidate.layout == entry.layout && candidate.set == set && sameTransform(candidate.transform, r.transform))
+        groupOf[l] = g;
+    }
+    if (groupOf[l] >= 0) continue;
+    Group& made = groups_[groupCount_];
+    groupOf[l] = groupCount_++;
+    made.set = set;
+    made.transform = r.transform;
+    made.sampler = entry.sampler;
+    made.sizes = &textures.chains_[static_cast<std::size_t>(ref[l])];
+    made.log2Size = textures.chainLog2Size_[static_cast<std::size_t>(ref[l])];
+    made.scaled = scalesFootprint(r.transform);
+    if (made.scaled) made.log2Scale = log2TransformScale(r.transform);
+    made.layout = entry.layout;
+  }
+  // The slots in group order.
+  int slots = 0;
+  for (int g = 0; g < groupCount_; ++g) {
+    Group& group = groups_[g];
+    group.first = slots;
+    for (int l = 0; l < count; ++l) {
+      if (groupOf[l] != g) continue;
+      Slot& slot = slots_[slots++];
+      slot.chain = &textures.chains_[static_cast<std::size_t>(ref[l])];
+      slot.channels = lookups[l].channels;
+      slot.lookup = l;
+      group.lookups |= 1u << l;
+    }
+    group.count = slots - group.first;
+  }
+}
+
+void SceneTextures::SlotSet::sample(const glm::vec2 texcoords[2], const float footprintUv[2], glm::vec4* values,
+                                    unsigned active) const {
   const DecodeTables& decode = tables();
-  // The lookups planned so far: a later one of the same layout (SceneTextures::Entry), uv set and
-  // transform (so the same transformed uv and lod) reuses the plan.
-  struct Planned {
-    int layout, set;
-    const TextureTransform* transform;
-    glm::vec2 uv;
-    LookupPlan plan;
-  };
-  Planned planned[kSharedPlans], unshared;
-  int plans = 0;
   float log2Footprints[2];
   bool haveLog2[2] = {false, false};
-  for (int l = 0; l < count; ++l) {
-    SlotLookup& lookup = lookups[l];
-    const TextureRef& ref = *lookup.ref;
-    const int index = chainIndex(ref, lookup.colorSpace);
-    lookup.found = index >= 0;
-    if (index < 0) continue;
-    const MipChain& chain = chains_[index];
-    const Entry& entry = textures_[ref.texture];
-    const int set = ref.texCoord == 1 ? 1 : 0;
-    const Planned* shared = nullptr;
-    for (int p = 0; p < plans && !shared; ++p) {
-      const Planned& candidate = planned[p];
-      if (candidate.layout == entry.layout && candidate.set == set &&
-          sameTransform(*candidate.transform, ref.transform))
-        shared = &candidate;
+  for (int g = 0; g < groupCount_; ++g) {
+    const Group& group = groups_[g];
+    if (!(group.lookups & active)) continue;
+    const int set = group.set;
+    if (!haveLog2[set]) {
+      log2Footprints[set] = log2Footprint(footprintUv[set]);
+      haveLog2[set] = true;
     }
-    if (!shared) {
-      if (!haveLog2[set]) {
-        log2Footprints[set] = log2Footprint(footprintUv[set]);
-        haveLog2[set] = true;
-      }
-      Planned& made = plans < kSharedPlans ? planned[plans++] : unshared;
-      made.layout = entry.layout;
-      made.set = set;
-      made.transform = &ref.transform;
-      made.uv = applyTransform(ref.transform, texcoords[set]);
-      made.plan = planLookup(chain, entry.sampler, made.uv, slotLod(ref, index, log2Footprints[set]));
-      shared = &made;
+    const float lod = lodFromTerms(log2Footprints[set], group.log2Size, group.scaled, group.log2Scale);
+    const glm::vec2 uv = applyTransform(group.transform, texcoords[set]);
+    const LookupPlan plan = planLookup(*group.sizes, group.sampler, uv, lod);
+    for (int s = group.first; s < group.first + group.count; ++s) {
+      const Slot& slot = slots_[s];
+      if (!((active >> slot.lookup) & 1u)) continue;
+      runLookupChannels(slot.channels, *slot.chain, decode, group.sampler, uv, plan, values[slot.lookup]);
     }
-    runLookupChannels(lookup.channels, chain, decode, entry.sampler, shared->uv, shared->plan, lookup.value);
+  }
+}
+
+void SceneTextures::sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2],
+                                const float footprintUv[2]) const {
+  for (int begin = 0; begin < count; begin += SlotSet::kMaxLookups) {
+    const int n = std::min(count - begin, SlotSet::kMaxLookups);
+    SlotLookup* chunk = lookups + begin;
+    const SlotSet set(*this, chunk, n);
+    glm::vec4 values[SlotSet::kMaxLookups];
+    for (int l = 0; l < n; ++l) values[l] = chunk[l].value;
+    set.sample(texcoords, footprintUv, values);
+    for (int l = 0; l < n; ++l) {
+      chunk[l].found = set.found(l);
+      chunk[l].value = values[l];
+    }
   }
 }
 

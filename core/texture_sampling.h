@@ -122,6 +122,51 @@ class SceneTextures {
   void sampleSlots(SlotLookup* lookups, int count, const glm::vec2 texcoords[2],
                    const float footprintUv[2]) const;
 
+  // sampleSlots' lookups worked out once, for a caller that reads the same slots at many points
+  // (the tracer: one set per material): each lookup's chain, and which lookups share a plan (the
+  // same uv set, transform and layout), found when the set is made rather than at every point;
+  // the lod's per-texture and per-transform terms precomputed. sample() gives sampleSlots' values
+  // bit for bit (sampleSlots makes a set per call). It points into the SceneTextures it was made
+  // from, which must outlive it (and not be copied over or moved from).
+  class SlotSet {
+   public:
+    static constexpr int kMaxLookups = 8;
+    SlotSet() = default;
+    // lookups[0, count) (their ref, colorSpace and channels; count <= kMaxLookups). The refs are
+    // copied: they need not outlive the set.
+    SlotSet(const SceneTextures& textures, const SlotLookup* lookups, int count);
+    // Whether lookup l names a chain (sampleSlots' `found`).
+    bool found(int l) const { return (found_ >> l) & 1u; }
+    // sampleSlots' value of each found lookup l whose bit (1 << l) is set in `active`, written to
+    // values[l]; other values are left as they are.
+    void sample(const glm::vec2 texcoords[2], const float footprintUv[2], glm::vec4* values,
+                unsigned active = ~0u) const;
+
+   private:
+    // Lookups sharing one plan: the uv set, transform, sampler and level sizes.
+    struct Group {
+      int set = 0;
+      TextureTransform transform;
+      TextureSampler sampler;
+      const MipChain* sizes = nullptr;  // the first lookup's chain (the group's level sizes)
+      float log2Size = 0.0f;            // log2(sqrt(width * height)) of level 0
+      bool scaled = false;              // the transform scales: lod += log2Scale (slotLod)
+      float log2Scale = 0.0f;
+      int layout = -1;       // SceneTextures::Entry::layout
+      unsigned lookups = 0;  // bits of the group's lookups
+      int first = 0, count = 0;  // its slots in slots_
+    };
+    struct Slot {
+      const MipChain* chain = nullptr;
+      unsigned channels = kRgba;
+      int lookup = 0;
+    };
+    Group groups_[kMaxLookups];
+    Slot slots_[kMaxLookups];
+    int groupCount_ = 0;
+    unsigned found_ = 0;
+  };
+
  private:
   struct Entry {
     TextureSampler sampler;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tone_curve_constants.h"
+
 namespace iblkit {
 
 namespace {
@@ -12,7 +14,8 @@ namespace {
 // for any finite float; the fit passes 1 near x = 7.25 and tends to a/c = 1.033, hence the clamp.
 float acesFitted(float x) {
   const double v = x;
-  const double mapped = (v * (2.51 * v + 0.03)) / (v * (2.43 * v + 0.59) + 0.14);
+  const AcesFitCoefficients& k = kAcesFitted;
+  const double mapped = (v * (k.a * v + k.b)) / (v * (k.c * v + k.d) + k.e);
   return static_cast<float>(std::min(mapped, 1.0));
 }
 
@@ -36,7 +39,7 @@ float applyToneCurve(float x, ToneCurve curve) {
 float srgbEncode(float linear) {
   // IEC 61966-2-1:1999, section 5.2: linear segment below 0.0031308, then a 1/2.4 power.
   const float x = linear > 0.0f ? std::min(linear, 1.0f) : 0.0f;
-  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+  return x <= kSrgbLinearLimit ? kSrgbSlope * x : kSrgbScale * std::pow(x, 1.0f / kSrgbGamma) - kSrgbOffset;
 }
 
 float srgbDecode(float encoded) {

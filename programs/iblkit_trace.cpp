@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli/program.h"
+#include "cli/scene_arguments.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/scene.h"
@@ -28,9 +29,9 @@ namespace iblkit {
 namespace {
 
 struct Options {
-  std::filesystem::path scene, output, png;
+  SceneArguments scene;  // SCENE and --env, --env-rotation, --env-intensity
+  std::filesystem::path output, png;
   std::filesystem::path albedo, normal, depth, variance, mask, bentNormal;
-  EnvironmentOverride environment;
   bool misCompensation = false;
   std::string integrator = "path", envSampling = "mis", filter = "box";
   int maxDepth = 16;
@@ -81,7 +82,7 @@ int run(const Options& options, const CLI::App& app) {
   if (!(options.textureFootprint >= 0.0f)) failUsage("--texture-footprint", "must be >= 0 (pixels)");
   if (!(options.timeSeconds >= 0.0) || !std::isfinite(options.timeSeconds))
     failUsage("--time", "must be a finite number of seconds >= 0");
-  checkEnvironmentOverride(options.environment);
+  checkSceneArguments(options.scene);
   IntegratorSettings integratorSettings;
   integratorSettings.kind = parseIntegratorKind(options.integrator);
   integratorSettings.envSampling = parseEnvSampling(options.envSampling);
@@ -109,9 +110,9 @@ int run(const Options& options, const CLI::App& app) {
                            &options.variance, &options.mask, &options.bentNormal})
     checkOutputFolder(*file);
 
-  Scene scene = loadScene(options.scene);
+  Scene scene = loadScene(options.scene.input);
   // No output may replace the scene, a model or the map (nor a device node).
-  checkOutputs(sceneInputs(scene, options.environment),
+  checkOutputs(sceneInputs(scene, options.scene.environment),
                {options.output, options.png, options.albedo, options.normal, options.depth, options.variance,
                 options.mask, options.bentNormal});
   RenderSettings settings;
@@ -124,10 +125,10 @@ int run(const Options& options, const CLI::App& app) {
   settings.filter = filter;
   settings.textureFootprint = options.textureFootprint;
 
-  const EnvironmentMap environment = loadSceneEnvironment(scene, options.environment);
+  const EnvironmentMap environment = loadSceneEnvironment(scene, options.scene.environment);
   const EnvironmentSampler environmentSampler(environment, options.misCompensation);
   if (environmentSampler.isBlack())
-    warn(overriddenEnvironment(scene.environment, options.environment).file,
+    warn(overriddenEnvironment(scene.environment, options.scene.environment).file,
          "environment is black everywhere: only emission will show");
 
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
@@ -173,7 +174,7 @@ int main(int argc, char** argv) {
   using namespace iblkit;
   Options options;
   CLI::App app{"Reference path tracer (Embree): renders a scene under its environment map", "iblkit-trace"};
-  app.add_option("scene", options.scene, "scene (.json, .gltf or .glb)")->required();
+  addSceneArguments(app, options.scene, "scene", "scene (.json), or a .gltf/.glb model lit by --env");
   app.add_option("-o,--output", options.output, "beauty image, OpenEXR float RGB")->required();
   app.add_option("--png", options.png, "PNG preview (tone-mapped, sRGB)");
   app.add_option("--exposure", options.exposure, "PNG exposure in stops");
@@ -204,7 +205,6 @@ int main(int argc, char** argv) {
                  "camera ray cone spread in pixels (texture level of detail; 0.5 = the report's 2x2 "
                  "supersampled engine frame, 0 = finest level)")
       ->check(finiteNumber());
-  addEnvironmentOptions(app, options.environment);
   addNameOption(app, "--integrator", options.integrator, kIntegratorNames, "integrator");
   addNameOption(app, "--env-sampling", options.envSampling, kEnvSamplingNames, "strategy");
   // gaussian: sigma 0.5 px, radius 1.5 px (reference/pixel_filter.h).

@@ -1,11 +1,12 @@
 // iblkit-view: the real-time engine's program (docs/engine.md).
 //
-//   iblkit-view OUTDIR|SCENE --headless -o IMAGE [--width W] [--height H] [--mode M]
+//   iblkit-view OUTDIR|SCENE|MODEL --headless -o IMAGE [--env MAP] [--env-intensity X] [--width W] [--height H] [--mode M]
 //               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
 //               [--bench N] [--no-sky] [--ao-rays N] [--texture-slots LIST | --no-textures]
 //               [--anisotropy A] [--lights K] [--no-shadows]
 //
-// OUTDIR is an iblkit-bake folder; a .json/.gltf/.glb scene is baked in memory first. -o .exr
+// OUTDIR is an iblkit-bake folder; a .json scene or a .gltf/.glb model is baked in memory first,
+// under --env MAP when given (cli/scene_arguments.h: the same MODEL --env MAP as iblkit-trace). -o .exr
 // writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
 // Without --headless the window viewer runs (engine/view/viewer.h, docs/viewer.md):
 //
@@ -26,10 +27,12 @@
 #include "baker/bake_in_memory.h"
 #include "baker/environment_stages.h"
 #include "cli/program.h"
+#include "cli/scene_arguments.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/scene_environment.h"
 #include "core/usage_error.h"
+#include "bakefile/bake_folder.h"
 #include "engine/gl/drawn_lights.h"
 #include "engine/gl/gl_debug.h"
 #include "engine/gl/headless_context.h"
@@ -49,12 +52,13 @@ namespace fs = std::filesystem;
 constexpr const char* kProgram = "iblkit-view";
 
 struct Options {
-  fs::path input, output, normalOutput, depthOutput;
+  SceneArguments scene;  // OUTDIR|SCENE|MODEL, --env, --env-rotation, --env-intensity
+  fs::path output, normalOutput, depthOutput;
   bool headless = false;
   int width = 0, height = 0;  // 0: the scene's size
   std::string mode = "full";  // or "all" with --bench
   float exposure = 0.0f;
-  std::optional<float> envRotation;  // absolute; unset: the bake's
+  bool exposureGiven = false;  // --exposure given: the window's exposure starts locked there
   int samples = 1;
   bool sampleShading = false;
   int supersample = 1;
@@ -67,8 +71,9 @@ struct Options {
   int lights = -1;  // --lights K; < 0: all the suns
   bool noShadows = false;
   // The window viewer's.
-  std::filesystem::path envDir, environment, reference, screenshot;
+  std::filesystem::path envDir, reference, screenshot;
   std::string compare = "split";
+  std::vector<fs::path> open;  // --open: as if dropped onto the window
   int frames = 0;
   bool noPanel = false;
 };
@@ -90,12 +95,25 @@ void requireExtension(const fs::path& file, std::initializer_list<const char*> a
   fail(file, "unsupported output format (expected " + list + ")");
 }
 
-// A scene given instead of a bake folder is baked in memory with `aoRays` visibility rays per
-// vertex and the viewer's environment stages.
-InMemoryBakeOptions inMemoryBake(int aoRays) {
-  InMemoryBakeOptions options;
-  options.aoRays = aoRays;
-  return options;
+// A bake folder, or a scene or model baked in memory with `aoRays` visibility rays per vertex and
+// the viewer's environment stages, under `environment` (the scene's map when it names none). A
+// bake folder given another map (--env) has that map's stages prefiltered here, at the override's
+// rotation and intensity, else the bake's.
+BakedScene loadViewScene(const fs::path& input, const EnvironmentOverride& environment, int aoRays) {
+  if (isSceneFile(input)) {
+    InMemoryBakeOptions options;
+    options.aoRays = aoRays;
+    options.environment = environment;
+    return bakeInMemory(input, options);
+  }
+  if (environment.intensity && environment.file.empty())
+    failUsage("--env-intensity", "with a bake folder, only together with --env (its stages hold the bake's intensity)");
+  BakedScene bake = readBakeFolder(input);
+  if (environment.file.empty()) return bake;
+  const EnvironmentSettings settings{environment.file, environment.rotationDegrees.value_or(bake.env.rotationDegrees),
+                                     environment.intensity.value_or(bake.env.intensity)};
+  bake.env = computeEnvironmentStages(loadEnvironment(settings, environment.format), kViewerEnvironmentStages);
+  return bake;
 }
 
 double median(std::vector<double> values) {
@@ -177,12 +195,12 @@ int runHeadless(const Options& options) {
   settings.lightCount = options.lights;
   settings.shadows = !options.noShadows;
 
-  const BakedScene bake = loadOrBakeScene(options.input, inMemoryBake(options.aoRays));
+  const BakedScene bake = loadViewScene(options.scene.input, options.scene.environment, options.aoRays);
   // No image may replace the bake folder's files, the scene, a model or the map.
-  std::vector<fs::path> inputs = sceneInputs(bake.scene);
-  inputs.push_back(options.input);
+  std::vector<fs::path> inputs = sceneInputs(bake.scene, options.scene.environment);
+  inputs.push_back(options.scene.input);
   checkOutputs(inputs, {options.output, options.normalOutput, options.depthOutput});
-  settings.envRotationDegrees = envRotationFromBake(bake.env, options.envRotation);
+  settings.envRotationDegrees = envRotationFromBake(bake.env, options.scene.environment.rotationDegrees);
   const int width = options.width > 0 ? options.width : bake.scene.width;
   const int height = options.height > 0 ? options.height : bake.scene.height;
 
@@ -254,29 +272,46 @@ int runWindow(const Options& options) {
     failUsage("--normal/--depth", "only with --headless");
   if (!options.screenshot.empty()) {
     const ScreenshotFiles files = screenshotFiles(options.screenshot);
-    checkOutputs({options.input, options.environment, options.reference}, {files.exr, files.png});
+    checkOutputs({options.scene.input, options.scene.environment.file, options.reference}, {files.exr, files.png});
   }
   ViewerOptions viewer;
-  viewer.input = options.input;
+  viewer.input = options.scene.input;
   viewer.width = options.width;
   viewer.height = options.height;
   viewer.mode = options.mode;
   viewer.exposure = options.exposure;
-  viewer.envRotation = options.envRotation;
+  viewer.autoExposure = !options.exposureGiven;
+  viewer.open = options.open;
+  viewer.envRotation = options.scene.environment.rotationDegrees;
   viewer.samples = options.samples;
   viewer.noSky = options.noSky;
   viewer.textureSlots = options.noTextures ? 0u : parseTextureSlots(options.textureSlots);
   viewer.anisotropy = options.anisotropy;
   viewer.lightCount = options.lights;
   viewer.shadows = !options.noShadows;
-  viewer.loadScene = [aoRays = options.aoRays](const fs::path& input) {
-    return loadOrBakeScene(input, inMemoryBake(aoRays));
+  // A bake folder with --env alone starts with the bake's map and switches on the worker (the
+  // window opens at once); a scene or model is baked under the map before the window opens.
+  EnvironmentOverride environment = options.scene.environment;
+  if (!isSceneFile(options.scene.input) && !environment.intensity) {
+    viewer.environment = environment.file;
+    environment.file.clear();
+  }
+  viewer.loadScene = [aoRays = options.aoRays, environment](const fs::path& input, const EnvironmentStages* current) {
+    if (!current) return loadViewScene(input, environment, aoRays);
+    // Opened from the window: a bare model under the environment shown, a scene under its own map.
+    const std::string extension = lowerExtension(input);
+    if (isSceneFile(input) && (extension == ".gltf" || extension == ".glb")) {
+      InMemoryBakeOptions options;
+      options.aoRays = aoRays;
+      options.environmentStages = current;
+      return bakeInMemory(input, options);
+    }
+    return loadViewScene(input, {}, aoRays);
   };
   viewer.prepareEnvironment = [](const EnvironmentMap& map) {
     return computeEnvironmentStages(map, kViewerEnvironmentStages);
   };
   viewer.envDir = options.envDir.empty() ? defaultEnvironmentFolder() : options.envDir;
-  viewer.environment = options.environment;
   viewer.reference = options.reference;
   viewer.compare = options.compare;
   viewer.frames = options.frames;
@@ -287,11 +322,10 @@ int runWindow(const Options& options) {
 
 void rejectWindowFlagsWhenHeadless(const Options& options) {
   if (!options.headless) return;
-  if (options.frames > 0 || !options.screenshot.empty() || !options.environment.empty() || !options.reference.empty() || !options.envDir.empty() ||
-      options.noPanel)
+  if (options.frames > 0 || !options.screenshot.empty() || !options.reference.empty() || !options.envDir.empty() ||
+      options.noPanel || !options.open.empty())
     throw UsageError(
-        "--frames, --screenshot, --env, --env-dir, --reference and --no-panel are for the window, not "
-        "--headless");
+        "--frames, --screenshot, --env-dir, --reference, --open and --no-panel are for the window, not --headless");
 }
 
 }  // namespace
@@ -301,8 +335,8 @@ int main(int argc, char** argv) {
   using namespace iblkit;
   Options options;
   CLI::App app{"Renders a baked scene in real time (OpenGL 4.5), in a window or headless.", kProgram};
-  app.add_option("input", options.input, "iblkit-bake output folder, or a .json/.gltf/.glb scene")
-      ->required();
+  addSceneArguments(app, options.scene, "input",
+                    "iblkit-bake output folder, a .json scene, or a .gltf/.glb model lit by --env");
   app.add_flag("--headless", options.headless, "render offscreen through EGL and write -o");
   app.add_option("-o,--output", options.output,
                  "output image: .exr (linear float RGBA) or .png (tone-mapped)");
@@ -314,9 +348,10 @@ int main(int argc, char** argv) {
   app.add_option("--mode", options.mode, "shading mode (all: every mode, --bench)")
       ->check(nameChoice(modeChoices, "shading mode"))
       ->capture_default_str();
-  app.add_option("--exposure", options.exposure, "exposure in stops (PNG and display)")
+  app.add_option("--exposure", options.exposure,
+                 "exposure in stops (PNG and display); the window's is automatic unless this is given (it then "
+                 "starts locked)")
       ->capture_default_str();
-  app.add_option("--env-rotation", options.envRotation, "rotation about +Y, degrees (replaces the bake's)");
   app.add_flag("--sample-shading", options.sampleShading,
                "shade every MSAA sample (supersampling: the pixel's shading is averaged, as the reference does)");
   app.add_option("--supersample", options.supersample,
@@ -349,8 +384,6 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--env-dir", options.envDir,
                  "window: folder of environment maps to switch between (default: assets/hdri)");
-  app.add_option("--env", options.environment,
-                 "window: switch to this environment map at start (prefiltered while the bake's shows)");
   app.add_option("--reference", options.reference,
                  "window: path-traced reference (.exr) shown beside the live frame, or as a difference");
   addNameOption(app, "--compare", options.compare, kComparisonViewNames, "view",
@@ -360,6 +393,9 @@ int main(int argc, char** argv) {
   app.add_option("--screenshot", options.screenshot,
                  "window: at exit, write the last frame as FILE.exr (radiance) and FILE.png (the view)");
   app.add_flag("--no-panel", options.noPanel, "window: start with the panel hidden (Tab shows it)");
+  app.add_option("--open", options.open,
+                 "window: after the first frame, open these files as if dropped onto the window (a scene, model, "
+                 "map or bake folder)");
   return runProgram(app, argc, argv, [&] {
     rejectWindowFlagsWhenHeadless(options);
     if (options.noTextures && options.textureSlots != "all")
@@ -369,9 +405,8 @@ int main(int argc, char** argv) {
     } catch (const Error& e) {
       throw UsageError(e.what());  // a bad command line: status 2, like --mode's names
     }
-    EnvironmentOverride rotation;
-    rotation.rotationDegrees = options.envRotation;
-    checkEnvironmentOverride(rotation);
+    checkSceneArguments(options.scene);
+    options.exposureGiven = app.count("--exposure") > 0;
     return options.headless ? runHeadless(options) : runWindow(options);
   });
 }

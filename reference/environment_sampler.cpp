@@ -21,9 +21,19 @@ EnvironmentSampler::Sample EnvironmentSampler::sample(glm::vec2 u) const {
 
 float EnvironmentSampler::pdf(const glm::vec3& worldDirection) const { return lookup(worldDirection).pdf; }
 
-EnvironmentSampler::Lookup EnvironmentSampler::lookup(const glm::vec3& worldDirection) const {
-  const EnvironmentTexels::Location at = texels_.locate(worldDirection);
+EnvironmentSampler::Lookup EnvironmentSampler::lookupAt(glm::vec2 uv) const {
+  const EnvironmentTexels::Location at = texels_.locateUv(uv);
   return {at.radiance, texels_.solidAnglePdf(distribution_.pdf(at.uv), at.texel.y)};
+}
+
+void EnvironmentSampler::prefetchSample(glm::vec2 u, int stage) const {
+  const glm::ivec2 cell = distribution_.prefetchSample(u, stage);
+  if (cell.x >= 0) texels_.prefetchAround(cell);
+}
+
+void EnvironmentSampler::prefetchLookup(glm::vec2 uv) const {
+  distribution_.prefetchPdf(uv);
+  texels_.prefetchAround(texels_.texelAt(uv));
 }
 
 }  // namespace iblkit

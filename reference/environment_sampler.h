@@ -47,7 +47,19 @@ class EnvironmentSampler {
     glm::vec3 radiance{0.0f};
     float pdf = 0.0f;
   };
-  Lookup lookup(const glm::vec3& worldDirection) const;
+  Lookup lookup(const glm::vec3& worldDirection) const { return lookupAt(mapUv(worldDirection)); }
+  // The lat-long coordinates lookup(w) finds w at, and lookup(w) from them.
+  glm::vec2 mapUv(const glm::vec3& worldDirection) const { return texels_.mapUv(worldDirection); }
+  Lookup lookupAt(glm::vec2 uv) const;
+
+  // Software prefetches for a batch of samples or lookups, so that their cache misses overlap
+  // instead of each waiting for its own (the integrator's batches of paths): prefetchSample(u,
+  // stage) for stages 0, 1 and 2 in turn, each after the previous stage of the whole batch, brings
+  // in what sample(u) reads (the conditional row's guide, then its CDF cells, then the texel's
+  // pdf and radiance); prefetchLookup(uv) what lookupAt(uv) reads. They change no result.
+  void prefetchSample(glm::vec2 u, int stage) const;
+  void prefetchLookup(glm::vec2 uv) const;
+  static constexpr int kPrefetchStages = 3;
 
   // True when the map is black everywhere: the sampler then samples uniformly in (u, v).
   bool isBlack() const { return black_; }

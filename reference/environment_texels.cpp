@@ -97,15 +97,29 @@ EnvironmentTexels::Point EnvironmentTexels::pointInRow(float u, int row, float a
   return out;
 }
 
-EnvironmentTexels::Location EnvironmentTexels::locate(const glm::vec3& worldDirection) const {
-  const glm::vec3 mapDirection = glm::normalize(map_.toMapDirection(worldDirection));
+glm::vec2 EnvironmentTexels::mapUv(const glm::vec3& worldDirection) const {
+  return latLongUv(glm::normalize(map_.toMapDirection(worldDirection)));
+}
+
+glm::ivec2 EnvironmentTexels::texelAt(glm::vec2 uv) const {
+  return glm::ivec2(std::clamp(static_cast<int>(uv.x * static_cast<float>(map_.width())), 0, map_.width() - 1),
+                    std::clamp(static_cast<int>(uv.y * static_cast<float>(map_.height())), 0, map_.height() - 1));
+}
+
+EnvironmentTexels::Location EnvironmentTexels::locateUv(glm::vec2 uv) const {
   Location out;
-  out.uv = latLongUv(mapDirection);
+  out.uv = uv;
   out.radiance = map_.intensity() * sampleLatLongBilinear(map_.image(), out.uv);
-  out.texel = glm::ivec2(
-      std::clamp(static_cast<int>(out.uv.x * static_cast<float>(map_.width())), 0, map_.width() - 1),
-      std::clamp(static_cast<int>(out.uv.y * static_cast<float>(map_.height())), 0, map_.height() - 1));
+  out.texel = texelAt(uv);
   return out;
+}
+
+void EnvironmentTexels::prefetchAround(glm::ivec2 texel) const {
+  const Image& image = map_.image();
+  const int x = std::clamp(texel.x, 0, image.width() - 1), y = std::clamp(texel.y, 0, image.height() - 1);
+  __builtin_prefetch(&image.at(x, y));
+  __builtin_prefetch(&image.at(x, std::max(y - 1, 0)));
+  __builtin_prefetch(&image.at(x, std::min(y + 1, image.height() - 1)));
 }
 
 }  // namespace iblkit

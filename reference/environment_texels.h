@@ -54,7 +54,18 @@ class EnvironmentTexels {
     glm::vec3 radiance{0.0f};  // the map's bilinear radiance, intensity applied
   };
   // Where world direction w (any non-zero length) lies in the map, and its radiance.
-  Location locate(const glm::vec3& worldDirection) const;
+  Location locate(const glm::vec3& worldDirection) const { return locateUv(mapUv(worldDirection)); }
+  // The lat-long coordinates of world direction w (any non-zero length): locate(w).uv.
+  glm::vec2 mapUv(const glm::vec3& worldDirection) const;
+  // locate(w) for uv = mapUv(w).
+  Location locateUv(glm::vec2 uv) const;
+  // The texel uv lies in (column, row), clamped to the map.
+  glm::ivec2 texelAt(glm::vec2 uv) const;
+
+  // Software prefetch of the texels a bilinear lookup around texel (column, row) reads (the texel
+  // and its neighbours above and below; the columns beside it mostly share their cache lines), for
+  // a batch of lookups whose cache misses should overlap. Reads nothing.
+  void prefetchAround(glm::ivec2 texel) const;
 
  private:
   const EnvironmentMap& map_;

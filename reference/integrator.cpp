@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <stdexcept>
+#include <vector>
 
 #include "core/brdf.h"
 #include "core/error.h"
@@ -98,11 +99,44 @@ bool Integrator::occluded(const glm::vec3& origin, const glm::vec3& direction, f
 
 CameraSample Integrator::trace(const Ray& cameraRay, PixelSampler& sampler, const RayCone& cone) const {
   CameraSample result;
-  if (settings_.kind == IntegratorKind::AmbientOcclusion)
-    traceOcclusion(cameraRay, sampler, cone, result);
-  else
-    traceRadiance(cameraRay, sampler, cone, result);
+  traceBatch(std::span<const Ray>(&cameraRay, 1), std::span<PixelSampler>(&sampler, 1), cone,
+             std::span<CameraSample>(&result, 1));
   return result;
+}
+
+// One path of a batch: what the loop of a single path keeps between its vertices, and the current
+// vertex's hit, surface and random numbers, which the batch's passes hand on to each other.
+struct Integrator::Path {
+  Ray ray;
+  RayCone cone;
+  glm::vec3 throughput{1.0f};
+  float previousPdf = 0.0f;   // BRDF pdf of the ray being traced
+  bool previousDelta = true;  // the camera ray, like a mirror ray, sees the environment directly
+  bool alive = true;
+  Hit hit;
+  glm::vec2 escapeUv{0.0f};  // where an escaping ray looks the environment sampler up (mis)
+  SurfacePoint point;
+  glm::vec2 uLight{0.0f}, uBrdf{0.0f};
+  float uLobe = 0.0f, uRoulette = 0.0f;
+  // The glTF BRDF at this vertex, prepared once for its eval, pdf and sample calls (none with --phong).
+  std::optional<BrdfAtPoint> brdf;
+};
+
+void Integrator::traceBatch(std::span<const Ray> cameraRays, std::span<PixelSampler> samplers,
+                            const RayCone& cone, std::span<CameraSample> out) const {
+  if (cameraRays.size() != samplers.size() || cameraRays.size() != out.size())
+    throw std::invalid_argument("Integrator::traceBatch: rays, samplers and results differ in number");
+  for (CameraSample& result : out) result = CameraSample{};
+  if (settings_.kind == IntegratorKind::AmbientOcclusion) {
+    for (std::size_t i = 0; i < out.size(); ++i) traceOcclusion(cameraRays[i], samplers[i], cone, out[i]);
+    return;
+  }
+  std::vector<Path> paths(cameraRays.size());
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    paths[i].ray = cameraRays[i];
+    paths[i].cone = cone;
+  }
+  traceRadiance(paths, samplers, out);
 }
 
 Integrator::LightSample Integrator::sampleLight(const glm::vec3& n, glm::vec2 u) const {
@@ -144,88 +178,134 @@ EnvironmentSampler::Lookup Integrator::lookupLight(const glm::vec3& w) const {
                                                          : environmentSampler_.lookup(w);
 }
 
-void Integrator::traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, CameraSample& result) const {
+void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> samplers,
+                               std::span<CameraSample> out) const {
   const EnvSampling strategy = settings_.envSampling;
   const bool sampleLights = strategy != EnvSampling::Brdf;
   const bool combine = strategy == EnvSampling::Mis || strategy == EnvSampling::MedianCut;
+  // The strategies whose light samples and MIS lookups are the environment sampler's (prefetched).
+  const bool envSampler = strategy == EnvSampling::Env || strategy == EnvSampling::Mis;
   const int maxDepth = settings_.kind == IntegratorKind::Direct ? 1 : settings_.maxDepth;
+  const std::size_t count = paths.size();
 
-  glm::vec3 throughput(1.0f);
-  float previousPdf = 0.0f;   // BRDF pdf of the ray being traced
-  bool previousDelta = true;  // the camera ray, like a mirror ray, sees the environment directly
   for (int depth = 0;; ++depth) {
-    const Hit hit = intersect(ray, RayQuery{depth == 0 ? RayKind::Camera : RayKind::Secondary, cone});
-    ++result.rays;
-    if (!hit.hit) {
-      // The environment seen by a BRDF-sampled ray counts when BRDF sampling is a strategy of
-      // its own (brdf), MIS-weighted against the light strategy (mis, mediancut), or fully after a
-      // delta bounce, which no light strategy can reach. With lights the point lights stand for it
-      // at every other vertex.
-      if (previousDelta || strategy == EnvSampling::Brdf) {
-        result.radiance += throughput * environment_.radiance(ray.direction);
+    bool any = false;
+    for (std::size_t i = 0; i < count; ++i) {
+      Path& p = paths[i];
+      if (!p.alive) continue;
+      any = true;
+      p.hit = intersect(p.ray, RayQuery{depth == 0 ? RayKind::Camera : RayKind::Secondary, p.cone});
+      ++out[i].rays;
+    }
+    if (!any) return;
+
+    // Rays that escape. The environment seen by a BRDF-sampled ray counts when BRDF sampling is a
+    // strategy of its own (brdf), MIS-weighted against the light strategy (mis, mediancut), or
+    // fully after a delta bounce, which no light strategy can reach. With lights the point lights
+    // stand for it at every other vertex.
+    const auto weighted = [&](const Path& p) { return p.alive && !p.hit.hit && !p.previousDelta && combine; };
+    if (strategy == EnvSampling::Mis)
+      for (Path& p : paths)
+        if (weighted(p)) {
+          p.escapeUv = environmentSampler_.mapUv(p.ray.direction);
+          environmentSampler_.prefetchLookup(p.escapeUv);
+        }
+    for (std::size_t i = 0; i < count; ++i) {
+      Path& p = paths[i];
+      if (!p.alive || p.hit.hit) continue;
+      p.alive = false;
+      if (p.previousDelta || strategy == EnvSampling::Brdf) {
+        out[i].radiance += p.throughput * environment_.radiance(p.ray.direction);
       } else if (combine) {
-        const EnvironmentSampler::Lookup seen = lookupLight(ray.direction);
-        result.radiance += throughput * powerHeuristic(previousPdf, seen.pdf) * seen.radiance;
+        const EnvironmentSampler::Lookup seen = strategy == EnvSampling::Mis
+                                                    ? environmentSampler_.lookupAt(p.escapeUv)
+                                                    : lookupLight(p.ray.direction);
+        out[i].radiance += p.throughput * powerHeuristic(p.previousPdf, seen.pdf) * seen.radiance;
       }
-      return;
     }
 
-    const glm::vec3 wo = -ray.direction;
-    const SurfacePoint point = scene_.surfacePoint(hit, wo, cone);
-    if (depth == 0) recordFirstHit(point, hit.t, result);
-    result.radiance += throughput * point.emissive;
-    // The path's next rays (shadow and bounce) start their cone at its width here.
-    cone.width = cone.widthAt(hit.t);
-    cone.pixel = {};  // the camera's differentials end at the first hit
-    if (depth == maxDepth) return;
+    // The surfaces hit, and the vertices' random numbers.
+    for (std::size_t i = 0; i < count; ++i) {
+      Path& p = paths[i];
+      if (!p.alive) continue;
+      const glm::vec3 wo = -p.ray.direction;
+      p.point = scene_.surfacePoint(p.hit, wo, p.cone);
+      if (depth == 0) recordFirstHit(p.point, p.hit.t, out[i]);
+      out[i].radiance += p.throughput * p.point.emissive;
+      // The path's next rays (shadow and bounce) start their cone at its width here.
+      p.cone.width = p.cone.widthAt(p.hit.t);
+      p.cone.pixel = {};  // the camera's differentials end at the first hit
+      if (depth == maxDepth) {
+        p.alive = false;
+        continue;
+      }
+      // Every vertex draws the same numbers in the same order, used or not, so the dimensions of
+      // the sampler line up between samples (and the Sobol pairs go to the first vertex).
+      PixelSampler& sampler = samplers[i];
+      p.uLight = sampler.next2D();
+      p.uBrdf = sampler.next2D();
+      p.uLobe = sampler.next1D();
+      p.uRoulette = sampler.next1D();
+      p.brdf.reset();
+      if (!settings_.phong) p.brdf.emplace(p.point.lobes, p.point.shadingNormal, wo);
+    }
+    // The light samples' tables and texels, brought in for the whole batch stage by stage.
+    if (envSampler)
+      for (int stage = 0; stage < EnvironmentSampler::kPrefetchStages; ++stage)
+        for (const Path& p : paths)
+          if (p.alive) environmentSampler_.prefetchSample(p.uLight, stage);
 
-    // Every vertex draws the same numbers in the same order, used or not, so the dimensions of
-    // the sampler line up between samples (and the Sobol pairs go to the first vertex).
-    const glm::vec2 uLight = sampler.next2D();
-    const glm::vec2 uBrdf = sampler.next2D();
-    const float uLobe = sampler.next1D();
-    const float uRoulette = sampler.next1D();
-    const glm::vec3 n = point.shadingNormal, ng = point.geometricNormal;
-    // The glTF BRDF at this vertex, prepared once for its eval, pdf and sample calls (none with --phong).
-    std::optional<BrdfAtPoint> gltfBrdf;
-    if (!settings_.phong) gltfBrdf.emplace(point.lobes, n, wo);
-    const BrdfAtPoint* brdf = gltfBrdf ? &*gltfBrdf : nullptr;
-
-    if (sampleLights) {
-      const LightSample light = sampleLight(n, uLight);
-      const float cosTheta = glm::dot(n, light.direction);
-      // Directions below the triangle's plane are blocked by the surface itself.
-      if (light.pdf > 0.0f && cosTheta > 0.0f && glm::dot(light.direction, ng) > 0.0f &&
-          maxComponent(light.radiance) > 0.0f) {
-        const glm::vec3 f = evalReflection(brdf, point.baseColor, n, wo, light.direction);
-        if (maxComponent(f) > 0.0f) {
-          ++result.rays;
-          if (!occluded(offsetRayOrigin(point.position, ng), light.direction, kInfinity,
-                        RayQuery{RayKind::Secondary, cone})) {
-            const float weight =
-                combine ? powerHeuristic(light.pdf, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
-            result.radiance += throughput * f * light.radiance * (cosTheta * weight / light.pdf);
+    // Next-event estimation and the bounce.
+    for (std::size_t i = 0; i < count; ++i) {
+      Path& p = paths[i];
+      if (!p.alive) continue;
+      CameraSample& result = out[i];
+      const SurfacePoint& point = p.point;
+      const glm::vec3 wo = -p.ray.direction;
+      const glm::vec3 n = point.shadingNormal, ng = point.geometricNormal;
+      const BrdfAtPoint* brdf = p.brdf ? &*p.brdf : nullptr;
+      if (sampleLights) {
+        const LightSample light = sampleLight(n, p.uLight);
+        const float cosTheta = glm::dot(n, light.direction);
+        // Directions below the triangle's plane are blocked by the surface itself.
+        if (light.pdf > 0.0f && cosTheta > 0.0f && glm::dot(light.direction, ng) > 0.0f &&
+            maxComponent(light.radiance) > 0.0f) {
+          const glm::vec3 f = evalReflection(brdf, point.baseColor, n, wo, light.direction);
+          if (maxComponent(f) > 0.0f) {
+            ++result.rays;
+            if (!occluded(offsetRayOrigin(point.position, ng), light.direction, kInfinity,
+                          RayQuery{RayKind::Secondary, p.cone})) {
+              const float weight =
+                  combine ? powerHeuristic(light.pdf, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
+              result.radiance += p.throughput * f * light.radiance * (cosTheta * weight / light.pdf);
+            }
           }
         }
       }
-    }
 
-    const BrdfSample scattered = sampleReflection(brdf, point.baseColor, n, wo, uBrdf, uLobe);
-    if (!scattered.valid()) return;
-    throughput *= scattered.weight;
-    // The cone widens by the sampled lobe's angular width, the half-angle of a cone whose solid
-    // angle is 1 / pdf (pi theta^2 = 1 / pdf), at most 1 radian (a Lambert lobe); a mirror keeps
-    // it (docs/reference-tracer.md "Texture filtering").
-    if (!scattered.delta) cone.spread += std::min(1.0f, 1.0f / std::sqrt(glm::pi<float>() * scattered.pdf));
-    previousPdf = scattered.pdf;
-    previousDelta = scattered.delta;
-    // Russian roulette (Arvo and Kirk 1990): continue with probability q, dividing by q.
-    if (depth + 1 >= kRussianRouletteDepth) {
-      const float q = std::min(0.95f, maxComponent(throughput));
-      if (uRoulette >= q) return;
-      throughput /= q;
+      const BrdfSample scattered = sampleReflection(brdf, point.baseColor, n, wo, p.uBrdf, p.uLobe);
+      if (!scattered.valid()) {
+        p.alive = false;
+        continue;
+      }
+      p.throughput *= scattered.weight;
+      // The cone widens by the sampled lobe's angular width, the half-angle of a cone whose solid
+      // angle is 1 / pdf (pi theta^2 = 1 / pdf), at most 1 radian (a Lambert lobe); a mirror keeps
+      // it (docs/reference-tracer.md "Texture filtering").
+      if (!scattered.delta) p.cone.spread += std::min(1.0f, 1.0f / std::sqrt(glm::pi<float>() * scattered.pdf));
+      p.previousPdf = scattered.pdf;
+      p.previousDelta = scattered.delta;
+      // Russian roulette (Arvo and Kirk 1990): continue with probability q, dividing by q.
+      if (depth + 1 >= kRussianRouletteDepth) {
+        const float q = std::min(0.95f, maxComponent(p.throughput));
+        if (p.uRoulette >= q) {
+          p.alive = false;
+          continue;
+        }
+        p.throughput /= q;
+      }
+      p.ray = Ray{offsetRayOrigin(point.position, sideFacing(ng, scattered.wi)), scattered.wi};
     }
-    ray = Ray{offsetRayOrigin(point.position, sideFacing(ng, scattered.wi)), scattered.wi};
   }
 }
 

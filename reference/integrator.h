@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "core/brdf.h"
@@ -59,6 +60,10 @@ inline constexpr EnumName<EnvSampling> kEnvSamplingNames[] = {
 // 'x' (expected one of path, direct, ao)") and the like.
 IntegratorKind parseIntegratorKind(const std::string& name);
 EnvSampling parseEnvSampling(const std::string& name);
+
+// Camera rays the renderer traces together (Integrator::traceBatch): enough paths for their
+// environment lookups' cache misses to overlap, few enough for their state to stay in L1/L2.
+inline constexpr int kTraceBatch = 32;
 
 // Bounces after which Russian roulette may end a path.
 inline constexpr int kRussianRouletteDepth = 3;
@@ -118,6 +123,17 @@ class Integrator {
   // single-sided materials.
   CameraSample trace(const Ray& cameraRay, PixelSampler& sampler, const RayCone& cone = {}) const;
 
+  // trace() for a batch of camera rays, each with its own sampler: out[i] is exactly
+  // trace(cameraRays[i], samplers[i], cone), bit for bit (each path draws the same numbers in the
+  // same order and does the same arithmetic), but the paths advance together, vertex by vertex:
+  // all closest-hit queries of a depth, then all escapes, then all vertices, whose environment
+  // samples and lookups are prefetched for the whole batch before any is read (software
+  // prefetches in stages, EnvironmentSampler::prefetchSample), so their cache misses overlap
+  // instead of each path waiting for its own. The three spans have the same size (any; the
+  // renderer passes kTraceBatch).
+  void traceBatch(std::span<const Ray> cameraRays, std::span<PixelSampler> samplers, const RayCone& cone,
+                  std::span<CameraSample> out) const;
+
  private:
   struct LightSample {
     glm::vec3 direction{0.0f};
@@ -142,7 +158,9 @@ class Integrator {
   // RayScene::intersect / occluded, logged when a recorder is set.
   Hit intersect(const Ray& ray, const RayQuery& query) const;
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax, const RayQuery& query) const;
-  void traceRadiance(Ray ray, PixelSampler& sampler, RayCone cone, CameraSample& result) const;
+  struct Path;
+  // The paths of a batch of the radiance integrators (path, direct), advanced together.
+  void traceRadiance(std::span<Path> paths, std::span<PixelSampler> samplers, std::span<CameraSample> out) const;
   void traceOcclusion(const Ray& ray, PixelSampler& sampler, const RayCone& cone, CameraSample& result) const;
 
   const RenderScene& scene_;

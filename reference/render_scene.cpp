@@ -52,6 +52,9 @@ RenderScene::RenderScene(Scene scene, unsigned textureSlots) : scene_(std::move(
   for (const Material& material : scene_.materials) {
     lobes_.push_back(brdfLobes(material));
     textured_.push_back(shadesWithTextures(material, slots_));
+    // Occlusion is not applied: no need to read it.
+    prepared_.push_back(textured_.back() ? PreparedSurfaceMaterial(material, *textures_, slots_ & ~unsigned(kSlotOcclusion))
+                                         : PreparedSurfaceMaterial());
   }
   uvPerWorldLength_.resize(scene_.meshes.size());
   uvGradients_.resize(scene_.meshes.size());
@@ -95,7 +98,6 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
     point.lobes = lobes_[materialIndex];
   } else {
     SurfaceInputs inputs;
-    inputs.slots = slots_ & ~unsigned(kSlotOcclusion);  // not applied: no need to read it
     if (mesh.texcoords.size() == mesh.positions.size()) inputs.texcoords[0] = interpolateAtHit(mesh.texcoords, corner, hit.barycentrics);
     if (mesh.texcoords1.size() == mesh.positions.size())
       inputs.texcoords[1] = interpolateAtHit(mesh.texcoords1, corner, hit.barycentrics);
@@ -127,10 +129,10 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
       for (int set = 0; set < 2; ++set)
         inputs.footprintUv[set] = textureFootprintFromLength(width, lengths[set], cosine);
     }
-    const SurfaceMaterial surface = evaluateSurfaceMaterial(material, *textures_, inputs);
-    point.baseColor = surface.material.baseColor;
-    point.emissive = surface.material.emissive;
-    point.lobes = brdfLobes(surface.material);
+    const SurfaceMaterial surface = prepared_[materialIndex].evaluate(inputs);
+    point.baseColor = surface.baseColor;
+    point.emissive = surface.emissive;
+    point.lobes = brdfLobes(surface);
     shading = surface.normal;
   }
   point.shadingNormal = shadingNormalFacingViewer(shading, wo, point.geometricNormal);

@@ -13,6 +13,7 @@
 #include "core/brdf.h"
 #include "core/material.h"
 #include "core/scene.h"
+#include "core/surface_material.h"
 #include "core/texture_sampling.h"
 #include "raytrace/alpha_filter.h"
 #include "raytrace/ray_scene.h"
@@ -69,6 +70,8 @@ class RenderScene {
   std::vector<unsigned> meshOfGeometry_;  // Embree geometry id -> index into scene_.meshes
   std::vector<BrdfLobes> lobes_;          // per material
   std::vector<bool> textured_;            // per material: a shading slot (not occlusion) reads a texture
+  // Per material (textured ones only): its slots prepared against textures_ for surfacePoint.
+  std::vector<PreparedSurfaceMaterial> prepared_;
   // Per mesh (empty for meshes whose material reads no texture), per triangle:
   // sqrt(uvPerWorldArea) of uv sets 0 and 1, the ray-cone footprint's per-triangle part
   // (textureFootprintFromLength), computed once rather than from the corners at every hit.

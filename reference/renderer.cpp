@@ -5,10 +5,12 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -112,26 +114,46 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
             for (int ty = r.rows().begin(); ty < r.rows().end(); ++ty)
               for (int tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
                 std::uint64_t tileRays = 0;
+                // The tile's samples, pixel by pixel and in index order within a pixel, traced in
+                // batches (Integrator::traceBatch) and summed in that same order.
+                std::array<Ray, kTraceBatch> batchRays;
+                std::array<std::uint32_t, kTraceBatch> batchPixels;
+                std::vector<PixelSampler> batchSamplers;
+                batchSamplers.reserve(kTraceBatch);
+                std::array<CameraSample, kTraceBatch> batchResults;
+                const auto flush = [&] {
+                  const std::size_t size = batchSamplers.size();
+                  integrator.traceBatch(std::span<const Ray>(batchRays.data(), size), batchSamplers, cone,
+                                        std::span<CameraSample>(batchResults.data(), size));
+                  for (std::size_t b = 0; b < size; ++b) {
+                    const CameraSample& c = batchResults[b];
+                    PixelSums& s = sums[batchPixels[b]];
+                    const glm::dvec3 radiance(c.radiance);
+                    s.radiance += radiance;
+                    s.radianceSquared += radiance * radiance;
+                    s.albedo += glm::dvec3(c.albedo);
+                    s.normal += glm::dvec3(c.normal);
+                    s.unoccluded += glm::dvec3(c.unoccludedDirection);
+                    s.distance += c.distance;
+                    s.coverage += c.objectCoverage;
+                    tileRays += c.rays;
+                  }
+                  batchSamplers.clear();
+                };
                 for (int y = ty * kTileSize; y < std::min(h, (ty + 1) * kTileSize); ++y)
                   for (int x = tx * kTileSize; x < std::min(w, (tx + 1) * kTileSize); ++x) {
                     const auto pixel = static_cast<std::uint32_t>(y * w + x);
-                    PixelSums& s = sums[pixel];
                     const PixelSeeds seeds(settings.seed, pixel);
                     for (int i = first; i < last; ++i) {
-                      PixelSampler sampler(seeds, static_cast<std::uint32_t>(i));
+                      PixelSampler& sampler = batchSamplers.emplace_back(seeds, static_cast<std::uint32_t>(i));
                       const glm::vec2 raster = glm::vec2(x, y) + filter.sample(sampler.next2D());
-                      const CameraSample c = integrator.trace(primaryRays(raster), sampler, cone);
-                      const glm::dvec3 radiance(c.radiance);
-                      s.radiance += radiance;
-                      s.radianceSquared += radiance * radiance;
-                      s.albedo += glm::dvec3(c.albedo);
-                      s.normal += glm::dvec3(c.normal);
-                      s.unoccluded += glm::dvec3(c.unoccludedDirection);
-                      s.distance += c.distance;
-                      s.coverage += c.objectCoverage;
-                      tileRays += c.rays;
+                      const std::size_t b = batchSamplers.size() - 1;
+                      batchRays[b] = primaryRays(raster);
+                      batchPixels[b] = pixel;
+                      if (batchSamplers.size() == kTraceBatch) flush();
                     }
                   }
+                if (!batchSamplers.empty()) flush();
                 rays += tileRays;
                 const int done = ++tilesDone;
                 if (progress) {

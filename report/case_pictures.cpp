@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/auto_exposure.h"
 #include "core/image_io.h"
+#include "report/page_images.h"
 #include "score/heat_map.h"
 
 namespace iblkit {
@@ -11,13 +13,7 @@ namespace iblkit {
 namespace fs = std::filesystem;
 
 float thumbnailExposure(const Image& reference, std::span<const std::uint8_t> mask) {
-  std::vector<float> values;
-  for (std::size_t i = 0; i < reference.pixelCount(); ++i)
-    if (mask[i]) values.push_back(luminance(glm::vec3(reference.pixels()[i])));
-  if (values.empty()) return 0.0f;
-  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
-  const float median = values[values.size() / 2];
-  return median > 0.0f ? std::clamp(std::log2(0.18f / median), -16.0f, 16.0f) : 0.0f;
+  return keyExposure(reference, mask);  // the viewer's automatic exposure too (core/auto_exposure.h)
 }
 
 void writeCasePictures(const fs::path& outDir, const std::string& caseName, const Reference& reference,
@@ -36,6 +32,12 @@ void writeCasePictures(const fs::path& outDir, const std::string& caseName, cons
     modeResult.heatMap = "images/" + caseName + "-" + modeResult.mode + "-flip.png";
     writeHeatMap(outDir / modeResult.heatMap, flipMaps[m].error, flipMaps[m].width, flipMaps[m].height);
   }
+  // The reference and every scored frame, linear, for the page's exposure control.
+  std::vector<std::pair<std::string, const Image*>> linear = {{"reference", &reference.image}};
+  for (std::size_t m = 0; m < result.modes.size(); ++m)
+    if (result.modes[m].failure.empty()) linear.push_back({result.modes[m].mode, &frames[m]});
+  result.linearImages = "images/" + caseName + "-linear.js";
+  writeCaseImagesScript(outDir / result.linearImages, caseName, linear);
 }
 
 }  // namespace iblkit

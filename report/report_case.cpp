@@ -37,7 +37,9 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
   const std::string caseName = result.scene + "-" + result.environment;
   const CaseInputs inputs = caseInputs(sceneFile, environmentFile);
   ReportSettings caseSettings = settings;  // the stages below score caseSettings.modes
-  caseSettings.modes = caseModes(settings.modes, inputs.occlusionTexture);
+  caseSettings.modes = caseModes(settings.modes, inputs.lobes);
+  for (const std::string& mode : settings.modes)
+    if (std::string why = modeNotApplicable(mode, inputs.lobes); !why.empty()) result.notApplicable.push_back({mode, why});
   // Textured frames without sample shading (ReportSettings::engineSampleShading says why).
   if (inputs.textured) caseSettings.engineSampleShading = false;
 

@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report/frame_scores.h"
@@ -47,8 +48,11 @@ struct CaseResult {
   // What the `sh` frame gets wrong beyond that (errorBeyondSh9); NaN without an `sh` frame.
   double shBeyondSh9 = std::numeric_limits<double>::quiet_NaN();
   std::string referenceImage;     // PNG path relative to outDir
+  std::string linearImages;       // the page's linear images script relative to outDir (page_images.h)
   std::vector<ModeResult> modes;
   std::vector<std::string> commands;  // the command lines of the stages, for the report
+  // The requested modes the case does not score, and why (case_modes.h: modeNotApplicable).
+  std::vector<std::pair<std::string, std::string>> notApplicable;
 };
 
 CaseResult runCase(const ReportSettings& settings, const StageCache& cache,

@@ -11,6 +11,10 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "report/compare_view.h"
+#include "report/cost_plot.h"
+#include "report/html_text.h"
+#include "report/label_layout.h"
 
 namespace iblkit {
 
@@ -29,25 +33,8 @@ void writeText(const fs::path& file, const std::string& text) {
 
 json number(double value) { return std::isfinite(value) ? json(value) : json(); }
 
-std::string fixed(double value, int digits) {
-  if (!std::isfinite(value)) return "&ndash;";
-  std::ostringstream text;
-  text.setf(std::ios::fixed);
-  text.precision(digits);
-  text << value;
-  return text.str();
-}
-
-std::string escape(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    if (c == '<') escaped += "&lt;";
-    else if (c == '>') escaped += "&gt;";
-    else if (c == '&') escaped += "&amp;";
-    else escaped += c;
-  }
-  return escaped;
-}
+std::string fixed(double value, int digits) { return fixedText(value, digits); }
+std::string escape(const std::string& text) { return escapeHtml(text); }
 
 std::vector<std::string> scenesInOrder(const std::vector<CaseResult>& cases) {
   std::vector<std::string> scenes;
@@ -129,6 +116,62 @@ std::string kindTable(const ReportSummary& summary, const std::vector<std::strin
   return html.str();
 }
 
+// The summary: every scene's mean FLIP per mode averaged over its maps, the closest mode of each
+// scene in bold, a mode that does not apply to the scene marked so (case_modes.h).
+std::string summaryTable(const ReportSummary& summary, const std::vector<std::string>& scenes) {
+  std::ostringstream html;
+  html << "<h2>Summary</h2>\n<p class=small>Mean FLIP of each mode averaged over the scene's maps (lower is closer "
+          "to the path-traced reference); bold: the scene's closest mode; n/a: the mode does not apply to the "
+          "scene's materials and is not scored (hover for why). Per-case pictures: open a case below.</p>\n"
+          "<table><tr><th class=l>scene</th>";
+  for (const std::string& mode : summary.modes) html << "<th>" << mode << "</th>";
+  html << "</tr>\n";
+  for (const std::string& scene : scenes) {
+    std::vector<double> means;
+    double best = std::numeric_limits<double>::infinity();
+    for (const std::string& mode : summary.modes) {
+      means.push_back(meanOverEnvironments(summary.cases, scene, mode, Metric::MeanFlip));
+      if (std::isfinite(means.back())) best = std::min(best, means.back());
+    }
+    html << "<tr><td class=l><a href=\"#scene-" << scene << "\">" << scene << "</a></td>";
+    for (std::size_t m = 0; m < summary.modes.size(); ++m) {
+      std::string why;
+      for (const CaseResult& result : summary.cases)
+        if (result.scene == scene)
+          for (const auto& [mode, reason] : result.notApplicable)
+            if (mode == summary.modes[m]) why = reason;
+      if (!std::isfinite(means[m]) && !why.empty())
+        html << "<td class=na title=\"" << escape(why) << "\">n/a</td>";
+      else
+        html << "<td" << (means[m] == best ? " class=best" : "") << ">" << fixed(means[m], 4) << "</td>";
+    }
+    html << "</tr>\n";
+  }
+  html << "</table>\n";
+  return html.str();
+}
+
+// The requested modes a scene does not score, grouped by why.
+std::string notApplicableNote(const std::vector<const CaseResult*>& sceneCases) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> byReason;  // why, the modes
+  for (const CaseResult* result : sceneCases)
+    for (const auto& [mode, why] : result->notApplicable) {
+      auto group = std::find_if(byReason.begin(), byReason.end(), [&](const auto& entry) { return entry.first == why; });
+      if (group == byReason.end()) group = byReason.insert(byReason.end(), {why, {}});
+      if (std::find(group->second.begin(), group->second.end(), mode) == group->second.end()) group->second.push_back(mode);
+    }
+  if (byReason.empty()) return {};
+  std::string note = "<p class=small>Not scored here (the modes that apply come from the scene's materials, "
+                     "docs/report.md): ";
+  for (std::size_t i = 0; i < byReason.size(); ++i) {
+    note += i ? "; " : "";
+    for (std::size_t m = 0; m < byReason[i].second.size(); ++m)
+      note += (m ? ", " : "") + std::string("<code>") + byReason[i].second[m] + "</code>";
+    note += " (" + escape(byReason[i].first) + ")";
+  }
+  return note + ".</p>\n";
+}
+
 }  // namespace
 
 void writeReportJson(const fs::path& file, const ReportSummary& summary) {
@@ -171,6 +214,8 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                   {"flipExposureRange", {result.flipExposures.start, result.flipExposures.stop}},
                   {"thumbnailExposure", result.exposure},
                   {"commands", result.commands}};
+    for (const auto& [mode, why] : result.notApplicable) entry["notApplicable"].push_back({{"mode", mode}, {"why", why}});
+    if (!result.linearImages.empty()) entry["linearImages"] = result.linearImages;
     for (const ModeResult& modeResult : result.modes) {
       json mode = {{"mode", modeResult.mode}, {"frameMilliseconds", number(modeResult.frameMilliseconds)}};
       if (modeResult.failure.empty()) {
@@ -192,7 +237,7 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
 
 std::string ladderSvg(const std::vector<CaseResult>& cases, const std::string& scene,
                       const std::vector<std::string>& modes) {
-  constexpr double kWidth = 560, kHeight = 260, kLeft = 60, kRight = 110, kTop = 16, kBottom = 40;
+  constexpr double kWidth = 560, kHeight = 300, kLeft = 60, kRight = 110, kTop = 16, kBottom = 84, kFont = 11;
   double top = 0.0;
   std::vector<const CaseResult*> sceneCases;
   for (const CaseResult& result : cases) {
@@ -209,8 +254,8 @@ std::string ladderSvg(const std::vector<CaseResult>& cases, const std::string& s
   std::ostringstream svg;
   svg.setf(std::ios::fixed);
   svg.precision(1);
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-      << "\" font-family=\"sans-serif\" font-size=\"11\">\n";
+  svg << "<svg class=ladder xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
+      << "\" font-family=\"sans-serif\" font-size=\"" << kFont << "\">\n";
   svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotWidth << "\" height=\"" << plotHeight
       << "\" fill=\"none\" stroke=\"#999\"/>\n";
   for (int tick = 0; tick <= 4; ++tick) {
@@ -220,22 +265,31 @@ std::string ladderSvg(const std::vector<CaseResult>& cases, const std::string& s
   }
   svg << "<text x=\"14\" y=\"" << kTop + plotHeight / 2 << "\" transform=\"rotate(-90 14 " << kTop + plotHeight / 2
       << ")\" text-anchor=\"middle\">mean FLIP</text>\n";
-  for (std::size_t i = 0; i < modes.size(); ++i)
-    svg << "<text x=\"" << x(i) << "\" y=\"" << kHeight - kBottom + 16 << "\" text-anchor=\"middle\">" << modes[i]
-        << "</text>\n";
+  // The modes' names turned by 40 degrees: neighbours at least plotWidth / 9 apart then clear
+  // each other by that times sin(40 degrees), more than the font's height.
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    const double tx = x(i) + 3, ty = kTop + plotHeight + 12;
+    svg << "<text class=mode x=\"" << tx << "\" y=\"" << ty << "\" text-anchor=\"end\" transform=\"rotate(-40 " << tx
+        << " " << ty << ")\">" << modes[i] << "</text>\n";
+  }
 
-  auto polyline = [&](const std::vector<double>& values, const char* style, const std::string& label) {
+  // The lines first, their labels after, placed together so that none overlaps (label_layout.h).
+  std::vector<LabelBox> wanted;
+  std::vector<std::string> labels;
+  auto polyline = [&](const std::vector<double>& values, const char* style, const std::string& label,
+                      const std::string& text) {
     std::ostringstream points;
     points.setf(std::ios::fixed);
     points.precision(1);
-    double lastY = 0.0;
+    double lastY = kTop + plotHeight;
     for (std::size_t i = 0; i < values.size(); ++i) {
       if (!std::isfinite(values[i])) continue;
       points << x(i) << "," << y(values[i]) << " ";
       lastY = y(values[i]);
     }
     svg << "<polyline fill=\"none\" " << style << " points=\"" << points.str() << "\"/>\n";
-    svg << "<text x=\"" << kLeft + plotWidth + 6 << "\" y=\"" << lastY + 4 << "\">" << label << "</text>\n";
+    wanted.push_back({kLeft + plotWidth + 6, lastY - kFont / 2 - 1, labelWidth(text, kFont), kFont + 2});
+    labels.push_back(label);
   };
   for (const CaseResult* result : sceneCases) {
     std::vector<double> values;
@@ -244,11 +298,14 @@ std::string ladderSvg(const std::vector<CaseResult>& cases, const std::string& s
       values.push_back(modeResult && modeResult->failure.empty() ? modeResult->scores.meanFlip
                                                                   : std::numeric_limits<double>::quiet_NaN());
     }
-    polyline(values, "stroke=\"#9ab\" stroke-width=\"1\"", result->environment);
+    polyline(values, "stroke=\"#9ab\" stroke-width=\"1\"", result->environment, result->environment);
   }
   std::vector<double> means;
   for (const std::string& mode : modes) means.push_back(meanOverEnvironments(cases, scene, mode, Metric::MeanFlip));
-  polyline(means, "stroke=\"#c30\" stroke-width=\"3\"", "<tspan font-weight=\"bold\">mean</tspan>");
+  polyline(means, "stroke=\"#c30\" stroke-width=\"3\"", "<tspan font-weight=\"bold\">mean</tspan>", "mean");
+  const std::vector<double> labelY = placeLabels(wanted, kTop - 8, kTop + plotHeight + 8);
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    svg << "<text class=label x=\"" << wanted[i].x << "\" y=\"" << labelY[i] + kFont << "\">" << labels[i] << "</text>\n";
   svg << "</svg>\n";
   return svg.str();
 }
@@ -263,6 +320,9 @@ table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding
 th{background:#f4f4f4}td.l,th.l{text-align:left}.ok{color:#070;font-weight:bold}.no{color:#b00;font-weight:bold}
 figure{display:inline-block;margin:2px;vertical-align:top}figcaption{font-size:11px;text-align:center}
 img{display:block}code{font-size:11px}.small{font-size:12px;color:#555}
+.plots{display:flex;flex-wrap:wrap;gap:1em;align-items:flex-start}.plots>div{max-width:580px}details.case{margin:.3em 0}
+details.case>summary{cursor:pointer;font-weight:bold;font-size:14px}td.na{color:#999}td.best{font-weight:bold}
+)" << compareViewStyle() << R"(
 </style></head><body>
 <h1>iblkit: how far each real-time approximation is from the path-traced truth</h1>
 <p>Every scene is baked (<code>iblkit-bake</code>), rendered headless in every engine mode
@@ -311,9 +371,9 @@ relMSE, estimated from two independent halves, is at most )"
               "(docs/report.md).</p>\n";
   }
 
-  html << kindTable(summary, scenesInOrder(summary.cases));
+  html << summaryTable(summary, scenesInOrder(summary.cases)) << kindTable(summary, scenesInOrder(summary.cases));
   for (const std::string& scene : scenesInOrder(summary.cases)) {
-    html << "<h2>" << scene << "</h2>\n";
+    html << "<h2 id=\"scene-" << scene << "\">" << scene << "</h2>\n";
     std::vector<const CaseResult*> sceneCases;
     for (const CaseResult& result : summary.cases)
       if (result.scene == scene) sceneCases.push_back(&result);
@@ -322,8 +382,7 @@ relMSE, estimated from two independent halves, is at most )"
     for (const CaseResult* result : sceneCases)
       html << "<th>" << result->environment << "<br><span class=small>" << kindName(*result) << "</span></th>";
     html << "<th>mean</th><th>frame (ms)</th></tr>\n";
-    // The modes some case of this scene scored: the glTF occlusion modes only where a material has
-    // an occlusion texture (case_modes.h).
+    // The modes some case of this scene scored: those that apply to its materials (case_modes.h).
     std::vector<std::string> sceneModes;
     for (const std::string& mode : summary.modes)
       if (std::any_of(sceneCases.begin(), sceneCases.end(),
@@ -331,7 +390,6 @@ relMSE, estimated from two independent halves, is at most )"
         sceneModes.push_back(mode);
     for (const std::string& mode : sceneModes) {
       html << "<tr><td class=l>" << mode << "</td>";
-      std::vector<double> frameTimes;
       for (const CaseResult* result : sceneCases) {
         const ModeResult* modeResult = findMode(*result, mode);
         if (!modeResult) {
@@ -342,16 +400,19 @@ relMSE, estimated from two independent halves, is at most )"
           html << "<td>" << fixed(modeResult->scores.meanFlip, 4) << " / " << fixed(modeResult->scores.relMse, 4)
                << " / " << fixed(100.0 * modeResult->scores.meanRelativeError, 1) << "%</td>";
         }
-        if (modeResult && std::isfinite(modeResult->frameMilliseconds)) frameTimes.push_back(modeResult->frameMilliseconds);
       }
-      std::sort(frameTimes.begin(), frameTimes.end());
       html << "<td><b>" << fixed(meanOverEnvironments(summary.cases, scene, mode, Metric::MeanFlip), 4) << " / "
            << fixed(meanOverEnvironments(summary.cases, scene, mode, Metric::RelMse), 4) << " / "
            << fixed(100.0 * meanOverEnvironments(summary.cases, scene, mode, Metric::MeanRelativeError), 1)
-           << "%</b></td><td>" << (frameTimes.empty() ? "&ndash;" : fixed(frameTimes[frameTimes.size() / 2], 1))
+           << "%</b></td><td>" << fixed(sceneFrameMilliseconds(summary.cases, scene, mode), 1)
            << "</td></tr>\n";
     }
-    html << "</table>\n" << ladderSvg(summary.cases, scene, sceneModes);
+    html << "</table>\n" << notApplicableNote(sceneCases);
+    html << "<div class=plots><div><div class=small>The ladder: mean FLIP per mode, one line per map</div>"
+         << ladderSvg(summary.cases, scene, sceneModes)
+         << "</div><div><div class=small>Cost against error: median frame time against mean FLIP; filled and joined, "
+            "the Pareto front (no other mode both faster and closer)</div>"
+         << costSvg(costPoints(summary.cases, scene, sceneModes)) << "</div></div>\n";
     html << "<table><tr><th class=l>environment</th>"
             "<th title=\"the map's kind (docs/report.md): energy share of its brightest 1e-4 and 1% of the sphere\">"
             "kind (sun share / source share)</th><th>bake (s)</th><th>trace (s)</th><th>reference spp</th>"
@@ -370,29 +431,28 @@ relMSE, estimated from two independent halves, is at most )"
            << fixed(100.0 * result->shBeyondSh9, 2) << "%</td></tr>\n";
     html << "</table>\n";
     for (const CaseResult* result : sceneCases) {
-      html << "<h3>" << scene << " under " << result->environment << "</h3>\n<div>";
-      const int w = summary.settings.width, h = summary.settings.height;
-      html << "<figure><img src=\"" << result->referenceImage << "\" width=" << w << " height=" << h
-           << "><figcaption>reference, " << result->referenceSpp << " spp</figcaption></figure>";
-      for (const ModeResult& modeResult : result->modes) {
-        if (!modeResult.failure.empty()) {
-          html << "<figure><figcaption class=no>" << modeResult.mode << ": " << escape(modeResult.failure)
-               << "</figcaption></figure>";
-          continue;
-        }
-        html << "<figure><img src=\"" << modeResult.image << "\" width=" << w << " height=" << h << "><img src=\""
-             << modeResult.heatMap << "\" width=" << w << "><figcaption>" << modeResult.mode << ": FLIP "
-             << fixed(modeResult.scores.meanFlip, 4) << "</figcaption></figure>";
-      }
-      html << "</div>\n<details><summary class=small>commands</summary><pre class=small>";
+      const std::string caseName = result->scene + "-" + result->environment;
+      const ModeResult* best = nullptr;
+      for (const ModeResult& modeResult : result->modes)
+        if (modeResult.failure.empty() && (!best || modeResult.scores.meanFlip < best->scores.meanFlip)) best = &modeResult;
+      html << "<details class=case id=\"case-" << caseName << "\"><summary>" << scene << " under " << result->environment
+           << " <span class=small>(" << kindName(*result) << "; reference " << result->referenceSpp << " spp"
+           << (best ? "; closest mode " + best->mode + ", FLIP " + fixed(best->scores.meanFlip, 4) : std::string())
+           << ")</span></summary>\n";
+      for (const ModeResult& modeResult : result->modes)
+        if (!modeResult.failure.empty())
+          html << "<p class=no>" << modeResult.mode << ": " << escape(modeResult.failure) << "</p>\n";
+      if (!result->referenceImage.empty())
+        html << compareViewHtml(*result, caseName, summary.settings.width, summary.settings.height);
+      html << "<div><details><summary class=small>commands</summary><pre class=small>";
       for (const std::string& command : result->commands) html << escape(command) << "\n";
-      html << "</pre></details>\n";
+      html << "</pre></details></div>\n</details>\n";
     }
   }
   html << "<p class=small>Report written in " << fixed(summary.totalSeconds, 1) << " s; " << summary.runStages
        << " stages run, " << summary.cachedStages << " taken from the cache. Thumbnails: ACES fitted tone curve, the"
           " exposure that maps the reference's median scored luminance to 0.18; heat maps: HDR-FLIP error,"
-          " magma, 0 to 1.</p>\n</body></html>\n";
+          " magma, 0 to 1.</p>\n<script>\n" << compareViewScript() << "</script>\n</body></html>\n";
   writeText(file, html.str());
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Writes the demo report: out/demo/report.html (static HTML with PNG thumbnails and inline SVG
-// plots, viewable without a server) and out/demo/report.json (the same numbers for scripts and
+// Writes the demo report: out/demo/report.html (static HTML, viewable from file:// without a
+// server: the claims and a summary first, then per scene its tables, the ladder and the cost
+// plots side by side, and each case collapsed with its large view, compare_view.h) and out/demo/report.json (the same numbers for scripts and
 // regression checks). Both are written to a temporary name and renamed.
 
 #include <filesystem>

@@ -22,7 +22,7 @@ void appendSize(const ReportSettings& settings, std::vector<std::string>& argume
 }  // namespace
 
 CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile) {
-  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}, false, false};
+  CaseInputs inputs{sceneFile, environmentFile, {sceneFile}, false, false, {}};
   const Scene scene = loadScene(sceneFile);
   // A missing model file is left to the program that reads it, which fails naming it.
   const auto add = [&](const fs::path& file) {
@@ -36,7 +36,8 @@ CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile
   for (const TextureImage& image : scene.images) add(image.file);
   inputs.files.push_back(environmentFile);
   inputs.textured = !scene.textures.empty();
-  inputs.occlusionTexture = hasOcclusionTexture(scene);
+  inputs.lobes = sceneLobes(scene);
+  inputs.occlusionTexture = inputs.lobes.occlusionTexture;
   return inputs;
 }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "report/case_modes.h"
 #include "report/report_settings.h"
 #include "report/stage_command.h"
 
@@ -21,6 +22,7 @@ struct CaseInputs {
   std::vector<std::filesystem::path> files;  // the scene, its model and image files, the environment map
   bool textured = false;
   bool occlusionTexture = false;
+  SceneLobes lobes;  // which modes apply (case_modes.h)
 };
 CaseInputs caseInputs(const std::filesystem::path& sceneFile, const std::filesystem::path& environmentFile);
 

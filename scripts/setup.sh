@@ -9,10 +9,11 @@ packages=(
   libglfw3-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libgles-dev libopengl-dev libepoxy-dev
   glslang-tools glslang-dev
   libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libstb-dev libwebp-dev
-  libopenexr-dev libimath-dev
+  libopenexr-dev libimath-dev zlib1g-dev
   libgtest-dev libbenchmark-dev libcli11-dev libimgui-dev
   clang libclang-rt-dev  # make fuzz: clang and its libFuzzer runtime (libclang_rt.fuzzer)
   xvfb xauth
+  chromium chromium-driver  # the report page's browser test (tests/programs/report_page_browser_test.py)
 )
 
 missing=()

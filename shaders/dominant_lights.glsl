@@ -6,7 +6,12 @@
 // The first lightCount suns (renderer.cpp: the world direction towards each, its uniform radiance,
 // its angular radius and that angle's cos and sin), and the residual: its SH9 radiance (with the suns not drawn
 // added back) and its specular chain (the same levels and rotation as the map's).
-uniform int lightCount;
+// LIGHT_COUNT: a constant of the program (renderer.cpp compiles one per count), so that the loop
+// over the lights unrolls with constant indices.
+#ifndef LIGHT_COUNT
+#define LIGHT_COUNT kMaxEngineLights
+#endif
+const int lightCount = LIGHT_COUNT;
 uniform vec3 lightDirection[kMaxEngineLights];
 uniform vec3 lightRadiance[kMaxEngineLights];
 uniform float lightAngularRadius[kMaxEngineLights];
@@ -15,24 +20,43 @@ uniform vec3 residualShRadiance[9];
 layout(binding = kTextureUnitResidualSpecular) uniform samplerCube residualSpecularCube;
 
 // residual  = fullMaterialModelWith(residual chain, AO, cone axis, E_PRT,residual)
-// + sum_i diskLightRadiance(light i) V_i   (V_i = 1, or the PCSS visibility with `shadowed`)
+// + sum_i diskLightRadiance(light i) V_i   (V_i = 1, or the shadow map's visibility with `shadowed`)
 // The residual's diffuse is `full`'s: the baked transfer dotted with the residual's SH9 (PRT, the
 // visibility in the transfer), so that where the bake extracted no sun both modes are `full`
 // exactly. (The residual's SH9 along the bent normal times AO, the sh-ao-bent formula, measured
 // worse than `full` on the soft maps: bunny under forest, mean FLIP 0.043 against 0.034.)
+// A light's first bounce off the ground (docs/dominant-lights.md, "Bounce light"). The reference's
+// sunlit ground lights the object from below; `full` holds it only through its SH9 sun and the
+// multi-bounce AO fit, the lights' direct term not at all. The occluders below the vertex's
+// horizon are taken as an upward-facing diffuse surface of the vertex's own albedo (the
+// assumption of Jimenez's multi-bounce fit), lit by the light unshadowed: radiance
+// albedo E_up / pi, E_up the light's irradiance on an upward normal. The vertex sees them over
+//   O = pi (1 - n_y) / 2 - sum_k t_k H_k   (>= 0),
+// the lower hemisphere's unoccluded irradiance weight (exact: a hemisphere's irradiance lies in
+// SH bands 0 and 1) minus the part the baked transfer t sees, H the SH9 of the lower hemisphere's
+// indicator (H_0 = 2 pi Y_0 = sqrt(pi), H_1 = -pi 0.488603, the others 0).
+vec3 groundBounceIrradiance(vec3 albedo, vec3 irradianceUp) {
+  float visibleBelow = vertexIn.transfer012.x * 1.7724539 - vertexIn.transfer012.y * 1.5349874;
+  float ny = normalize(vertexIn.normal).y;
+  float occludedBelow = max(0.5 * kPi * (1.0 - ny) - visibleBelow, 0.0);
+  return occludedBelow * albedo / kPi * irradianceUp;
+}
+
 vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 position, vec3 geometric, bool shadowed) {
   vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, residualShRadiance);
   vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, visibilityConeAxis(n, ao), irradiance);
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, specularWeight, specularColor);
-  mat2 rotation = shadowed ? shadowTapRotation() : mat2(1.0);
   for (int i = 0; i < lightCount; ++i) {
     vec3 l = lightDirection[i];
     vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightAngularRadius[i], lightCosSin[i]);
     if (shadowed && maxComponent(lit) > 0.0) {
       vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
-      lit *= shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4), rotation);
+      lit *= shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
     }
     radiance += lit;
+    // The light's bounce off what occludes the vertex below its horizon (groundBounceIrradiance).
+    radiance += diffuseWeight(lobes, schlickWeights(clamp(dot(n, v), 0.0, 1.0))) * m.baseColor / kPi *
+                groundBounceIrradiance(m.baseColor, lightRadiance[i] * uniformDiskIrradiance(l.y, lightAngularRadius[i]));
   }
   return radiance;
 }

@@ -1,97 +1,81 @@
 // Shadow maps of the engine's disk lights (docs/engine.md "Shadows", engine/gl/shadow_maps.h): one
-// orthographic depth map per light, fitted to the scene, filtered with percentage-closer soft
-// shadows (Fernando 2005, "Percentage-Closer Soft Shadows", SIGGRAPH sketch): a blocker search,
-// then PCF over the penumbra of a distant disk of angular radius sigma,
+// orthographic map per light, fitted to the objects, holding per texel the exponential moments
+// (d, exp(c (d - 1))) of its depth d (c = kShadowExponent; Annen et al. 2008, "Exponential Shadow
+// Maps"), box-filtered down a mip chain. A trilinear tap at level log2(w) is then the moments'
+// mean over a footprint about w texels wide: the soft shadow costs two taps a light whatever the
+// penumbra, and no branch (llvmpipe runs both sides of every branch). It follows percentage-closer
+// soft shadows (Fernando 2005): a blocker search over the largest penumbra a blocker could cast,
+// then the visible fraction over the penumbra of a distant disk of angular radius sigma,
 //   penumbra width = 2 (d_receiver - d_blocker) tan(sigma)     (d along the light direction),
-// with the receiver's plane followed by every tap (Isidoro 2006, "Shadow Mapping: GPU-based Tips and
-// Techniques", GDC: receiver plane depth bias), here from the geometric normal.
-// Needs shared_constants.glsl (units, kMaxEngineLights) and environment.glsl (kPi).
+// each read from a footprint's moments by one model (shadowBlockers), as Yang et al. 2010
+// ("Variance Soft Shadow Mapping") do with variance moments.
+// Needs shared_constants.glsl (units, kMaxEngineLights, kShadowExponent).
 
-layout(binding = kTextureUnitShadowDepth) uniform sampler2DArray shadowDepths;            // raw depths
-layout(binding = kTextureUnitShadowCompare) uniform sampler2DArrayShadow shadowCompare;   // compare mode
+layout(binding = kTextureUnitShadowDepth) uniform sampler2DArray shadowMoments;  // trilinear
 // Light i's map: world -> (u, v, depth) in [0, 1] (depth 0 on the side of the light).
 uniform mat4 shadowFromWorld[kMaxEngineLights];
-// World extent of the map: x, y the sides along shadowRight / shadowUp, z the depth range; w the
-// texel's side (the larger of x, y over the map's size).
+// World extent of the map: x, y the sides along u and v, z the depth range; w the texel's side.
 uniform vec4 shadowExtent[kMaxEngineLights];
-uniform vec3 shadowRight[kMaxEngineLights];
-uniform vec3 shadowUp[kMaxEngineLights];
 
 // Bias, in texels of the map: a constant depth offset, and the receiver moved along its geometric
 // normal (docs/engine.md "Shadows" says how they were chosen).
 const float kShadowDepthBiasTexels = 1.0;
 const float kShadowNormalOffsetTexels = 0.75;
+// The trilinear tap's footprint against a disk: level L averages 2^L texels and the bilinear
+// interpolation between its texels widens that to a quadratic B-spline of standard deviation
+// 2^L / 2; a disk of radius R has R / 2. Level log2(R) therefore spreads an edge as the disk does.
+// Both taps read the mean moments of their footprint; every pixel pays the same two taps.
 
-// Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
-// Advanced Warfare", SIGGRAPH course): a per-pixel rotation of the tap pattern, so that few taps
-// give noise rather than bands.
-float interleavedGradientNoise(vec2 pixel) {
-  return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
-}
-
-// The taps on the unit disk, uniform in area: golden-angle (Vogel 1979) spirals of
-// kBlockerSearchTaps and kPcfTaps points, tap i at radius sqrt((i + 0.5) / n) and angle
-// i 2.39996 (vogelDiskTaps in shadow_maps.cpp), turned per pixel by a 2 x 2 rotation.
-uniform vec2 blockerSearchTaps[kBlockerSearchTaps];
-uniform vec2 pcfTaps[kPcfTaps];
-
-// The per-pixel rotation of the taps, from interleavedGradientNoise.
-mat2 shadowTapRotation() {
-  float angle = 2.0 * kPi * interleavedGradientNoise(gl_FragCoord.xy);
-  float c = cos(angle), s = sin(angle);
-  return mat2(c, s, -s, c);
-}
-
-// A receiver in light i's map: its (u, v, depth) moved along its geometric normal, and its plane's
-// depth change per unit of uv (Isidoro 2006), the slope clamped at 84 degrees.
-struct ShadowReceiver {
-  vec3 s;
-  vec2 depthPerUv;
-};
-
-ShadowReceiver shadowReceiver(int i, vec3 position, vec3 g, vec3 l) {
-  vec4 extent = shadowExtent[i];
-  ShadowReceiver r;
-  r.s = (shadowFromWorld[i] * vec4(position + g * (kShadowNormalOffsetTexels * extent.w), 1.0)).xyz;
-  float gl = max(dot(g, l), 0.1);
-  r.depthPerUv = vec2(extent.x * dot(g, shadowRight[i]), extent.y * dot(g, shadowUp[i])) / (gl * extent.z);
-  return r;
-}
-
-// PCSS (Fernando 2005) at receiver r of light i, angular radius sigma (tanSigma), the taps turned by
-// `rotation`: the fraction of the disk visible.
-float pcssVisibility(int i, ShadowReceiver r, float tanSigma, mat2 rotation) {
-  vec4 extent = shadowExtent[i];
-  float texel = extent.w;
-  float receiver = r.s.z - kShadowDepthBiasTexels * texel / extent.z;
-  vec2 uvPerWorld = 1.0 / extent.xy;
-  // Blocker search over the largest penumbra a blocker could cast here (one at depth 0).
-  float searchWorld = max(r.s.z * extent.z * tanSigma, 1.5 * texel);
-  float blockers = 0.0, blockerDepth = 0.0;
-  for (int k = 0; k < kBlockerSearchTaps; ++k) {
-    vec2 offset = (rotation * blockerSearchTaps[k]) * searchWorld * uvPerWorld;
-    float d = texture(shadowDepths, vec3(r.s.xy + offset, float(i))).r;
-    if (d < receiver + dot(r.depthPerUv, offset)) {
-      blockers += 1.0;
-      blockerDepth += d;
-    }
+// The blockers in a footprint, from its mean moments `moments` at receiver depth z: the model is a
+// fraction f of the footprint at one depth z - x / c and the rest at the receiver's depth, which
+// has mean depth z - f x / c and mean exp(c (d - z)) = 1 - f (1 - exp(-x)). Solving the two for
+// x (q = (1 - exp(-x)) / x, two Newton steps from the right of the root of the concave
+// 1 - exp(-x) - q x) gives f also where a blocker is so close to the receiver that the
+// exponential test alone would leak (a contact shadow). Returns f and the blockers' separation
+// z - d_blocker = (z - mean depth) / f.
+// `spread`: c times the receiver plane's depth change over the footprint's standard deviation; a
+// plane alone then has mean exp(c (d - z)) = exp(spread^2 / 2) (the exponential is convex), which
+// is divided out so that a tilted receiver is not taken for a lit one in front of its blockers.
+vec2 shadowBlockers(vec2 moments, float z, float spread) {
+  float a = z - moments.x;
+  float b = 1.0 - moments.y * exp(kShadowExponent * (1.0 - z) - 0.5 * spread * spread);
+  bool blocked = a > 0.0 && b > 0.0;
+  float q = clamp(blocked ? b / (kShadowExponent * a) : 1.0, 1e-4, 0.9999);
+  float x = 2.0 * (1.0 - q) / q;
+  for (int k = 0; k < 2; ++k) {
+    float e = exp(-x);
+    x -= (1.0 - e - q * x) / (e - q);
   }
-  if (blockers == 0.0) return 1.0;
-  blockerDepth /= blockers;
-  // The penumbra's half width at this receiver; at least a texel (plain PCF where it is sharp).
-  float filterWorld = max((r.s.z - blockerDepth) * extent.z * tanSigma, texel);
-  float lit = 0.0;
-  for (int k = 0; k < kPcfTaps; ++k) {
-    vec2 offset = (rotation * pcfTaps[k]) * filterWorld * uvPerWorld;
-    lit += texture(shadowCompare, vec4(r.s.xy + offset, float(i), receiver + dot(r.depthPerUv, offset)));
-  }
-  return lit / float(kPcfTaps);
+  // No blocker lies in front of the map's near side (x <= c z). Where the mean depth is not in
+  // front of the receiver (a footprint that also holds surfaces far behind it), the exponential
+  // test alone: f = b.
+  x = blocked ? min(x, kShadowExponent * z) : 0.0;
+  float f = clamp(a > 0.0 ? b / max(1.0 - exp(-x), 1e-6) : b, 0.0, 1.0);
+  // The blockers' separation from the mean depth, a = f (z - d_blocker).
+  return vec2(f, blocked ? clamp(a / max(f, 1e-3), 0.0, z) : 0.0);
 }
 
 // The fraction of light i's disk visible from `position` (geometric normal g, facing the light:
-// g.l > 0), angular radius sigma (tanSigma). On llvmpipe every pixel pays the whole of it: a
-// software rasteriser runs both sides of every branch (masked), so the early return without
-// blockers saves nothing there (docs/engine.md "Shadows", the measured cost).
-float shadowVisibility(int i, vec3 position, vec3 g, vec3 l, float tanSigma, mat2 rotation) {
-  return pcssVisibility(i, shadowReceiver(i, position, g, l), tanSigma, rotation);
+// g.l > 0), angular radius sigma (tanSigma).
+float shadowVisibility(int i, vec3 position, vec3 g, vec3 l, float tanSigma) {
+  vec4 extent = shadowExtent[i];
+  float texel = extent.w;
+  vec3 s = (shadowFromWorld[i] * vec4(position + g * (kShadowNormalOffsetTexels * texel), 1.0)).xyz;
+  // Receivers beyond the map's depth range are on the ground outside the objects' footprint.
+  float z = min(s.z - kShadowDepthBiasTexels * texel / extent.z, 1.0);
+  float depthToTexels = extent.z * tanSigma / texel;  // penumbra half-width per unit of depth, texels
+  // The receiver plane's depth change per texel across the map (its slope clamped at 84 degrees),
+  // times c and the footprint's standard deviation per texel of radius (1/2: level log2(R)).
+  float gl = max(dot(g, l), 0.1);
+  float spreadPerTexel = 0.5 * kShadowExponent * sqrt(1.0 - gl * gl) / gl * texel / extent.z;
+  // Blocker search: over radius z tan(sigma), the penumbra of a blocker at the map's near side.
+  float searchRadius = max(z * depthToTexels, 1.0);
+  vec2 search = shadowBlockers(textureLod(shadowMoments, vec3(s.xy, float(i)), log2(searchRadius)).rg, z,
+                               spreadPerTexel * searchRadius);
+  // The penumbra's half width from the blockers' depth; at least a texel.
+  float radius = max(search.y * depthToTexels, 1.0);
+  vec2 filtered = shadowBlockers(textureLod(shadowMoments, vec3(s.xy, float(i)), log2(radius)).rg, z,
+                                 spreadPerTexel * radius);
+  return 1.0 - filtered.x;
 }
+

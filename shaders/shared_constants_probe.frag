@@ -17,8 +17,8 @@ const float kValues[] = float[](
     kTextureUnitOcclusion, kTextureUnitEmissive, kSlotBaseColor, kSlotMetallicRoughness, kSlotNormal, kSlotOcclusion,
     kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend, kShadingModeIrradiance,
     kShadingModeIrradianceAoBent, kTextureUnitIrradiance, kShadingModeLights, kShadingModeLightsShadowed,
-    kTextureUnitResidualSpecular, kTextureUnitShadowDepth, kTextureUnitShadowCompare, kMaxEngineLights,
-    kBlockerSearchTaps, kPcfTaps, kDeltaAlpha);
+    kTextureUnitResidualSpecular, kTextureUnitShadowDepth, kMaxEngineLights,
+    kShadowMapSize, kShadowExponent, kDeltaAlpha);
 
 void main() {
   int i = int(gl_FragCoord.x);

@@ -116,12 +116,11 @@ std::string sharedConstants() {
                         {"kTextureUnitEmissive", kTextureUnitEmissive},
                         {"kTextureUnitIrradiance", kTextureUnitIrradiance},
                         {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
-                        {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
-                        {"kTextureUnitShadowCompare", kTextureUnitShadowCompare}});
-  text += intConstants("iblkit::kMaxEngineLights, kBlockerSearchTaps, kPcfTaps (engine/gl/light_constants.h)",
-                       {{"kMaxEngineLights", kMaxEngineLights},
-                        {"kBlockerSearchTaps", kBlockerSearchTaps},
-                        {"kPcfTaps", kPcfTaps}});
+                        {"kTextureUnitShadowDepth", kTextureUnitShadowDepth}});
+  text += intConstants("iblkit::kMaxEngineLights, kShadowMapSize (engine/gl/light_constants.h)",
+                       {{"kMaxEngineLights", kMaxEngineLights}, {"kShadowMapSize", kShadowMapSize}});
+  text += "// iblkit::kShadowExponent (engine/gl/light_constants.h)\nconst float kShadowExponent = " +
+          floatLiteral(kShadowExponent) + ";\n";
   text += intConstants("iblkit::TextureSlot (core/texture.h)",
                        {{"kSlotBaseColor", int(kSlotBaseColor)},
                         {"kSlotMetallicRoughness", int(kSlotMetallicRoughness)},

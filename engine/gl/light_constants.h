@@ -9,10 +9,12 @@ namespace iblkit {
 inline constexpr int kMaxEngineLights = 4;
 
 // Side of each light's square shadow map, in texels (docs/engine.md "Shadows").
-inline constexpr int kShadowMapSize = 2048;
+inline constexpr int kShadowMapSize = 1024;
 
-// Taps of the shadow lookups (shaders/shadow.glsl): PCSS's blocker search and its PCF.
-inline constexpr int kBlockerSearchTaps = 6;
-inline constexpr int kPcfTaps = 8;
+// The exponent c of the shadow maps' exponential moments exp(c (d - 1)) (d the depth in [0, 1]):
+// exp(-c) must stay a normal 32-bit float (c < 87); the larger c, the closer to a blocker a
+// receiver may be before the filtered test leaks light (Annen et al. 2008, "Exponential Shadow
+// Maps").
+inline constexpr float kShadowExponent = 80.0f;
 
 }  // namespace iblkit

@@ -43,8 +43,9 @@ float envRotationFromBake(const EnvironmentStages& env, std::optional<float> deg
 struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;
-  // mesh.frag specialised per (mode, layer, texture slots read, alpha mode), compiled on first use.
-  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode>, ShaderProgram> meshPrograms;
+  // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn), compiled
+  // on first use.
+  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int>, ShaderProgram> meshPrograms;
   MaterialTextures materialTextures;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
@@ -62,16 +63,22 @@ struct Renderer::Impl {
   // mesh; a slot not bound costs nothing, and untextured meshes keep the untextured shader.
   // `alphaMode`: MASK and BLEND compile the discard / sample mask in (mesh.frag's ALPHA_MODE), so
   // opaque meshes keep the early depth test.
-  const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode) {
+  // `lightCount`: the lights modes' number of drawn lights (dominant_lights.glsl's LIGHT_COUNT), a
+  // constant so that the lights loop unrolls with constant indices (llvmpipe pays a loop over a
+  // uniform count and its indexed uniforms per pixel); 0 in the other modes.
+  const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode,
+                                   int lightCount) {
     // The feature layers do not depend on the mode: one program each.
     if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
-    const auto key = std::make_tuple(mode, layer, slots, alphaMode);
+    if (mode != ShadingMode::Lights && mode != ShadingMode::LightsShadowed) lightCount = 0;
+    const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount);
     auto found = meshPrograms.find(key);
     if (found == meshPrograms.end()) {
       const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
                                   "\n#define FRAME_LAYER " + std::to_string(int(layer)) +
                                   "\n#define TEXTURED " + std::to_string(slots) +
-                                  "\n#define ALPHA_MODE " + std::to_string(int(alphaMode));
+                                  "\n#define ALPHA_MODE " + std::to_string(int(alphaMode)) +
+                                  "\n#define LIGHT_COUNT " + std::to_string(lightCount);
       found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
     }
     return found->second;
@@ -146,9 +153,10 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     drawn = drawnLights(r.lightStages, settings.lightCount, settings.envRotationDegrees);
     if (mode == ShadingMode::LightsShadowed) {
       if (!r.shadowMaps) r.shadowMaps = std::make_unique<ShadowMaps>(kShadowMapSize);
-      std::vector<glm::vec3> directions;
-      for (const EnvironmentLight& light : drawn.lights) directions.push_back(light.direction);
-      r.shadowMaps->update(r.scene.meshes, r.meshes, directions);
+      std::vector<ShadowLight> shadowLights;
+      for (const EnvironmentLight& light : drawn.lights)
+        shadowLights.push_back({light.direction, std::tan(light.angularRadius)});
+      r.shadowMaps->update(r.scene.meshes, r.meshes, shadowLights);
       r.shadowMaps->bind();
     }
     glBindTextureUnit(kTextureUnitResidualSpecular, drawn.residualChain ? r.residualSpecular.id() : r.specular.id());
@@ -200,7 +208,6 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     program.set("specularRotation", inverseRotation(settings.envRotationDegrees));
     program.set("specularLevels", float(r.specularLevels));
     if (!lightsMode) return;
-    program.set("lightCount", int(drawn.lights.size()));
     for (std::size_t i = 0; i < drawn.lights.size(); ++i) {
       const EnvironmentLight& light = drawn.lights[i];
       program.set(uniformElement("lightDirection", i).c_str(), light.direction);
@@ -222,7 +229,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const Material& material = r.scene.materials.at(std::size_t(mesh.material));
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
-    const ShaderProgram& program = r.meshProgram(mode, settings.layer, slots, material.alphaMode);
+    const ShaderProgram& program = r.meshProgram(mode, settings.layer, slots, material.alphaMode, int(drawn.lights.size()));
     if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
       setFrameUniforms(program);
       prepared.push_back(&program);
@@ -243,7 +250,6 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   glDisable(GL_CULL_FACE);
   for (GLuint unit = kTextureUnitBaseColor; unit <= kTextureUnitEmissive; ++unit) glBindSampler(unit, 0);
   glBindSampler(kTextureUnitShadowDepth, 0);
-  glBindSampler(kTextureUnitShadowCompare, 0);
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(0);
   glUseProgram(0);

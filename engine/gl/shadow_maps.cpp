@@ -1,6 +1,7 @@
 #include "engine/gl/shadow_maps.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -8,28 +9,86 @@
 #include "engine/gl/texture_unit.h"
 
 namespace iblkit {
+namespace {
 
-ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const glm::vec3& towardsLight, int size) {
-  const glm::vec3 d = glm::normalize(towardsLight);
+// The plane n.p = offset of a mesh whose vertices all lie on one (within 1e-4 of its size); false
+// for a mesh that is not planar or has no triangle of area.
+bool meshPlane(const Mesh& mesh, glm::vec3& normal, float& offset) {
+  if (mesh.positions.empty()) return false;
+  const Bounds bounds = mesh.bounds();
+  const float tolerance = 1e-4f * std::max(bounds.radius(), 1e-6f);
+  float bestArea = 0.0f;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
+                    c = mesh.positions[mesh.indices[t + 2]];
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float area = glm::length(n);
+    if (area > bestArea) bestArea = area, normal = n / area, offset = glm::dot(normal, a);
+  }
+  if (bestArea <= 0.0f) return false;
+  return std::all_of(mesh.positions.begin(), mesh.positions.end(),
+                     [&](const glm::vec3& p) { return std::abs(glm::dot(normal, p) - offset) <= tolerance; });
+}
+
+}  // namespace
+
+ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& light, int size) {
+  const glm::vec3 d = glm::normalize(light.towardsLight);
   // Any basis perpendicular to the light; the map is a square over the fitted rectangle.
   const glm::vec3 helper = std::abs(d.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
   ShadowFrame frame;
   frame.right = glm::normalize(glm::cross(helper, d));
   frame.up = glm::cross(d, frame.right);
+  auto inLightFrame = [&](const glm::vec3& p) { return glm::vec3(glm::dot(p, frame.right), glm::dot(p, frame.up), glm::dot(p, d)); };
+  const bool anyObject = std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return !m.isGround && !m.positions.empty(); });
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const Mesh& mesh : meshes)
-    for (const glm::vec3& p : mesh.positions) {
-      const glm::vec3 q(glm::dot(p, frame.right), glm::dot(p, frame.up), glm::dot(p, d));
-      lo = glm::min(lo, q);
-      hi = glm::max(hi, q);
-    }
+    if (!anyObject || !mesh.isGround)
+      for (const glm::vec3& p : mesh.positions) {
+        const glm::vec3 q = inLightFrame(p);
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+      }
   if (lo.x > hi.x) lo = glm::vec3(-1.0f), hi = glm::vec3(1.0f);
-  // Two texels of margin on each side of u and v; a degenerate side (a plane seen edge-on) gets the
-  // other's size. Depth: a margin of 1% of the range (at least 1e-3 of the size) on both ends.
+  // The ground's depth under a rectangle [uvLo, uvHi] of the map: a plane's at the corners (the
+  // depth of a plane is linear across the map), else every vertex's.
+  auto groundDepths = [&](const glm::vec2& uvLo, const glm::vec2& uvHi) {
+    if (!anyObject) return;
+    for (const Mesh& mesh : meshes) {
+      if (!mesh.isGround) continue;
+      glm::vec3 n;
+      float offset = 0.0f;
+      if (meshPlane(mesh, n, offset) && std::abs(glm::dot(n, d)) > 1e-3f) {
+        for (int corner = 0; corner < 4; ++corner) {
+          const glm::vec2 uv((corner & 1) ? uvHi.x : uvLo.x, (corner & 2) ? uvHi.y : uvLo.y);
+          const glm::vec3 p = uv.x * frame.right + uv.y * frame.up;  // depth 0 on the plane through the origin
+          const float depth = (offset - glm::dot(n, p)) / glm::dot(n, d);
+          lo.z = std::min(lo.z, depth);
+          hi.z = std::max(hi.z, depth);
+        }
+      } else {
+        for (const glm::vec3& p : mesh.positions) {
+          const float depth = glm::dot(p, d);
+          lo.z = std::min(lo.z, depth);
+          hi.z = std::max(hi.z, depth);
+        }
+      }
+    }
+  };
+  // A degenerate side (a plane seen edge-on) gets the other's size.
   glm::vec2 side(hi.x - lo.x, hi.y - lo.y);
   const float largest = std::max({side.x, side.y, 1e-6f});
   side = glm::max(side, glm::vec2(largest * 1e-3f));
-  const glm::vec2 margin = side * (2.0f / float(size - 4));
+  // The blocker search of a receiver at depth z looks z tan(r) around it (shadow.glsl): with the
+  // ground's depth under the grown rectangle, grow it again until the margin covers the search at
+  // the far end (twice is enough for a sun of a few degrees; the margin only grows).
+  glm::vec2 margin = side * (2.0f / float(size - 4));
+  for (int pass = 0; pass < 3; ++pass) {
+    groundDepths(glm::vec2(lo) - margin, glm::vec2(lo) + side + margin);
+    const float search = 1.02f * (hi.z - lo.z) * light.tanAngularRadius;
+    margin = glm::vec2(search) + (side + 2.0f * search) * (2.0f / float(size - 4));
+  }
+  groundDepths(glm::vec2(lo) - margin, glm::vec2(lo) + side + margin);  // the final rectangle's
   const glm::vec2 uvLo = glm::vec2(lo) - margin;
   side += 2.0f * margin;
   const float depthMargin = std::max(0.01f * (hi.z - lo.z), 1e-3f * largest);
@@ -49,59 +108,58 @@ ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const glm::vec3& tow
 
 ShadowMaps::ShadowMaps(int size) : size_(size) {
   glCreateFramebuffers(1, &framebuffer_);
-  glCreateSamplers(1, &rawSampler_);
-  glCreateSamplers(1, &compareSampler_);
+  glCreateSamplers(1, &momentsSampler_);
+  // Outside the map: the far plane, whose moments are (1, exp(0)).
   const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  for (GLuint sampler : {rawSampler_, compareSampler_}) {
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, border);
-  }
-  glSamplerParameteri(rawSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glSamplerParameteri(rawSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(momentsSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glSamplerParameteri(momentsSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  glSamplerParameterfv(momentsSampler_, GL_TEXTURE_BORDER_COLOR, border);
+  glSamplerParameteri(momentsSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(momentsSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
 }
 
 ShadowMaps::~ShadowMaps() {
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
-  if (rawSampler_) glDeleteSamplers(1, &rawSampler_);
-  if (compareSampler_) glDeleteSamplers(1, &compareSampler_);
+  if (momentsSampler_) glDeleteSamplers(1, &momentsSampler_);
 }
 
 void ShadowMaps::update(const std::vector<Mesh>& meshes, const std::vector<GpuMesh>& gpuMeshes,
-                        const std::vector<glm::vec3>& directions) {
-  if (directions == directions_) return;
-  directions_ = directions;
+                        const std::vector<ShadowLight>& lights) {
+  if (lights == lights_) return;
+  lights_ = lights;
   frames_.clear();
-  if (directions.empty()) return;
-  const int layers = int(directions.size());
+  if (lights.empty()) return;
+  const int layers = int(lights.size());
   if (layers > layers_) {
-    GLuint id = 0;
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
-    glTextureStorage3D(id, 1, GL_DEPTH_COMPONENT32F, size_, size_, layers);
-    depth_ = GlTexture(id);
+    GLuint ids[2] = {0, 0};
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 2, ids);
+    int levels = 1;
+    while ((size_ >> levels) > 0) ++levels;
+    glTextureStorage3D(ids[0], 1, GL_DEPTH_COMPONENT32F, size_, size_, layers);
+    glTextureStorage3D(ids[1], levels, GL_RG32F, size_, size_, layers);
+    depth_ = GlTexture(ids[0]);
+    moments_ = GlTexture(ids[1]);
     layers_ = layers;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glDrawBuffer(GL_NONE);
-  glReadBuffer(GL_NONE);
+  glNamedFramebufferDrawBuffer(framebuffer_, GL_COLOR_ATTACHMENT0);
   glViewport(0, 0, size_, size_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // both faces: the ground is one-sided, meshes may be open
   glDisable(GL_SAMPLE_SHADING);
   depthProgram_.use();
+  const float far[4] = {1.0f, 1.0f, 0.0f, 0.0f};  // depth 1: moments (1, exp(0))
   for (int i = 0; i < layers; ++i) {
-    frames_.push_back(fitShadowFrame(meshes, directions[std::size_t(i)], size_));
+    frames_.push_back(fitShadowFrame(meshes, lights[std::size_t(i)], size_));
     glNamedFramebufferTextureLayer(framebuffer_, GL_DEPTH_ATTACHMENT, depth_.id(), 0, i);
-    glClearDepth(1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    glNamedFramebufferTextureLayer(framebuffer_, GL_COLOR_ATTACHMENT0, moments_.id(), 0, i);
+    glClearNamedFramebufferfv(framebuffer_, GL_COLOR, 0, far);
+    glClearNamedFramebufferfi(framebuffer_, GL_DEPTH_STENCIL, 0, 1.0f, 0);
     depthProgram_.set("shadowFromWorld", frames_.back().shadowFromWorld);
     for (const GpuMesh& mesh : gpuMeshes) mesh.draw();
   }
+  glGenerateTextureMipmap(moments_.id());
   ++renderCount_;
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(0);
@@ -110,32 +168,14 @@ void ShadowMaps::update(const std::vector<Mesh>& meshes, const std::vector<GpuMe
 }
 
 void ShadowMaps::bind() const {
-  glBindTextureUnit(kTextureUnitShadowDepth, depth_.id());
-  glBindTextureUnit(kTextureUnitShadowCompare, depth_.id());
-  glBindSampler(kTextureUnitShadowDepth, rawSampler_);
-  glBindSampler(kTextureUnitShadowCompare, compareSampler_);
-}
-
-std::vector<glm::vec2> vogelDiskTaps(int n) {
-  std::vector<glm::vec2> taps;
-  for (int i = 0; i < n; ++i) {
-    const float r = std::sqrt((float(i) + 0.5f) / float(n)), theta = float(i) * 2.39996323f;
-    taps.emplace_back(r * std::cos(theta), r * std::sin(theta));
-  }
-  return taps;
+  glBindTextureUnit(kTextureUnitShadowDepth, moments_.id());
+  glBindSampler(kTextureUnitShadowDepth, momentsSampler_);
 }
 
 void ShadowMaps::setUniforms(const ShaderProgram& program) const {
-  static const std::vector<glm::vec2> blockerTaps = vogelDiskTaps(kBlockerSearchTaps), pcfTaps = vogelDiskTaps(kPcfTaps);
-  for (int k = 0; k < kBlockerSearchTaps; ++k)
-    program.set(uniformElement("blockerSearchTaps", std::size_t(k)).c_str(), blockerTaps[std::size_t(k)]);
-  for (int k = 0; k < kPcfTaps; ++k)
-    program.set(uniformElement("pcfTaps", std::size_t(k)).c_str(), pcfTaps[std::size_t(k)]);
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     program.set(uniformElement("shadowFromWorld", i).c_str(), frames_[i].shadowFromWorld);
     program.set(uniformElement("shadowExtent", i).c_str(), frames_[i].extent);
-    program.set(uniformElement("shadowRight", i).c_str(), frames_[i].right);
-    program.set(uniformElement("shadowUp", i).c_str(), frames_[i].up);
   }
 }
 

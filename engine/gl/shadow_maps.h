@@ -1,9 +1,13 @@
 #pragma once
-// Shadow maps of the engine's disk lights (docs/engine.md "Shadows"): per light one square depth
-// map of kShadowMapSize texels (a layer of one GL_DEPTH_COMPONENT32F texture array), rendered with
-// an orthographic projection along the light fitted tightly to the scene's vertices, the ground
-// included. The lights are distant and the scene is static, so the maps depend only on the light
-// directions: update() renders them again only when a direction changed (a new environment, K, an
+// Shadow maps of the engine's disk lights (docs/engine.md "Shadows"): per light one square map of
+// kShadowMapSize texels, a layer of two texture arrays rendered together: the depth
+// (GL_DEPTH_COMPONENT32F, the depth test's buffer) and its exponential moments (GL_RG32F with a
+// full mip chain: (d, exp(kShadowExponent (d - 1))) per texel, box-filtered down by
+// glGenerateTextureMipmap), which shadow.glsl filters with one trilinear tap per pass. The
+// projection is orthographic along the light, fitted tightly to what can cast a shadow: the
+// objects (every mesh but the ground), with the ground's depth where it is under them. The lights
+// are distant and the scene is static, so the maps depend only on the lights: update() renders
+// them again only when a direction or an angular radius changed (a new environment, K, an
 // environment rotation), never because the camera moved.
 #include <epoxy/gl.h>
 
@@ -25,14 +29,23 @@ struct ShadowFrame {
   glm::vec4 extent{1.0f};
 };
 
-// The tight orthographic frame along `towardsLight` (unit, world) holding `meshes`' vertices, with
-// a margin of two texels of a `size`-texel map on each side (so that PCF taps at the border read
-// real depths). Empty meshes: a unit box at the origin.
-ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const glm::vec3& towardsLight, int size);
+// What a shadow map depends on: the unit direction towards the light and tan of its angular radius.
+struct ShadowLight {
+  glm::vec3 towardsLight{0.0f, 1.0f, 0.0f};
+  float tanAngularRadius = 0.0f;
+  bool operator==(const ShadowLight&) const = default;
+};
 
-// n points on the unit disk, uniform in area: the golden-angle spiral of Vogel 1979 (tap i at
-// radius sqrt((i + 0.5) / n), angle i x 2.39996 radians), the shadow lookups' taps.
-std::vector<glm::vec2> vogelDiskTaps(int n);
+// The tight orthographic frame along `light.towardsLight` for a `size`-texel map:
+// - across the light (u, v): the objects' vertices (the meshes not marked isGround; all meshes when
+//   there is none), grown on each side by the widest blocker search a receiver in the map makes
+//   (its depth range times tan of the angular radius) plus two texels. Outside it no object can
+//   shadow anything: shadow.glsl reads the border there, lit.
+// - along it (depth): the objects' vertices and the ground's points under the map's rectangle (a
+//   planar ground mesh's plane at the rectangle's corners; a ground that is not planar, or seen
+//   edge-on: all its vertices), 1% of margin at both ends. The ground further away is not drawn.
+// Empty meshes: a unit box at the origin.
+ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& light, int size);
 
 class ShadowMaps {
  public:
@@ -42,32 +55,32 @@ class ShadowMaps {
   ShadowMaps(const ShadowMaps&) = delete;
   ShadowMaps& operator=(const ShadowMaps&) = delete;
 
-  // Makes the maps those of `directions` (unit, towards each light): fits each frame and renders
-  // the depth of `gpuMeshes` (drawn like `meshes`, both faces, opaque) into its layer, only when
-  // the directions differ from the last call's. Leaves framebuffer 0 bound, the viewport to the
-  // caller (render() sets its own), program and vertex array 0, depth test off.
+  // Makes the maps those of `lights`: fits each frame, renders `gpuMeshes` (drawn like `meshes`,
+  // both faces, opaque) into its layer and builds the moments' mip chain, only when the lights
+  // differ from the last call's. Leaves framebuffer 0 bound, the viewport to the caller (render()
+  // sets its own), program and vertex array 0, depth test off.
   void update(const std::vector<Mesh>& meshes, const std::vector<GpuMesh>& gpuMeshes,
-              const std::vector<glm::vec3>& directions);
+              const std::vector<ShadowLight>& lights);
 
-  // Binds the maps to kTextureUnitShadowDepth (raw depths, nearest) and kTextureUnitShadowCompare
-  // (GL_COMPARE_REF_TO_TEXTURE, bilinear: 2 x 2 PCF per tap), outside the map: depth 1 (lit).
+  // Binds the moments to kTextureUnitShadowDepth (trilinear); outside the map they read as the
+  // far plane (lit).
   void bind() const;
   // Sets shadow.glsl's uniforms for the current frames.
   void setUniforms(const ShaderProgram& program) const;
 
   const std::vector<ShadowFrame>& frames() const { return frames_; }
   int size() const { return size_; }
-  // How many times the maps were rendered (each update that changed a direction): a camera move
+  // How many times the maps were rendered (each update that changed a light): a camera move
   // renders none.
   int renderCount() const { return renderCount_; }
 
  private:
   int size_;
-  int layers_ = 0;  // allocated layers of the texture array
-  GlTexture depth_;
-  GLuint framebuffer_ = 0, rawSampler_ = 0, compareSampler_ = 0;
+  int layers_ = 0;  // allocated layers of the texture arrays
+  GlTexture depth_, moments_;  // the depth test's buffer, the moments
+  GLuint framebuffer_ = 0, momentsSampler_ = 0;
   ShaderProgram depthProgram_{"shadow_depth.vert", "shadow_depth.frag"};
-  std::vector<glm::vec3> directions_;
+  std::vector<ShadowLight> lights_;
   std::vector<ShadowFrame> frames_;
   int renderCount_ = 0;
 };

@@ -22,11 +22,10 @@ enum TextureUnit : unsigned {
   kTextureUnitOcclusion = 10,
   kTextureUnitEmissive = 11,
   kTextureUnitIrradiance = 12,  // mesh.frag: the brute-force irradiance cube (the irradiance modes)
-  // mesh.frag's lights modes: the residual's specular chain, and the shadow maps (one depth texture
-  // array, bound twice: raw depths for the blocker search, compare mode for PCF).
+  // mesh.frag's lights modes: the residual's specular chain, and the shadow maps (the depths'
+  // exponential moments, one mip-mapped texture array, shadow_maps.h).
   kTextureUnitResidualSpecular = 13,
   kTextureUnitShadowDepth = 14,
-  kTextureUnitShadowCompare = 15,
 };
 
 }  // namespace iblkit

@@ -17,7 +17,9 @@ namespace iblkit {
 const std::vector<std::string>& viewerHelpLines() {
   static const std::vector<std::string> lines = {
       "1..9            shading mode: unlit, mirror, sh, irradiance, irradiance-ao-bent, sh-ao, sh-ao-bent, prt, full",
-      "[ ]             exposure -/+ 0.5 stop",
+      "[ ]             exposure -/+ 0.5 stop (locks it)",
+      "A               automatic exposure on / off (off: locked)",
+      "drop a file     open a scene (.json), a model (.gltf, .glb) or a map (.exr, .hdr)",
       "left drag       orbit (arrow keys too)",
       "right/mid drag  pan (shift + arrow keys too)",
       "wheel           zoom (+ / - and PageUp / PageDown too)",
@@ -189,9 +191,18 @@ PanelActions Panel::build(PanelContext& context) {
           settings.mode = kShadingModes[i];
       ImGui::EndCombo();
     }
-    ImGui::SliderFloat("exposure", &settings.exposure, -10.0f, 10.0f, "%.1f stops");
+    // Moving the slider locks the exposure where it is put; "auto" follows the frame's key again.
+    if (ImGui::SliderFloat("exposure", &settings.exposure, -16.0f, 16.0f, "%.1f stops")) context.autoExposure = false;
+    ImGui::SameLine();
+    ImGui::Checkbox("auto", &context.autoExposure);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("key value from the log-average luminance; unchecked: locked");
     ImGui::SliderFloat("env rotation", &settings.envRotationDegrees, -180.0f, 180.0f, "%.0f deg");
     ImGui::Checkbox("sky", &settings.drawSky);
+    ImGui::InputText("##open", openPath_, sizeof openPath_);
+    ImGui::SameLine();
+    if (ImGui::Button("open") && openPath_[0]) actions.open = openPath_;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("a scene (.json), a model (.gltf, .glb) or a map (.exr, .hdr); or drop one onto the window");
+    if (!context.openStatus.empty()) ImGui::TextWrapped("%s", context.openStatus.c_str());
     if (ImGui::CollapsingHeader("environment", ImGuiTreeNodeFlags_DefaultOpen))
       environmentSection(context.environments);
     if (ImGui::CollapsingHeader("textures", context.renderer.scene().textures.empty() ? 0 : ImGuiTreeNodeFlags_DefaultOpen))

@@ -26,12 +26,15 @@ struct PanelContext {
   const std::string& contextDescription;
   bool cameraMoved;                   // the reference no longer matches the view
   const std::string& lastScreenshot;  // "saved FILE.png", or why the last one failed
+  bool& autoExposure;                 // the exposure follows the frame's key (unchecked: locked)
+  const std::string& openStatus;      // "baking suzi.glb in memory (3 s) ...", or why an open failed
 };
 
 // Buttons the frame loop acts on.
 struct PanelActions {
   bool resetCamera = false;
   bool screenshot = false;
+  std::string open;  // a file typed into the "open" field: scene, model or map (as if dropped)
 };
 
 class Panel {
@@ -55,6 +58,7 @@ class Panel {
 
  private:
   int selectedMaterial_ = 0;  // the material the overrides edit
+  char openPath_[1024] = {};  // the "open" field
 };
 
 // The key and mouse help, one line each (the panel's help window and docs/viewer.md).

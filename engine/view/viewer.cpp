@@ -4,17 +4,21 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <future>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "bakefile/bake_folder.h"
+#include "core/auto_exposure.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "engine/gl/gl_debug.h"
@@ -45,6 +49,7 @@ struct PendingInput {
   std::vector<int> keys;  // key presses (and repeats), in order
   int mods = 0;
   double scroll = 0.0;
+  std::vector<fs::path> drops;  // files dropped onto the window
 };
 
 PendingInput& pendingInput(GLFWwindow* window) {
@@ -56,7 +61,7 @@ enum class Drag { None, Orbit, Pan, Divider };
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options)
-      : options_(options), bake_(options.loadScene(options.input)) {
+      : options_(options), bake_(options.loadScene(options.input, nullptr)), autoExposure_(options.autoExposure) {
     settings_.mode = parseShadingMode(options.mode);
     settings_.exposure = options.exposure;
     settings_.envRotationDegrees = envRotationFromBake(bake_.env, options.envRotation);
@@ -98,6 +103,9 @@ class Viewer {
       pendingInput(w).mods = mods;
     });
     glfwSetScrollCallback(window, [](GLFWwindow* w, double, double y) { pendingInput(w).scroll += y; });
+    glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
+      for (int i = 0; i < count; ++i) pendingInput(w).drops.emplace_back(paths[i]);
+    });
     panel_ = std::make_unique<Panel>(window);
     panel_->visible = options.panel;
     checkGlErrors("viewer setup");
@@ -109,8 +117,11 @@ class Viewer {
     for (int frame = 0; !window_->shouldClose() && (options_.frames == 0 || frame < options_.frames);
          ++frame) {
       glfwPollEvents();
+      if (frame == 1)  // --open: after the first frame, as if dropped
+        for (const fs::path& file : options_.open) input_.drops.push_back(file);
       handleInput();
-      if (std::optional<EnvironmentStages> stages = environments_->poll()) renderer_->setEnvironment(*stages);
+      pollOpenedScene(false);
+      if (std::optional<EnvironmentStages> stages = environments_->poll()) useEnvironment(std::move(*stages));
       const int width = window_->framebufferWidth(), height = window_->framebufferHeight();
       if (width <= 0 || height <= 0) {  // minimised
         glfwWaitEventsTimeout(0.1);
@@ -131,8 +142,9 @@ class Viewer {
     }
     if (!options_.screenshot.empty()) {
       // A switch still being prefiltered is waited for, so that a scripted run sees it.
+      pollOpenedScene(true);
       if (std::optional<EnvironmentStages> stages = environments_->waitForResult())
-        renderer_->setEnvironment(*stages);
+        useEnvironment(std::move(*stages));
       drawFrame(window_->framebufferWidth(), window_->framebufferHeight(),
                 screenshotFiles(options_.screenshot), false);
       checkGlErrors("screenshot");
@@ -143,7 +155,8 @@ class Viewer {
       const std::vector<double> steady(intervals.begin() + (intervals.size() > 2 ? 2 : 0), intervals.end());
       std::cout << "iblkit-view: " << intervals.size() << " frames, " << window_->framebufferWidth() << "x"
                 << window_->framebufferHeight() << ", " << window_->description() << ", median frame time "
-                << std::fixed << std::setprecision(2) << median(steady) << " ms\n";
+                << std::fixed << std::setprecision(2) << median(steady) << " ms, exposure " << settings_.exposure
+                << (autoExposure_ ? " (auto)" : " (locked)") << '\n';
     }
     return 0;
   }
@@ -158,6 +171,14 @@ class Viewer {
     const Camera camera = camera_->camera();
     renderer_->render(camera, settings_, target_->framebuffer(), width, height);
     target_->resolve();
+    // Automatic exposure: the frame's key brought to middle grey, measured on the first frame and
+    // every kExposureInterval-th after (a read-back of the linear frame; the exposure applies from
+    // this frame on, so the first frame shown is already exposed).
+    if (autoExposure_ && (exposureAge_ == 0 || exposureAge_ >= kExposureInterval || capture || !withPanel)) {
+      settings_.exposure = keyExposure(target_->readColor());
+      exposureAge_ = 0;
+    }
+    ++exposureAge_;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (comparison_)
       comparison_->present(*renderer_, target_->colorTexture(), settings_, width, height);
@@ -180,12 +201,97 @@ class Viewer {
     if (!withPanel) return;
     PanelContext context{
         settings_, *renderer_, originalMaterials_,     *environments_, comparison_.get(), median(recent_),
-        width,     height,     window_->description(), cameraMoved_,   lastScreenshot_};
+        width,     height,     window_->description(), cameraMoved_,   lastScreenshot_, autoExposure_, openStatus_};
     const PanelActions actions = panel_->build(context);
     panel_->render();
     if (actions.resetCamera) resetCamera();
     screenshotRequested_ |= actions.screenshot;
+    if (!actions.open.empty()) open(actions.open);
   }
+
+  // The environment a switch prefiltered: uploaded, and kept as the one a model opened later is
+  // lit by.
+  void useEnvironment(EnvironmentStages stages) {
+    renderer_->setEnvironment(stages);
+    bake_.env = std::move(stages);
+    exposureAge_ = 0;
+  }
+
+  // A dropped file, or one the panel's field names: a map is switched to (environment_switcher.h,
+  // its errors in the panel); a scene, model or bake folder is loaded (baked in memory when it is
+  // not a bake folder) on a worker thread while the window keeps drawing the current one. A file
+  // that cannot be opened leaves the scene as it is and says why in the panel.
+  void open(const fs::path& file) {
+    switch (openedKind(file)) {
+      case OpenedKind::Environment:
+        environments_->requestFile(file);
+        openStatus_.clear();
+        report("switching to " + file.string());
+        return;
+      case OpenedKind::Unsupported:
+        openStatus_ = file.string() + ": cannot open (expected .json, .gltf, .glb, .exr, .hdr or a bake folder)";
+        report(openStatus_);
+        return;
+      case OpenedKind::Scene:
+        break;
+    }
+    if (opening_.valid()) {
+      openStatus_ = file.string() + ": still opening " + openingFile_.filename().string() + ", try again after it";
+      report(openStatus_);
+      return;
+    }
+    openingFile_ = file;
+    openingStart_ = Clock::now();
+    opening_ = std::async(std::launch::async, [loader = options_.loadScene, file, current = bake_.env]() {
+      return loader(file, &current);
+    });
+    updateOpenStatus();
+    report("opening " + file.string());
+  }
+
+  void updateOpenStatus() {
+    const double seconds = std::chrono::duration<double>(Clock::now() - openingStart_).count();
+    std::ostringstream status;
+    status << "opening " << openingFile_.filename().string() << " (baking in memory when not a bake folder) "
+           << std::fixed << std::setprecision(1) << seconds << " s ...";
+    openStatus_ = status.str();
+  }
+
+  // Takes the scene a worker has loaded (`wait`: waits for it) and puts it in place of the shown
+  // one: renderer, materials, camera (the new scene's), environment switcher.
+  void pollOpenedScene(bool wait) {
+    if (!opening_.valid()) return;
+    if (!wait && opening_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      updateOpenStatus();
+      return;
+    }
+    try {
+      BakedScene bake = opening_.get();
+      environments_.reset();  // waits for its worker
+      renderer_.reset();
+      bake_ = std::move(bake);
+      renderer_ = std::make_unique<Renderer>(bake_, options_.anisotropy);
+      originalMaterials_ = renderer_->materials();
+      const float aspect = float(std::max(window_->framebufferWidth(), 1)) / float(std::max(window_->framebufferHeight(), 1));
+      camera_.emplace(sceneCamera(bake_.scene, aspect), bake_.scene.bounds);
+      cameraMoved_ = false;
+      settings_.envRotationDegrees = 0.0f;
+      environments_ = std::make_unique<EnvironmentSwitcher>(options_.envDir, bake_.env.rotationDegrees,
+                                                            bake_.env.intensity, options_.prepareEnvironment);
+      glfwSetWindowTitle(window_->window(), ("iblkit-view: " + openingFile_.filename().string()).c_str());
+      openStatus_ = "opened " + openingFile_.string();
+      exposureAge_ = 0;
+      checkGlErrors("open");
+    } catch (const Error& e) {
+      openStatus_ = std::string("cannot open: ") + e.what();
+    } catch (const std::exception& e) {
+      openStatus_ = "cannot open " + openingFile_.string() + ": " + e.what();
+    }
+    report(openStatus_);
+  }
+
+  // What the panel says about opening files, also on stderr (scripts and tests read it).
+  static void report(const std::string& line) { std::cerr << "iblkit-view: " << line << '\n'; }
 
   void resetCamera() {
     camera_->reset();
@@ -202,9 +308,15 @@ class Viewer {
         break;
       case GLFW_KEY_LEFT_BRACKET:
         settings_.exposure -= 0.5f;
+        autoExposure_ = false;  // a chosen exposure stays
         break;
       case GLFW_KEY_RIGHT_BRACKET:
         settings_.exposure += 0.5f;
+        autoExposure_ = false;
+        break;
+      case GLFW_KEY_A:
+        autoExposure_ = !autoExposure_;
+        exposureAge_ = 0;
         break;
       case GLFW_KEY_R:
         resetCamera();
@@ -263,6 +375,7 @@ class Viewer {
   void handleInput() {
     GLFWwindow* window = window_->window();
     const PendingInput input = std::exchange(input_, {});
+    for (const fs::path& file : input.drops) open(file);
     if (!panel_->wantsKeyboard())
       for (int key : input.keys) handleKey(key, input.mods);
     double x = 0.0, y = 0.0;
@@ -320,9 +433,31 @@ class Viewer {
   bool cameraMoved_ = false, screenshotRequested_ = false;
   std::vector<double> recent_;
   std::string lastScreenshot_;
+  static constexpr int kExposureInterval = 8;  // frames between automatic exposure measurements
+  bool autoExposure_;
+  int exposureAge_ = 0;  // frames since the exposure was measured; 0: measure on the next frame
+  std::future<BakedScene> opening_;  // a file being opened
+  fs::path openingFile_;
+  Clock::time_point openingStart_;
+  std::string openStatus_;
 };
 
+std::string lowerExtension(const fs::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
 }  // namespace
+
+OpenedKind openedKind(const fs::path& file) {
+  const std::string extension = lowerExtension(file);
+  if (extension == ".exr" || extension == ".hdr") return OpenedKind::Environment;
+  if (extension == ".json" || extension == ".gltf" || extension == ".glb") return OpenedKind::Scene;
+  std::error_code error;
+  if (fs::is_directory(file, error)) return OpenedKind::Scene;
+  return OpenedKind::Unsupported;
+}
 
 int runViewer(const ViewerOptions& options) {
   // Bad names fail before anything is loaded or opened.

@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "bakefile/bake_folder.h"
 #include "engine/gl/renderer.h"
@@ -13,9 +14,13 @@
 
 namespace iblkit {
 
-// Reads a bake folder, or bakes a scene in memory (the program decides how: iblkit-view binds the
-// baker library's loadOrBakeScene; the viewer itself depends on no baker).
-using SceneLoader = std::function<BakedScene(const std::filesystem::path& folderOrScene)>;
+// Reads a bake folder, or bakes a scene or model in memory (the program decides how: iblkit-view
+// binds the baker library's bakeInMemory; the viewer itself depends on no baker). `current` is
+// null for the scene the viewer starts with; for a file opened from the window (dropped, or the
+// panel's "open") it is the environment shown, which a bare model (.gltf, .glb) is lit by. Runs
+// on a worker thread for an opened file.
+using SceneLoader =
+    std::function<BakedScene(const std::filesystem::path& folderOrScene, const EnvironmentStages* current)>;
 
 struct ViewerOptions {
   std::filesystem::path input;  // bake folder, or a scene baked in memory
@@ -24,6 +29,7 @@ struct ViewerOptions {
   int width = 0, height = 0;    // window size; 0: the reference's, else the scene's
   std::string mode = "full";
   float exposure = 0.0f;
+  bool autoExposure = true;  // the exposure follows the frame's key (keyExposure); false: locked at `exposure`
   std::optional<float> envRotation;  // absolute about +Y (docs/conventions.md); unset: the bake's
   int samples = 1;  // MSAA
   bool noSky = false;
@@ -39,6 +45,7 @@ struct ViewerOptions {
   std::filesystem::path screenshot;   // written from the last frame, at exit, after a pending
                                       // environment switch has been uploaded
   bool panel = true;                  // false: start with the panel hidden (Tab shows it)
+  std::vector<std::filesystem::path> open;  // opened after the first frame, in turn, as if dropped
 };
 
 // Loads the bake (its errors first: no window opens for a bad bake), opens the window and runs the
@@ -46,5 +53,11 @@ struct ViewerOptions {
 // median frame time on stdout. Throws Error for bad input, a missing display ("cannot open a window
 // (...; use --headless)") or a GL error. Returns the exit status.
 int runViewer(const ViewerOptions& options);
+
+// What a file dropped onto the window (or typed into the panel's "open" field) is opened as.
+enum class OpenedKind { Environment, Scene, Unsupported };
+// .exr and .hdr: an environment map; .json, .gltf, .glb and folders: a scene (a bake folder is
+// a folder); anything else is unsupported. By extension, case-insensitive; nothing is read.
+OpenedKind openedKind(const std::filesystem::path& file);
 
 }  // namespace iblkit

@@ -65,15 +65,13 @@ TEST(EvaluateSurfaceMaterial, EachSlotReadsItsChannelsTimesItsFactors) {
     const auto& t = kTexels[x];
     const SurfaceMaterial s = evaluateSurfaceMaterial(f.material, f.sceneTextures, at(glm::vec2(0.25f + 0.5f * x, 0.5f)));
     const glm::vec3 srgbRgb(srgbToLinear(t[0]), srgbToLinear(t[1]), srgbToLinear(t[2]));
-    EXPECT_NEAR(glm::distance(s.material.baseColor, f.material.baseColor * srgbRgb), 0.0f, 1e-6f) << x;
+    EXPECT_NEAR(glm::distance(s.baseColor, f.material.baseColor * srgbRgb), 0.0f, 1e-6f) << x;
     EXPECT_NEAR(s.alpha, 0.9f * linear(t[3]), 1e-6f) << x;
-    EXPECT_NEAR(s.material.alpha, s.alpha, 1e-6f);
-    EXPECT_NEAR(s.material.roughness, 0.6f * linear(t[1]), 1e-6f) << x;  // G
-    EXPECT_NEAR(s.material.metallic, 0.7f * linear(t[2]), 1e-6f) << x;   // B
+    EXPECT_NEAR(s.alpha, s.alpha, 1e-6f);
+    EXPECT_NEAR(s.roughness, 0.6f * linear(t[1]), 1e-6f) << x;  // G
+    EXPECT_NEAR(s.metallic, 0.7f * linear(t[2]), 1e-6f) << x;   // B
     EXPECT_NEAR(s.occlusion, 1.0f + 0.75f * (linear(t[0]) - 1.0f), 1e-6f) << x;  // R
-    EXPECT_NEAR(glm::distance(s.material.emissive, f.material.emissive * srgbRgb), 0.0f, 1e-5f) << x;
-    EXPECT_FALSE(s.material.baseColorTexture.present());
-    EXPECT_FALSE(s.material.occlusionTexture.present());
+    EXPECT_NEAR(glm::distance(s.emissive, f.material.emissive * srgbRgb), 0.0f, 1e-5f) << x;
     EXPECT_EQ(s.normal, glm::vec3(0.0f, 0.0f, 1.0f));
     EXPECT_NEAR(surfaceAlpha(f.material, f.sceneTextures, at(glm::vec2(0.25f + 0.5f * x, 0.5f))), s.alpha, 1e-6f);
   }
@@ -84,19 +82,19 @@ TEST(EvaluateSurfaceMaterial, SlotBitsSwitchSlotsOff) {
   SurfaceInputs inputs = at(glm::vec2(0.25f, 0.5f));
   inputs.slots = 0;
   const SurfaceMaterial none = evaluateSurfaceMaterial(f.material, f.sceneTextures, inputs);
-  EXPECT_EQ(none.material.baseColor, f.material.baseColor);
+  EXPECT_EQ(none.baseColor, f.material.baseColor);
   EXPECT_EQ(none.alpha, f.material.alpha);
-  EXPECT_EQ(none.material.roughness, f.material.roughness);
-  EXPECT_EQ(none.material.metallic, f.material.metallic);
-  EXPECT_EQ(none.material.emissive, f.material.emissive);
+  EXPECT_EQ(none.roughness, f.material.roughness);
+  EXPECT_EQ(none.metallic, f.material.metallic);
+  EXPECT_EQ(none.emissive, f.material.emissive);
   EXPECT_EQ(none.occlusion, 1.0f);
   EXPECT_EQ(surfaceAlpha(f.material, f.sceneTextures, inputs), f.material.alpha);
   // Only metallic-roughness on: the others keep their factors.
   inputs.slots = kSlotMetallicRoughness;
   const SurfaceMaterial mr = evaluateSurfaceMaterial(f.material, f.sceneTextures, inputs);
-  EXPECT_EQ(mr.material.baseColor, f.material.baseColor);
+  EXPECT_EQ(mr.baseColor, f.material.baseColor);
   EXPECT_EQ(mr.occlusion, 1.0f);
-  EXPECT_NEAR(mr.material.roughness, 0.6f * linear(kTexels[0][1]), 1e-6f);
+  EXPECT_NEAR(mr.roughness, 0.6f * linear(kTexels[0][1]), 1e-6f);
 }
 
 TEST(EvaluateSurfaceMaterial, SlotsReadTheirTexCoordSet) {
@@ -106,7 +104,7 @@ TEST(EvaluateSurfaceMaterial, SlotsReadTheirTexCoordSet) {
   const SurfaceMaterial s =
       evaluateSurfaceMaterial(f.material, f.sceneTextures, at(glm::vec2(0.25f, 0.5f), glm::vec2(0.75f, 0.5f)));
   EXPECT_NEAR(s.occlusion, 1.0f + 0.75f * (linear(kTexels[1][0]) - 1.0f), 1e-6f);
-  EXPECT_NEAR(s.material.roughness, 0.6f * linear(kTexels[0][1]), 1e-6f);
+  EXPECT_NEAR(s.roughness, 0.6f * linear(kTexels[0][1]), 1e-6f);
 }
 
 TEST(EvaluateSurfaceMaterial, TextureWithoutAnImageLeavesTheFactors) {
@@ -114,7 +112,7 @@ TEST(EvaluateSurfaceMaterial, TextureWithoutAnImageLeavesTheFactors) {
   f.textures[0].image = 3;  // no such image
   const SceneTextures broken(f.textures, f.images, {f.material});
   const SurfaceMaterial s = evaluateSurfaceMaterial(f.material, broken, at(glm::vec2(0.25f, 0.5f)));
-  EXPECT_EQ(s.material.baseColor, f.material.baseColor);
+  EXPECT_EQ(s.baseColor, f.material.baseColor);
   EXPECT_EQ(s.occlusion, 1.0f);
 }
 

@@ -130,11 +130,11 @@ void compareWithCpu(const Scene& scene, const ProbePoints& p, unsigned slots, fl
     const SurfaceMaterial cpu = evaluateSurfaceMaterial(material, cpuTextures, in);
     const std::string where = "slots " + std::to_string(slots) + ", point " + std::to_string(i);
     const float srgb = tolerance + kSrgbDecodeTolerance;
-    EXPECT_LE(maxDifference(base[i], glm::vec4(cpu.material.baseColor, cpu.alpha)), srgb) << where;
-    EXPECT_LE(maxDifference(factors[i], glm::vec4(cpu.material.metallic, cpu.material.roughness, cpu.occlusion, 0.0f)),
+    EXPECT_LE(maxDifference(base[i], glm::vec4(cpu.baseColor, cpu.alpha)), srgb) << where;
+    EXPECT_LE(maxDifference(factors[i], glm::vec4(cpu.metallic, cpu.roughness, cpu.occlusion, 0.0f)),
               tolerance)
         << where;
-    EXPECT_LE(maxDifference(emissive[i], glm::vec4(cpu.material.emissive, 0.0f)), 2.0f * srgb) << where;
+    EXPECT_LE(maxDifference(emissive[i], glm::vec4(cpu.emissive, 0.0f)), 2.0f * srgb) << where;
     EXPECT_LE(maxDifference(normal[i], glm::vec4(cpu.normal, 0.0f)), 4.0f * tolerance) << where;
   }
 }

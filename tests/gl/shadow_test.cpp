@@ -336,5 +336,30 @@ TEST_F(ShadowTest, ShadowStartsAtTheContact) {
   EXPECT_GE(checked, 5);
 }
 
+// The sun's bounce off the ground (docs/dominant-lights.md, "Bounce light of the suns"): a point of
+// the sphere facing the camera and slightly down, which the high sun does not reach, is lit by the
+// sky and the sunlit ground. Without the bounce term the engine gave it only the sky's share.
+TEST_F(ShadowTest, SunlitGroundLightsTheSphereFromBelow) {
+  // The sphere has the ground's albedo, the model's assumption (its occluders have the vertex's).
+  const nlohmann::json sphere = {{{"shape", "sphere"}, {"translation", {0.0, 1.5, 0.0}}, {"scale", 0.5},
+                                  {"material", {{"baseColor", {0.5, 0.5, 0.5}}, {"metallic", 0.0}, {"roughness", 1.0}, {"specular", 0.0}}}}};
+  const SunScene s = writeSunScene("ground_bounce", sunDirection(-90.0f, 80.0f), 1.5f, sphere);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  const Image engine = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
+  const Image reference = renderTrace(s);
+  const glm::vec3 normal = glm::normalize(glm::vec3(0.0f, -0.3f, 0.95f));
+  const glm::vec2 p = project(bake, glm::vec3(0.0f, s.sphereY, 0.0f) + 0.5f * normal);
+  double e = 0.0, r = 0.0;
+  for (int y = int(p.y) - 2; y <= int(p.y) + 2; ++y)
+    for (int x = int(p.x) - 2; x <= int(p.x) + 2; ++x) {
+      e += luminance(glm::vec3(engine.at(x, y)));
+      r += luminance(glm::vec3(reference.at(x, y)));
+    }
+  std::cout << "engine " << e / 25.0 << ", reference " << r / 25.0 << '\n';
+  EXPECT_GT(r, 0.0);
+  EXPECT_NEAR(e / r, 1.0, 0.15);
+}
+
 }  // namespace
 }  // namespace iblkit

@@ -42,8 +42,8 @@ const std::vector<float> kCppValues = {
     float(AlphaMode::Opaque),     float(AlphaMode::Mask),       float(AlphaMode::Blend),
     float(ShadingMode::Irradiance), float(ShadingMode::IrradianceAoBent), float(kTextureUnitIrradiance),
     float(ShadingMode::Lights),   float(ShadingMode::LightsShadowed), float(kTextureUnitResidualSpecular),
-    float(kTextureUnitShadowDepth), float(kTextureUnitShadowCompare), float(kMaxEngineLights),
-    float(kBlockerSearchTaps),    float(kPcfTaps),              kDeltaAlpha};
+    float(kTextureUnitShadowDepth), float(kMaxEngineLights),
+    float(kShadowMapSize),        kShadowExponent,              kDeltaAlpha};
 
 TEST(SharedConstants, GlslValuesEqualTheCppOnes) {
   const int n = int(kCppValues.size()) + 1;  // one texel past the table: the probe's -1
@@ -109,8 +109,7 @@ TEST(SharedConstants, SamplersReadTheTextureUnitsTheCppBinds) {
   const ShaderProgram shadowed("mesh.vert", "mesh.frag",
                                "#define SHADING_MODE " + std::to_string(int(ShadingMode::LightsShadowed)));
   EXPECT_EQ(samplerUnit(shadowed, "residualSpecularCube"), GLint(kTextureUnitResidualSpecular));
-  EXPECT_EQ(samplerUnit(shadowed, "shadowDepths"), GLint(kTextureUnitShadowDepth));
-  EXPECT_EQ(samplerUnit(shadowed, "shadowCompare"), GLint(kTextureUnitShadowCompare));
+  EXPECT_EQ(samplerUnit(shadowed, "shadowMoments"), GLint(kTextureUnitShadowDepth));
   const ShaderProgram sky("fullscreen.vert", "sky.frag");
   EXPECT_EQ(samplerUnit(sky, "latLongMap"), GLint(kTextureUnitLatLong));
   const ShaderProgram present("fullscreen.vert", "present.frag");

@@ -134,7 +134,7 @@ TEST(TexturedRenderer, UnlitQuadShowsTheCpuBaseColor) {
       if (!uv || !insideTexel(*uv)) continue;
       SurfaceInputs in;
       in.texcoords[0] = *uv;
-      const glm::vec3 expected = evaluateSurfaceMaterial(bake.scene.materials[0], textures, in).material.baseColor;
+      const glm::vec3 expected = evaluateSurfaceMaterial(bake.scene.materials[0], textures, in).baseColor;
       const glm::vec4 p = frame.image.at(x, y);
       maxError = std::max(maxError, glm::length(glm::vec3(p) - expected));
       EXPECT_NEAR(p.a, 1.0f, 0.0f) << x << ", " << y;
@@ -175,7 +175,7 @@ TEST(TexturedRenderer, TrilinearQuadMatchesTheCpuOnAverage) {
       SurfaceInputs in;
       in.texcoords[0] = *uv;
       in.footprintUv[0] = glm::length(*right - *uv);
-      const glm::vec3 expected = evaluateSurfaceMaterial(bake.scene.materials[0], textures, in).material.baseColor;
+      const glm::vec3 expected = evaluateSurfaceMaterial(bake.scene.materials[0], textures, in).baseColor;
       error += glm::length(glm::vec3(frame.image.at(x, y)) - expected);
       ++compared;
     }

@@ -214,7 +214,7 @@ TEST(IblkitInfo, BundledScenesLoad) {
     }
     ++count;
   }
-  EXPECT_EQ(count, 6);  // mirror_sphere, diffuse_sphere, bunny, suzi, pmndrs, tiles
+  EXPECT_EQ(count, 7);  // mirror_sphere, diffuse_sphere, bunny, bunny_esplanade, suzi, pmndrs, tiles
 }
 
 TEST(IblkitInfo, PngPreviewNeedsOneImage) {

@@ -60,9 +60,11 @@ TEST(IblkitReport, LoneSpheresScoreEveryModeHoldTheirClaimsAndRerunFromTheCache)
   for (const json& entry : document["cases"]) {
     EXPECT_GT(entry["reference"]["spp"].get<int>(), 0);
     EXPECT_GT(entry["scoredPixels"].get<int>(), 100) << entry["scene"];
-    // mirror, sh, irradiance, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed (the glTF occlusion modes
-    // need an occlusion texture).
-    ASSERT_EQ(entry["modes"].size(), 9u);
+    // The modes that apply (report/case_modes.h; the glTF occlusion modes need an occlusion texture):
+    // the metallic mirror sphere has no diffuse lobe, so mirror, full, lights, lights-shadowed; the
+    // Lambert diffuse sphere no specular one, so sh, irradiance, sh-ao, sh-ao-bent, prt and those three.
+    ASSERT_EQ(entry["modes"].size(), entry["scene"] == "mirror_sphere" ? 4u : 8u) << entry["scene"];
+    EXPECT_EQ(entry["modes"].size() + entry["notApplicable"].size(), document["settings"]["modes"].size());
     // The map's kind (report/map_kind.h): sky has a sun, studio softboxes.
     EXPECT_EQ(entry["mapKind"], entry["environment"] == "sky" ? "sunny" : "studio") << entry["environment"];
     for (const json& mode : entry["modes"]) {

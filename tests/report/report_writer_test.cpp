@@ -4,8 +4,10 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
+#include "report/label_layout.h"
 #include "support/test_paths.h"
 
 namespace iblkit {
@@ -112,6 +114,63 @@ TEST(ReportWriter, LadderPlotHasALinePerEnvironmentAndTheMean) {
   EXPECT_EQ(lines, 3u);
   EXPECT_NE(svg.find(">sky</text>"), std::string::npos);
   EXPECT_NE(svg.find(">city</text>"), std::string::npos);
+}
+
+
+// Six maps whose lines end at the same mean FLIP: their labels at the plot's right are spread.
+TEST(ReportWriter, LadderLabelsDoNotOverlap) {
+  std::vector<CaseResult> cases;
+  for (const char* environment : {"sky", "esplanade", "studio", "city", "forest", "sunset"}) {
+    CaseResult result;
+    result.scene = "bunny";
+    result.environment = environment;
+    for (const char* mode : {"sh", "full"}) {
+      ModeResult modeResult;
+      modeResult.mode = mode;
+      modeResult.scores.meanFlip = 0.1;
+      result.modes.push_back(modeResult);
+    }
+    cases.push_back(result);
+  }
+  const std::string svg = ladderSvg(cases, "bunny", {"sh", "full"});
+  const std::regex label("<text class=label x=\"([0-9.-]+)\" y=\"([0-9.-]+)\">(.*?)</text>");
+  std::vector<LabelBox> boxes;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), label); it != std::sregex_iterator(); ++it)
+    boxes.push_back({std::stod((*it)[1]), std::stod((*it)[2]) - 11.0, labelWidth((*it)[3], 11), 11.0});
+  ASSERT_EQ(boxes.size(), 7u);  // six maps and the mean
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) EXPECT_FALSE(overlaps(boxes[i], boxes[j])) << i << " " << j;
+}
+
+// The page's order: claims, summary, then the scenes; each case collapsed with its large view;
+// a mode that does not apply marked n/a with its reason, and listed in report.json.
+TEST(ReportWriter, SummaryFirstCasesCollapsedModesThatDoNotApplyMarked) {
+  ReportSummary summary = summaryWithOneFailure();
+  for (CaseResult& result : summary.cases) {
+    result.referenceImage = "images/" + result.scene + "-" + result.environment + "-reference.png";
+    result.linearImages = "images/" + result.scene + "-" + result.environment + "-linear.js";
+    result.notApplicable = {{"mirror", "no specular lobe: every material is pure Lambert"}};
+  }
+  summary.modes.insert(summary.modes.begin(), "mirror");
+  const auto file = test::scratchDir() / "order.html";
+  writeReportHtml(file, summary);
+  const std::string html = readText(file);
+  const std::size_t claims = html.find("What the numbers must show"), table = html.find("<h2>Summary</h2>"),
+                    scene = html.find("<h2 id=\"scene-bunny\">");
+  ASSERT_NE(scene, std::string::npos);
+  EXPECT_LT(claims, table);
+  EXPECT_LT(table, scene);
+  EXPECT_NE(html.find("<td class=na title=\"no specular lobe: every material is pure Lambert\">n/a</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<details class=case id=\"case-bunny-sky\">"), std::string::npos);
+  EXPECT_EQ(html.find("<details class=case open"), std::string::npos);
+  EXPECT_NE(html.find("data-linear=\"images/bunny-sky-linear.js\""), std::string::npos);
+  EXPECT_NE(html.find("const ACES = {a: 2.51"), std::string::npos);  // core's constants in the script
+  EXPECT_NE(html.find("class=cost"), std::string::npos);             // frame times are there: the cost plot
+  const auto jsonFile = test::scratchDir() / "order.json";
+  writeReportJson(jsonFile, summary);
+  const nlohmann::json report = nlohmann::json::parse(readText(jsonFile));
+  EXPECT_EQ(report["cases"][0]["notApplicable"][0]["mode"], "mirror");
 }
 
 }  // namespace

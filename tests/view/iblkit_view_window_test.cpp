@@ -7,9 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <vector>
 
+#include "core/auto_exposure.h"
 #include "core/image_io.h"
 #include "support/test_paths.h"
 
@@ -190,7 +193,7 @@ TEST_F(IblkitViewWindow, SwitchesToAnotherEnvironment) {
   const ProgramRun missing =
       run(program("iblkit-view") + " " + windowArguments("--env " + shellQuoted(dir_ / "no.exr")));
   EXPECT_EQ(missing.status, 1);
-  EXPECT_TRUE(missing.output.ends_with("iblkit-view: " + (dir_ / "no.exr").string() + ": no such file\n"))
+  EXPECT_TRUE(missing.output.ends_with("iblkit-view: " + (dir_ / "no.exr").string() + ": cannot open: No such file or directory\n"))
       << missing.output;
 }
 
@@ -241,6 +244,89 @@ TEST_F(IblkitViewWindow, BadInputFailsBeforeAWindowOpens) {
                 .status,
             2);
   EXPECT_EQ(run(program("iblkit-view") + " " + shellQuoted(bake_) + " --bench 2").status, 2);
+}
+
+}  // namespace
+}  // namespace iblkit
+
+namespace iblkit {
+namespace {
+
+// The mean display value of a PNG (sRGB-encoded, 0..1).
+double meanValue(const Image& png) {
+  double sum = 0.0;
+  for (const glm::vec4& p : png.pixels()) sum += (p.r + p.g + p.b) / 3.0;
+  return sum / double(png.pixels().size());
+}
+
+TEST_F(IblkitViewWindow, HeadlessModelWithEnvAgreesWithTheSameSceneFileAndABadMapIsOneLine) {
+  const fs::path model = test::assetsDir() / "models" / "suzi.glb";
+  const fs::path map = test::assetsDir() / "hdri" / "studio.exr";
+  const fs::path scene = dir_ / "suzi_bare.json";
+  {
+    std::ofstream out(scene);
+    out << "{\"models\": [{\"file\": \"" << fs::absolute(model).string() << "\"}], \"environment\": {\"file\": \""
+        << fs::absolute(map).string() << "\"}}";
+  }
+  const std::string size = " --width 80 --height 60 --ao-rays 4";
+  ProgramRun r = run(program("iblkit-view") + " " + shellQuoted(model) + " --env " + shellQuoted(map) +
+                     " --headless -o " + shellQuoted(dir_ / "model.exr") + size);
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = run(program("iblkit-view") + " " + shellQuoted(scene) + " --headless -o " + shellQuoted(dir_ / "scene.exr") + size);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image a = readExr(dir_ / "model.exr"), b = readExr(dir_ / "scene.exr");
+  ASSERT_EQ(a.pixels().size(), b.pixels().size());
+  double lit = 0.0;
+  for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+    EXPECT_LE(maxComponent(glm::abs(a.pixels()[i] - b.pixels()[i])), 1e-4f * (1.0f + maxComponent(b.pixels()[i])));
+    lit += maxComponent(a.pixels()[i]);
+  }
+  EXPECT_GT(lit, 1.0);
+  const fs::path missing = dir_ / "missing.exr";
+  r = run(program("iblkit-view") + " " + shellQuoted(model) + " --env " + shellQuoted(missing) + " --headless -o " +
+          shellQuoted(dir_ / "bad.exr") + size);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.output, "iblkit-view: " + missing.string() + ": cannot open: No such file or directory\n");
+  EXPECT_FALSE(fs::exists(dir_ / "bad.exr"));
+}
+
+TEST_F(IblkitViewWindow, StartsWellExposedOnSuziAndAGivenExposureIsLocked) {
+  const fs::path scene = test::assetsDir() / "scenes" / "suzi.json";
+  const std::string common = shellQuoted(scene) + " --width 160 --height 90 --ao-rays 4 --env-dir " +
+                             shellQuoted(dir_ / "no-maps") + " --frames 3 --screenshot ";
+  ProgramRun r = run(inWindow(common + shellQuoted(dir_ / "auto.png")));
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = run(inWindow(common + shellQuoted(dir_ / "locked.png") + " --exposure 3"));  // given: locked there
+  ASSERT_EQ(r.status, 0) << r.output;
+  // The exposure printed is the key exposure of the frame's radiance (the screenshot's EXR); the
+  // frame is then near middle grey on average (0.18 is about 0.46 in sRGB).
+  const Image radiance = readExr(dir_ / "auto.exr");
+  std::ostringstream expected;
+  expected << std::fixed << std::setprecision(2) << "exposure " << keyExposure(radiance) << " (auto)";
+  ProgramRun automatic = run(inWindow(common + shellQuoted(dir_ / "auto2.png")));
+  EXPECT_NE(automatic.output.find(expected.str()), std::string::npos) << automatic.output << " vs " << expected.str();
+  EXPECT_LT(keyExposure(radiance), -0.5f);  // studio at exposure 0 is too bright for the key
+  const double shown = meanValue(readPng(dir_ / "auto.png"));
+  EXPECT_GT(shown, 0.3);
+  EXPECT_LT(shown, 0.65);
+  EXPECT_NE(r.output.find("exposure 3.00 (locked)"), std::string::npos) << r.output;
+}
+
+TEST_F(IblkitViewWindow, OpeningABadFileSaysSoAndKeepsTheSceneAMapSwitches) {
+  const fs::path shot = dir_ / "opened.exr";
+  const fs::path red = dir_ / "red.exr";
+  writeExr(red, Image(8, 4, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f)), {.pixelType = PixelType::Float});
+  const ProgramRun r = run(inWindow(windowArguments("--frames 3 --screenshot " + shellQuoted(shot) + " --open " +
+                                                    shellQuoted(dir_ / "nothing.glb") + " " +
+                                                    shellQuoted(dir_ / "notes.txt") + " " + shellQuoted(red))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("cannot open: " + (dir_ / "nothing.glb").string()), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((dir_ / "notes.txt").string() + ": cannot open (expected"), std::string::npos) << r.output;
+  // The map dropped last was switched to: the sky is red.
+  const Image radiance = readExr(shot);
+  const glm::vec4 corner = radiance.pixels()[0];
+  EXPECT_GT(corner.r, 0.1f);
+  EXPECT_LT(corner.g, 0.01f * corner.r);
 }
 
 }  // namespace

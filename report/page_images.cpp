@@ -1,0 +1,111 @@
+#include "report/page_images.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include "core/error.h"
+#include "core/file_io.h"
+
+namespace iblkit {
+
+namespace fs = std::filesystem;
+
+std::vector<std::uint8_t> encodeRgbe(const Image& image) {
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(image.pixelCount() * 4);
+  for (const glm::vec4& pixel : image.pixels()) {
+    float rgb[3];
+    for (int c = 0; c < 3; ++c) rgb[c] = std::isfinite(pixel[c]) && pixel[c] > 0.0f ? pixel[c] : 0.0f;
+    const float largest = std::max({rgb[0], rgb[1], rgb[2]});
+    if (largest < 1e-32f) {
+      bytes.insert(bytes.end(), {0, 0, 0, 0});
+      continue;
+    }
+    int exponent = 0;
+    const float mantissa = std::frexp(largest, &exponent);  // largest = mantissa 2^exponent, mantissa in [0.5, 1)
+    if (exponent > 127) {  // beyond RGBE's range: the largest it holds
+      bytes.insert(bytes.end(), {255, 255, 255, 255});
+      continue;
+    }
+    const float scale = mantissa * 256.0f / largest;
+    for (int c = 0; c < 3; ++c) bytes.push_back(std::uint8_t(std::min(255.0f, rgb[c] * scale)));
+    bytes.push_back(std::uint8_t(exponent + 128));
+  }
+  return bytes;
+}
+
+glm::vec3 decodeRgbe(const std::uint8_t* rgbe) {
+  if (rgbe[3] == 0) return glm::vec3(0.0f);
+  const float factor = std::ldexp(1.0f, int(rgbe[3]) - (128 + 8));
+  return glm::vec3((rgbe[0] + 0.5f) * factor, (rgbe[1] + 0.5f) * factor, (rgbe[2] + 0.5f) * factor);
+}
+
+std::vector<std::uint8_t> zlibCompress(const std::vector<std::uint8_t>& bytes) {
+  uLongf size = compressBound(uLong(bytes.size()));
+  std::vector<std::uint8_t> compressed(size);
+  if (compress2(compressed.data(), &size, bytes.data(), uLong(bytes.size()), 6) != Z_OK)
+    throw Error("zlib: cannot compress");
+  compressed.resize(size);
+  return compressed;
+}
+
+std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes) {
+  z_stream stream{};
+  if (inflateInit(&stream) != Z_OK) throw Error("zlib: cannot start inflate");
+  std::vector<std::uint8_t> result;
+  std::uint8_t buffer[65536];
+  stream.next_in = const_cast<Bytef*>(bytes.data());
+  stream.avail_in = uInt(bytes.size());
+  int status = Z_OK;
+  while (status == Z_OK) {
+    stream.next_out = buffer;
+    stream.avail_out = sizeof(buffer);
+    status = inflate(&stream, Z_NO_FLUSH);
+    result.insert(result.end(), buffer, buffer + (sizeof(buffer) - stream.avail_out));
+  }
+  inflateEnd(&stream);
+  if (status != Z_STREAM_END) throw Error("zlib: corrupt data");
+  return result;
+}
+
+std::string base64(const std::vector<std::uint8_t>& bytes) {
+  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string text;
+  text.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::uint32_t b0 = bytes[i], b1 = i + 1 < bytes.size() ? bytes[i + 1] : 0,
+                        b2 = i + 2 < bytes.size() ? bytes[i + 2] : 0;
+    const std::uint32_t triple = (b0 << 16) | (b1 << 8) | b2;
+    text += kAlphabet[(triple >> 18) & 63];
+    text += kAlphabet[(triple >> 12) & 63];
+    text += i + 1 < bytes.size() ? kAlphabet[(triple >> 6) & 63] : '=';
+    text += i + 2 < bytes.size() ? kAlphabet[triple & 63] : '=';
+  }
+  return text;
+}
+
+void writeCaseImagesScript(const fs::path& file, const std::string& caseName,
+                           const std::vector<std::pair<std::string, const Image*>>& images) {
+  if (images.empty() || !images.front().second) fail(file, "no images to write");
+  const Image& first = *images.front().second;
+  std::string script = "iblkitCaseImages(\"" + caseName + "\", {\"width\": " + std::to_string(first.width()) +
+                       ", \"height\": " + std::to_string(first.height()) + ", \"images\": {\n";
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const Image& image = *images[i].second;
+    if (image.width() != first.width() || image.height() != first.height())
+      fail(file, "image '" + images[i].first + "' differs in size from '" + images.front().first + "'");
+    script += "\"" + images[i].first + "\": \"" + base64(zlibCompress(encodeRgbe(image))) + "\"" +
+              (i + 1 < images.size() ? ",\n" : "\n");
+  }
+  script += "}});\n";
+  writeAtomically(file, [&](const fs::path& temporary) {
+    std::ofstream stream(temporary, std::ios::binary);
+    stream << script;
+    if (!stream.flush()) fail(file, "cannot write file");
+  });
+}
+
+}  // namespace iblkit

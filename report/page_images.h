@@ -1,0 +1,34 @@
+#pragma once
+// The linear images of a case for the report page's large view (compare_view.h), whose exposure
+// control tone-maps them in the browser: a page opened from the file system cannot read the
+// pixels of its own PNGs (file:// images taint a canvas), but it can run a script beside it. So
+// each case gets OUT/images/CASE-linear.js, which calls
+//   iblkitCaseImages("CASE", {width, height, images: {"reference": "<base64>", MODE: ...}})
+// with each image as RGBE (Ward's shared-exponent format: 4 bytes a pixel, 8 bits of mantissa),
+// zlib-compressed (the browser's DecompressionStream("deflate")), in base64.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/image.h"
+
+namespace iblkit {
+
+// RGBE bytes of `image`, rows top to bottom; negative, NaN and infinite channels are written as 0
+// (the report never writes a failed frame). decodeRgbe is the page's decoder, for tests.
+std::vector<std::uint8_t> encodeRgbe(const Image& image);
+glm::vec3 decodeRgbe(const std::uint8_t* rgbe);
+
+// zlib (RFC 1950) compression and base64 (RFC 4648) text.
+std::vector<std::uint8_t> zlibCompress(const std::vector<std::uint8_t>& bytes);
+std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes);  // for tests
+std::string base64(const std::vector<std::uint8_t>& bytes);
+
+// Writes `file` (atomically): the script above, `images` named as the page names them.
+void writeCaseImagesScript(const std::filesystem::path& file, const std::string& caseName,
+                           const std::vector<std::pair<std::string, const Image*>>& images);
+
+}  // namespace iblkit
