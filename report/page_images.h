@@ -22,10 +22,9 @@ namespace iblkit {
 std::vector<std::uint8_t> encodeRgbe(const Image& image);
 glm::vec3 decodeRgbe(const std::uint8_t* rgbe);
 
-// zlib (RFC 1950) compression and base64 (RFC 4648) text.
+// zlib (RFC 1950) compression (the text is then core/base64.h).
 std::vector<std::uint8_t> zlibCompress(const std::vector<std::uint8_t>& bytes);
 std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes);  // for tests
-std::string base64(const std::vector<std::uint8_t>& bytes);
 
 // Writes `file` (atomically): the script above, `images` named as the page names them.
 void writeCaseImagesScript(const std::filesystem::path& file, const std::string& caseName,

@@ -22,7 +22,8 @@ enum class ShadingMode {
   // Dominant lights (docs/dominant-lights.md, engine section): the environment split into K disk
   // lights (the extracted suns) and the residual map. The residual as in sh-ao-bent (its SH9 along
   // the bent normal times AO) plus its split-sum specular as in full; each light with the core's
-  // BRDF (brdf.h) and the disk's exact irradiance; unshadowed, then with a PCSS shadow map each.
+  // BRDF (brdf.h) and the disk's exact irradiance; unshadowed, then with a shadow map each
+  // (two trilinear taps on mipmapped depth and exponential moments, docs/engine.md).
   Lights,
   LightsShadowed,
   // glTF occlusion (the material's occlusionTexture, 1 + strength (R - 1); glTF 2.0 section

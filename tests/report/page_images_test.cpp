@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/base64.h"
 #include "core/error.h"
 #include "support/test_paths.h"
 
@@ -31,15 +32,11 @@ TEST(PageImages, RgbeKeepsEachChannelWithinItsEightBitMantissa) {
   EXPECT_EQ(rgbe[15], 0);
 }
 
-TEST(PageImages, ZlibAndBase64RoundTrip) {
+TEST(PageImages, ZlibRoundTrips) {
   std::vector<std::uint8_t> bytes;
   for (int i = 0; i < 5000; ++i) bytes.push_back(std::uint8_t((i * 7) % 13));
   EXPECT_EQ(zlibDecompress(zlibCompress(bytes)), bytes);
   EXPECT_LT(zlibCompress(bytes).size(), bytes.size() / 4);
-  EXPECT_EQ(base64({}), "");
-  EXPECT_EQ(base64({'f'}), "Zg==");
-  EXPECT_EQ(base64({'f', 'o'}), "Zm8=");
-  EXPECT_EQ(base64({'f', 'o', 'o', 'b', 'a', 'r'}), "Zm9vYmFy");  // RFC 4648 section 10
 }
 
 TEST(PageImages, TheScriptNamesEveryImageAndRefusesMismatchedSizes) {

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "core/base64.h"
+
 namespace iblkit::test {
 
 // glTF component types (glTF 2.0 section 3.6.2.2).
@@ -60,8 +62,7 @@ class GltfBuilder {
   std::vector<unsigned char> buffer_;
 };
 
-// RFC 4648 base64 with padding, for data: URIs.
-std::string base64(const std::vector<unsigned char>& bytes);
+using iblkit::base64;  // core/base64.h, for data: URIs
 
 // A unit cube, [0, 1]^3, 8 shared vertices and 12 counter-clockwise triangles, no normals.
 struct CubeGeometry {
