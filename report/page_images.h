@@ -26,9 +26,20 @@ glm::vec3 decodeRgbe(const std::uint8_t* rgbe);
 std::vector<std::uint8_t> zlibCompress(const std::vector<std::uint8_t>& bytes);
 std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes);  // for tests
 std::string base64(const std::vector<std::uint8_t>& bytes);
+// The inverse of base64; throws Error("base64: ...") for text that is not base64.
+std::vector<std::uint8_t> base64Decode(const std::string& text);
 
 // Writes `file` (atomically): the script above, `images` named as the page names them.
 void writeCaseImagesScript(const std::filesystem::path& file, const std::string& caseName,
                            const std::vector<std::pair<std::string, const Image*>>& images);
+
+// A script written by writeCaseImagesScript, read back (iblkit-view --reference REPORT --case):
+// the images in the order written, linear (decodeRgbe), rows top to bottom, alpha 1.
+struct CaseImagesScript {
+  std::string caseName;
+  std::vector<std::pair<std::string, Image>> images;
+};
+// Throws Error("<file>: <problem>") for a missing file or one that is not such a script.
+CaseImagesScript readCaseImagesScript(const std::filesystem::path& file);
 
 }  // namespace iblkit

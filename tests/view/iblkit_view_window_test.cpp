@@ -233,7 +233,7 @@ TEST_F(IblkitViewWindow, BadInputFailsBeforeAWindowOpens) {
   const ProgramRun view = run(program("iblkit-view") + " " + windowArguments("--compare sideways"));
   EXPECT_EQ(view.status, 2);  // a usage error (cli/program.h)
   EXPECT_EQ(view.output,
-            "iblkit-view: --compare: unknown view 'sideways' (expected one of live, split, difference)\n");
+            "iblkit-view: --compare: unknown view 'sideways' (expected one of live, split, difference, image)\n");
   const ProgramRun shot =
       run(program("iblkit-view") + " " + windowArguments("--screenshot " + shellQuoted(dir_ / "a.jpg")));
   EXPECT_EQ(shot.status, 1);
