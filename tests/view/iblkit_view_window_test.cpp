@@ -331,3 +331,198 @@ TEST_F(IblkitViewWindow, OpeningABadFileSaysSoAndKeepsTheSceneAMapSwitches) {
 
 }  // namespace
 }  // namespace iblkit
+
+#include "support/report_output.h"
+
+namespace iblkit {
+namespace {
+
+// The screenshots (EXR of the radiance, PNG of the view) a run wrote with P, in order.
+struct Shot {
+  fs::path exr, png;
+};
+
+struct DrivenRun {
+  ProgramRun run;   // drive_window.sh's status and output (xdotool's, e.g. getwindowname)
+  std::string log;  // iblkit-view's stdout and stderr
+  std::vector<Shot> shots;
+};
+
+// iblkit-view `arguments` in a window on a fresh virtual display, driven by real X input events
+// (xdotool through tests/view/drive_window.sh, `events` one command a line), run in `dir` so
+// that P's screenshots land there; Esc at the end. At most 60 s in all.
+DrivenRun drive(const fs::path& dir, const std::string& events, const std::string& arguments) {
+  const fs::path script = IBLKIT_DRIVE_WINDOW;
+  std::ofstream(dir / "events") << events;
+  DrivenRun result;
+  result.run = run("cd " + shellQuoted(dir) + " && timeout 60 xvfb-run -a -s '-screen 0 640x480x24' bash " +
+                   shellQuoted(script) + " log events " + program("iblkit-view") + " " + arguments);
+  std::ifstream stream(dir / "log");
+  for (std::string line; std::getline(stream, line);) {
+    result.log += line + "\n";
+    const std::string wrote = "iblkit-view: wrote ", separator = " and ";
+    if (line.rfind(wrote, 0) != 0) continue;
+    const std::size_t at = line.find(separator);
+    result.shots.push_back({line.substr(wrote.size(), at - wrote.size()), line.substr(at + separator.size())});
+  }
+  return result;
+}
+
+double meanAbsoluteDifference(const Image& a, const Image& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+    const glm::vec4 d = glm::abs(a.pixels()[i] - b.pixels()[i]);
+    sum += (d.r + d.g + d.b) / 3.0;
+  }
+  return sum / double(a.pixels().size());
+}
+
+int coveredPixels(const Image& radiance) {
+  int covered = 0;
+  for (const glm::vec4& p : radiance.pixels()) covered += p.a == 1.0f;
+  return covered;
+}
+
+class IblkitViewWindowEvents : public IblkitViewWindow {
+ protected:
+  void SetUp() override {
+    IblkitViewWindow::SetUp();
+    if (IsSkipped()) return;
+    ASSERT_EQ(run("command -v xdotool >/dev/null").status, 0) << "xdotool is missing: install it (scripts/setup.sh)";
+  }
+};
+
+// Real input events: a left drag orbits, the wheel zooms, a key switches the mode, and the window
+// resized by the X server gives frames (and screenshots) of its new size.
+TEST_F(IblkitViewWindowEvents, DragWheelKeyAndResizeChangeTheFrameAsTheyShould) {
+  const DrivenRun r = drive(dir_,
+                            "mousemove --window %W 80 60\nkey p\nshots 1\n"
+                            "mousedown 1\nmousemove --window %W 120 60\nmouseup 1\nkey p\nshots 2\n"
+                            "click --repeat 3 4\nkey p\nshots 3\n"
+                            "key 1\nkey p\nshots 4\n"
+                            "windowsize %W 200 150\nkey p\nshots 5\n",
+                            windowArguments("--no-panel"));
+  ASSERT_EQ(r.run.status, 0) << r.run.output << r.log;
+  ASSERT_EQ(r.shots.size(), 5u) << r.log;
+  std::vector<Image> radiance, shown;
+  for (const Shot& shot : r.shots) {
+    radiance.push_back(readExr(shot.exr));
+    shown.push_back(readPng(shot.png));
+  }
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_EQ(shown[std::size_t(i)].width(), kWidth) << i;
+    ASSERT_EQ(shown[std::size_t(i)].height(), kHeight) << i;
+  }
+  // The first is the scene's camera: the headless frame.
+  EXPECT_LT(meanAbsoluteDifference(radiance[0], renderHeadless("start.exr")), 1e-3);
+  // A 40-pixel drag turns the view by a quarter of pi: the sky behind the sphere moves.
+  EXPECT_GT(meanAbsoluteDifference(shown[0], shown[1]), 0.02);
+  // Three wheel steps towards the sphere (x0.9 each): it covers more of the frame.
+  EXPECT_GT(coveredPixels(radiance[2]), coveredPixels(radiance[1]) * 13 / 10)
+      << coveredPixels(radiance[1]) << " -> " << coveredPixels(radiance[2]);
+  // Key 1, the unlit mode: the mirror shows its flat base colour instead of the sky.
+  EXPECT_GT(meanAbsoluteDifference(shown[2], shown[3]), 0.05);
+  EXPECT_EQ(coveredPixels(radiance[3]), coveredPixels(radiance[2]));
+  // Resized to 200 x 150: both files have the new size, the same view at the same scale (the
+  // vertical field of view kept; the same shape, so the sphere covers the same fraction).
+  EXPECT_EQ(radiance[4].width(), 200);
+  EXPECT_EQ(radiance[4].height(), 150);
+  EXPECT_EQ(shown[4].width(), 200);
+  EXPECT_EQ(shown[4].height(), 150);
+  const double before = double(coveredPixels(radiance[3])) / double(kWidth * kHeight);
+  const double after = double(coveredPixels(radiance[4])) / (200.0 * 150.0);
+  EXPECT_NEAR(after, before, 0.02);
+}
+
+// A report case: the reference and each mode's frame, written by the report's writers.
+class IblkitViewReportCase : public IblkitViewWindow {
+ protected:
+  void SetUp() override {
+    IblkitViewWindow::SetUp();
+    if (IsSkipped()) return;
+    report_ = dir_ / "report";
+    test::writeReportOutput(report_, {{"mirror_sphere", "sky",
+                                       {{"reference", Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f))},
+                                        {"full", Image(kWidth, kHeight, glm::vec4(0.0f, 2.0f, 0.0f, 1.0f))},
+                                        {"mirror", Image(kWidth, kHeight, glm::vec4(0.0f, 0.0f, 2.0f, 1.0f))}}}});
+  }
+
+  // The colour that fills a screenshot ('m'agenta, 'g'reen, 'b'lue; '?' for anything else).
+  static char fill(const Image& png) {
+    int magenta = 0, green = 0, blue = 0;
+    for (const glm::vec4& p : png.pixels()) {
+      magenta += p.r > 0.3f && p.b > 0.3f && p.g < 0.01f;
+      green += p.g > 0.3f && p.r < 0.01f && p.b < 0.01f;
+      blue += p.b > 0.3f && p.r < 0.01f && p.g < 0.01f;
+    }
+    const int all = int(png.pixelCount());
+    return magenta == all ? 'm' : green == all ? 'g' : blue == all ? 'b' : '?';
+  }
+
+  fs::path report_;
+};
+
+TEST_F(IblkitViewReportCase, ShowStartsAtTheNamedImageAndBadCasesAreOneLine) {
+  const fs::path shot = dir_ / "full.png";
+  ProgramRun r = run(inWindow(windowArguments("--reference " + shellQuoted(report_) +
+                                              " --case mirror_sphere-sky --show full --compare image --frames 2 "
+                                              "--screenshot " + shellQuoted(shot))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(fill(readPng(shot)), 'g');
+  // report.json itself, the only case taken without --case, the split view: live left, the reference right.
+  const fs::path split = dir_ / "split.png";
+  r = run(inWindow(windowArguments("--reference " + shellQuoted(report_ / "report.json") + " --frames 2 --screenshot " +
+                                   shellQuoted(split))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image splitShown = readPng(split);
+  EXPECT_TRUE(isMagenta(splitShown.at(kWidth - 1, kHeight / 2)));
+  EXPECT_FALSE(isMagenta(splitShown.at(0, kHeight / 2)));
+
+  const std::string json = (report_ / "report.json").string();
+  r = run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(report_) + " --case bunny-sky"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(r.output.ends_with("iblkit-view: " + json + ": no case 'bunny-sky' (cases: mirror_sphere-sky)\n")) << r.output;
+  r = run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(dir_ / "no-report") + "/"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("iblkit-view: " + (dir_ / "no-report").string() + "/: cannot open"), std::string::npos)
+      << r.output;
+  fs::remove(report_ / "images" / "mirror_sphere-sky-linear.js");
+  r = run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(report_)));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(r.output.ends_with("iblkit-view: " + (report_ / "images" / "mirror_sphere-sky-linear.js").string() +
+                                 ": cannot open: No such file or directory\n"))
+      << r.output;
+  r = run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(report_) + " --show sh"));
+  EXPECT_EQ(r.status, 1);  // the missing images script comes first
+  r = run(program("iblkit-view") + " " + windowArguments("--case mirror_sphere-sky"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "iblkit-view: --case: only with --reference REPORT\n");
+}
+
+TEST_F(IblkitViewReportCase, BracesFlipThroughTheReferenceAndTheModesAndTheTitleSaysWhich) {
+  const DrivenRun r = drive(dir_,
+                            "key p\nshots 1\n"
+                            "key shift+bracketright\nkey p\nshots 2\n"
+                            "key shift+bracketright\nkey p\nshots 3\ngetwindowname %W\n"
+                            "key shift+bracketright\nkey shift+bracketleft\nkey p\nshots 4\n",
+                            windowArguments("--no-panel --compare image --reference " + shellQuoted(report_) +
+                                            " --case mirror_sphere-sky"));
+  ASSERT_EQ(r.run.status, 0) << r.run.output << r.log;
+  ASSERT_EQ(r.shots.size(), 4u) << r.log;
+  std::string fills;
+  for (const Shot& shot : r.shots) fills += fill(readPng(shot.png));
+  EXPECT_EQ(fills, "mgbb");
+  EXPECT_NE(r.log.find("iblkit-view: showing full (2 of 3)\n"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("iblkit-view: showing reference (1 of 3)\n"), std::string::npos) << r.log;
+  EXPECT_NE(r.run.output.find("iblkit-view: bake | image: mirror (3 of 3)"), std::string::npos) << r.run.output;
+  // --show with a name the case does not have: a usage error listing the names.
+  const ProgramRun bad = run(program("iblkit-view") + " " +
+                             windowArguments("--reference " + shellQuoted(report_) + " --show sh"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_TRUE(bad.output.ends_with("iblkit-view: --show: no image 'sh' in " + (report_ / "report.json").string() +
+                                   ", case mirror_sphere-sky (expected one of reference, full, mirror)\n"))
+      << bad.output;
+}
+
+}  // namespace
+}  // namespace iblkit
