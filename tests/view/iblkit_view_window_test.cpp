@@ -1,7 +1,9 @@
 // End-to-end tests of iblkit-view's window (build/bin) under a virtual X server (xvfb-run, from
 // Debian's xvfb and xauth packages; llvmpipe through GLX), on a small bake of the bundled mirror
 // sphere scene: frames render, a screenshot matches the headless frame, the reference split and
-// difference views show what they should, and a missing display or bake is one line and exit 1.
+// difference views show what they should, and a missing display or bake is one line and exit 1;
+// real input events (xdotool, drive_window.sh) orbit, zoom, switch the mode, resize the window and
+// flip through a report case.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 
 #include "core/auto_exposure.h"
 #include "core/image_io.h"
+#include "support/report_output.h"
 #include "support/test_paths.h"
 
 namespace iblkit {
@@ -332,8 +335,6 @@ TEST_F(IblkitViewWindow, OpeningABadFileSaysSoAndKeepsTheSceneAMapSwitches) {
 }  // namespace
 }  // namespace iblkit
 
-#include "support/report_output.h"
-
 namespace iblkit {
 namespace {
 
@@ -432,6 +433,40 @@ TEST_F(IblkitViewWindowEvents, DragWheelKeyAndResizeChangeTheFrameAsTheyShould) 
   const double before = double(coveredPixels(radiance[3])) / double(kWidth * kHeight);
   const double after = double(coveredPixels(radiance[4])) / (200.0 * 150.0);
   EXPECT_NEAR(after, before, 0.02);
+}
+
+// A window wider than the reference: the image keeps the live frame's scale (full height,
+// centred, black beside it), and the difference view compares each pixel with the live pixel
+// under it, so the headless frame of the narrower shape is black against the wider live frame.
+TEST_F(IblkitViewWindow, AReferenceKeepsTheLiveFramesScaleInAWiderWindow) {
+  const fs::path magenta = dir_ / "magenta.exr";
+  writeExr(magenta, Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f)), {.pixelType = PixelType::Float});
+  const std::string wide = " --width 240 --height 120 --env-dir " + shellQuoted(dir_ / "no-maps");
+  const fs::path imageShot = dir_ / "wide-image.png";
+  ProgramRun r = run(inWindow(shellQuoted(bake_) + wide + " --reference " + shellQuoted(magenta) +
+                              " --compare image --frames 2 --screenshot " + shellQuoted(imageShot)));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image image = readPng(imageShot);
+  ASSERT_EQ(image.width(), 240);
+  int inside = 0, outside = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < 240; ++x) {
+      if (x >= 40 && x < 200) inside += isMagenta(image.at(x, y));
+      else outside += maxComponent(image.at(x, y)) == 0.0f;
+    }
+  EXPECT_EQ(inside, kWidth * kHeight);
+  EXPECT_EQ(outside, 80 * kHeight);
+
+  renderHeadless("narrow.exr");
+  const fs::path differenceShot = dir_ / "wide-difference.png";
+  r = run(inWindow(shellQuoted(bake_) + wide + " --reference " + shellQuoted(dir_ / "narrow.exr") +
+                   " --compare difference --frames 2 --screenshot " + shellQuoted(differenceShot)));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image difference = readPng(differenceShot);
+  int black = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 40; x < 200; ++x) black += maxComponent(difference.at(x, y)) < 0.02f;
+  EXPECT_GT(black, kWidth * kHeight * 97 / 100);
 }
 
 // A report case: the reference and each mode's frame, written by the report's writers.
