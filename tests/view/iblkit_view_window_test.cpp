@@ -469,6 +469,36 @@ TEST_F(IblkitViewWindow, AReferenceKeepsTheLiveFramesScaleInAWiderWindow) {
   EXPECT_GT(black, kWidth * kHeight * 97 / 100);
 }
 
+// A real iblkit-report output (the mirror sphere under sky, two modes, 160x90, an 8-spp
+// reference: about 9 s): its case's images are the scene at the window's camera, so the
+// difference view of each against the live frame of the same bake is dark nearly everywhere.
+TEST_F(IblkitViewWindow, ARealReportCaseLinesUpWithTheLiveFrame) {
+  const fs::path report = dir_ / "report";
+  ProgramRun r = run(program("iblkit-report") + " --bin " + shellQuoted(test::binDir()) + " " +
+                     shellQuoted(test::assetsDir() / "scenes" / "mirror_sphere.json") + " --env-dir " +
+                     shellQuoted(test::assetsDir() / "hdri") +
+                     " --envs sky --modes mirror,full --width 160 --height 90 --pass-spp 4 --min-passes 2"
+                     " --max-passes 2 --bench 1 -o " + shellQuoted(report));
+  ASSERT_EQ(r.status, 0) << r.output;
+  // The images in the report's order, as a bad --show lists them.
+  r = run(program("iblkit-view") + " " + shellQuoted(bake_) + " --reference " + shellQuoted(report) + " --show none");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("case mirror_sphere-sky (expected one of reference, mirror, full)"), std::string::npos)
+      << r.output;
+  for (const char* shown : {"reference", "mirror", "full"}) {
+    const fs::path shot = dir_ / (std::string("difference-") + shown + ".png");
+    r = run(inWindow(shellQuoted(bake_) + " --env-dir " + shellQuoted(dir_ / "no-maps") + " --reference " +
+                     shellQuoted(report) + " --case mirror_sphere-sky --compare difference --show " + shown +
+                     " --frames 2 --screenshot " + shellQuoted(shot)));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("2 frames, 160x90"), std::string::npos) << r.output;  // the report's size
+    const Image difference = readPng(shot);
+    int dark = 0;
+    for (const glm::vec4& p : difference.pixels()) dark += maxComponent(p) < 0.1f;
+    EXPECT_GT(dark, int(difference.pixelCount()) * 95 / 100) << shown;  // measured: 98.8%
+  }
+}
+
 // A report case: the reference and each mode's frame, written by the report's writers.
 class IblkitViewReportCase : public IblkitViewWindow {
  protected:
