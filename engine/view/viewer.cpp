@@ -22,7 +22,6 @@
 #include "core/auto_exposure.h"
 #include "core/error.h"
 #include "core/usage_error.h"
-#include "core/image_io.h"
 #include "engine/gl/gl_debug.h"
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
