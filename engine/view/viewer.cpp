@@ -399,16 +399,15 @@ class Viewer {
         if (!panelKeyboard) handleKey(key->key, key->mods);
         if (screenshotRequested_) return;
       } else if (const auto* button = std::get_if<MouseButton>(&*event)) {
-        const bool left = button->button == GLFW_MOUSE_BUTTON_LEFT;
-        if (left || button->button == GLFW_MOUSE_BUTTON_RIGHT || button->button == GLFW_MOUSE_BUTTON_MIDDLE)
-          (left ? leftDown_ : otherDown_) = button->pressed;
-        if (!leftDown_ && !otherDown_) drag_ = Drag::None;
-        if (button->pressed && drag_ == Drag::None && !panelMouse) {
-          if (left)
-            drag_ = comparison_ && comparison_->nearDivider(cursorX_, windowWidth) ? Drag::Divider : Drag::Orbit;
-          else if (otherDown_)
-            drag_ = Drag::Pan;
-        }
+        const int which = button->button;
+        if (which != GLFW_MOUSE_BUTTON_LEFT && which != GLFW_MOUSE_BUTTON_RIGHT && which != GLFW_MOUSE_BUTTON_MIDDLE)
+          continue;
+        buttonsDown_ = button->pressed ? buttonsDown_ | (1u << which) : buttonsDown_ & ~(1u << which);
+        if (buttonsDown_ == 0) drag_ = Drag::None;
+        if (button->pressed && drag_ == Drag::None && !panelMouse)
+          drag_ = which != GLFW_MOUSE_BUTTON_LEFT ? Drag::Pan
+                  : comparison_ && comparison_->nearDivider(cursorX_, windowWidth) ? Drag::Divider
+                                                                                  : Drag::Orbit;
       } else if (const auto* cursor = std::get_if<CursorMoved>(&*event)) {
         drag(cursor->x, cursor->y, windowWidth, windowHeight);
       } else if (const auto* scroll = std::get_if<Scrolled>(&*event)) {
@@ -460,7 +459,7 @@ class Viewer {
   std::unique_ptr<RenderTarget> target_;
   WindowInput input_;
   Drag drag_ = Drag::None;
-  bool leftDown_ = false, otherDown_ = false;  // mouse buttons held (other: right or middle)
+  unsigned buttonsDown_ = 0;  // bit GLFW_MOUSE_BUTTON_*: the left, right and middle buttons held
   double cursorX_ = 0.0, cursorY_ = 0.0;       // window coordinates
   int framebufferWidth_ = 0, framebufferHeight_ = 0;  // pixels, from the resize events
   std::string title_, shownTitle_;  // the scene's title; the one the window has now

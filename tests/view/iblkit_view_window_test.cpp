@@ -393,18 +393,19 @@ class IblkitViewWindowEvents : public IblkitViewWindow {
   }
 };
 
-// Real input events: a left drag orbits, the wheel zooms, a key switches the mode, and the window
-// resized by the X server gives frames (and screenshots) of its new size.
+// Real input events: a left drag orbits, the wheel zooms, a key switches the mode, the window
+// resized by the X server gives frames (and screenshots) of its new size, a right drag pans.
 TEST_F(IblkitViewWindowEvents, DragWheelKeyAndResizeChangeTheFrameAsTheyShould) {
   const DrivenRun r = drive(dir_,
                             "mousemove --window %W 80 60\nkey p\nshots 1\n"
                             "mousedown 1\nmousemove --window %W 120 60\nmouseup 1\nkey p\nshots 2\n"
                             "click --repeat 3 4\nkey p\nshots 3\n"
                             "key 1\nkey p\nshots 4\n"
-                            "windowsize %W 200 150\nkey p\nshots 5\n",
+                            "windowsize %W 200 150\nkey p\nshots 5\n"
+                            "mousedown 3\nmousemove --window %W 150 75\nmouseup 3\nkey p\nshots 6\n",
                             windowArguments("--no-panel"));
   ASSERT_EQ(r.run.status, 0) << r.run.output << r.log;
-  ASSERT_EQ(r.shots.size(), 5u) << r.log;
+  ASSERT_EQ(r.shots.size(), 6u) << r.log;
   std::vector<Image> radiance, shown;
   for (const Shot& shot : r.shots) {
     radiance.push_back(readExr(shot.exr));
@@ -433,6 +434,16 @@ TEST_F(IblkitViewWindowEvents, DragWheelKeyAndResizeChangeTheFrameAsTheyShould) 
   const double before = double(coveredPixels(radiance[3])) / double(kWidth * kHeight);
   const double after = double(coveredPixels(radiance[4])) / (200.0 * 150.0);
   EXPECT_NEAR(after, before, 0.02);
+  // A right drag pans: the sphere follows the cursor, 50 pixels to the right, its coverage about kept.
+  auto centreX = [](const Image& frame) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = 0; y < frame.height(); ++y)
+      for (int x = 0; x < frame.width(); ++x)
+        if (frame.at(x, y).a == 1.0f) sum += x, ++count;
+    return count > 0 ? sum / count : 0.0;
+  };
+  EXPECT_GT(centreX(radiance[5]), centreX(radiance[4]) + 10.0) << centreX(radiance[4]) << " -> " << centreX(radiance[5]);
 }
 
 // A window wider than the reference: the image keeps the live frame's scale (full height,
