@@ -10,8 +10,9 @@
 // writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
 // Without --headless the window viewer runs (engine/view/viewer.h, docs/viewer.md):
 //
-//   iblkit-view OUTDIR|SCENE [--env ENV] [--env-dir DIR] [--reference REF.exr] [--compare VIEW] [--frames N] [--screenshot FILE]
-//               [--no-panel] [--width W] [--height H] [--mode M] [--exposure E] ...
+//   iblkit-view OUTDIR|SCENE [--env ENV] [--env-dir DIR] [--reference REF.exr | --reference REPORT [--case CASE]]
+//               [--show IMAGE] [--compare VIEW] [--frames N] [--screenshot FILE] [--no-panel] [--width W] [--height H]
+//               [--mode M] [--exposure E] ...
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -43,6 +44,7 @@
 #include "engine/view/reference_comparison.h"
 #include "engine/view/screenshot.h"
 #include "engine/view/viewer.h"
+#include "report/report_case_images.h"
 
 namespace iblkit {
 namespace {
@@ -72,6 +74,7 @@ struct Options {
   bool noShadows = false;
   // The window viewer's.
   std::filesystem::path envDir, reference, screenshot;
+  std::string caseName, show;  // --case: of a report --reference; --show: the image shown first
   std::string compare = "split";
   std::vector<fs::path> open;  // --open: as if dropped onto the window
   int frames = 0;
@@ -263,6 +266,27 @@ fs::path defaultEnvironmentFolder() {
   return (assets && *assets ? fs::path(assets) : fs::path("assets")) / "hdri";
 }
 
+// --reference: one image (OpenEXR), or a report (its output folder or report.json) whose case
+// --case names: the case's reference and each mode's frame (report/report_case_images.h).
+std::vector<ComparisonImage> readReferences(const Options& options, std::string* source) {
+  if (options.reference.empty()) {
+    if (!options.caseName.empty()) failUsage("--case", "only with --reference REPORT");
+    return {};
+  }
+  if (!isReportPath(options.reference)) {
+    if (!options.caseName.empty())
+      failUsage("--case", "only with a report --reference (a folder or its report.json), not an image");
+    *source = options.reference.string();
+    return {{"reference", "", readExr(options.reference)}};
+  }
+  ReportCase report = readReportCase(options.reference, options.caseName);
+  *source = report.reportJson.string() + ", case " + report.caseName;
+  std::vector<ComparisonImage> images;
+  for (ReportCaseImage& image : report.images)
+    images.push_back({std::move(image.name), std::move(image.detail), std::move(image.image)});
+  return images;
+}
+
 int runWindow(const Options& options) {
   if (!options.output.empty())
     failUsage("-o", "only with --headless (the window saves screenshots: --screenshot)");
@@ -312,7 +336,8 @@ int runWindow(const Options& options) {
     return computeEnvironmentStages(map, kViewerEnvironmentStages);
   };
   viewer.envDir = options.envDir.empty() ? defaultEnvironmentFolder() : options.envDir;
-  viewer.reference = options.reference;
+  viewer.references = readReferences(options, &viewer.referenceSource);
+  viewer.show = options.show;
   viewer.compare = options.compare;
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;
@@ -323,9 +348,10 @@ int runWindow(const Options& options) {
 void rejectWindowFlagsWhenHeadless(const Options& options) {
   if (!options.headless) return;
   if (options.frames > 0 || !options.screenshot.empty() || !options.reference.empty() || !options.envDir.empty() ||
-      options.noPanel || !options.open.empty())
+      options.noPanel || !options.open.empty() || !options.caseName.empty() || !options.show.empty())
     throw UsageError(
-        "--frames, --screenshot, --env-dir, --reference, --open and --no-panel are for the window, not --headless");
+        "--frames, --screenshot, --env-dir, --reference, --case, --show, --open and --no-panel are for the window, "
+        "not --headless");
 }
 
 }  // namespace
@@ -385,7 +411,13 @@ int main(int argc, char** argv) {
   app.add_option("--env-dir", options.envDir,
                  "window: folder of environment maps to switch between (default: assets/hdri)");
   app.add_option("--reference", options.reference,
-                 "window: path-traced reference (.exr) shown beside the live frame, or as a difference");
+                 "window: path-traced reference (.exr) shown beside the live frame, or as a difference; or an "
+                 "iblkit-report output (its folder or report.json) whose case --case names: its reference and "
+                 "each mode's frame, flipped through with { and }");
+  app.add_option("--case", options.caseName,
+                 "window: the case of a report --reference, SCENE-ENVIRONMENT (e.g. bunny-sky; default: the only one)");
+  app.add_option("--show", options.show,
+                 "window: the image of --reference shown first: reference, or a mode of the report case");
   addNameOption(app, "--compare", options.compare, kComparisonViewNames, "view",
                 "window: the reference view to start with");
   app.add_option("--frames", options.frames, "window: quit after N frames and print the median frame time")

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "core/base64.h"
 #include "core/error.h"
@@ -91,6 +93,50 @@ void writeCaseImagesScript(const fs::path& file, const std::string& caseName,
     stream << script;
     if (!stream.flush()) fail(file, "cannot write file");
   });
+}
+
+}  // namespace iblkit
+
+namespace iblkit {
+
+CaseImagesScript readCaseImagesScript(const fs::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream) fail(file, "cannot open: No such file or directory");
+  std::ostringstream text;
+  text << stream.rdbuf();
+  const std::string script = text.str();
+  // iblkitCaseImages("CASE", {...});  the object is JSON (writeCaseImagesScript).
+  static constexpr std::string_view kCall = "iblkitCaseImages(\"";
+  const std::size_t nameEnd = script.find('"', kCall.size());
+  const std::size_t objectStart = script.find('{');
+  const std::size_t objectEnd = script.rfind('}');
+  if (script.rfind(kCall, 0) != 0 || nameEnd == std::string::npos || objectStart == std::string::npos ||
+      objectEnd == std::string::npos || objectEnd < objectStart)
+    fail(file, "not a report's linear images script (expected iblkitCaseImages(\"CASE\", {...}))");
+  CaseImagesScript result;
+  result.caseName = script.substr(kCall.size(), nameEnd - kCall.size());
+  try {
+    const nlohmann::ordered_json object = nlohmann::ordered_json::parse(script.substr(objectStart, objectEnd - objectStart + 1));
+    const int width = object.at("width").get<int>(), height = object.at("height").get<int>();
+    if (width <= 0 || height <= 0) fail(file, "bad size " + std::to_string(width) + "x" + std::to_string(height));
+    for (const auto& [name, data] : object.at("images").items()) {
+      const std::vector<std::uint8_t> rgbe = zlibDecompress(base64Decode(data.get<std::string>()));
+      if (rgbe.size() != std::size_t(width) * std::size_t(height) * 4)
+        fail(file, "image '" + name + "' has " + std::to_string(rgbe.size() / 4) + " pixels, not " +
+                       std::to_string(width) + "x" + std::to_string(height));
+      Image image(width, height);
+      for (std::size_t i = 0; i < image.pixelCount(); ++i) image.pixels()[i] = glm::vec4(decodeRgbe(&rgbe[4 * i]), 1.0f);
+      result.images.emplace_back(name, std::move(image));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    fail(file, std::string("not a report's linear images script: ") + e.what());
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    if (what.rfind(file.string() + ":", 0) == 0) throw;
+    fail(file, what);  // zlib's or base64's
+  }
+  if (result.images.empty()) fail(file, "no images");
+  return result;
 }
 
 }  // namespace iblkit

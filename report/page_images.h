@@ -24,10 +24,19 @@ glm::vec3 decodeRgbe(const std::uint8_t* rgbe);
 
 // zlib (RFC 1950) compression (the text is then core/base64.h).
 std::vector<std::uint8_t> zlibCompress(const std::vector<std::uint8_t>& bytes);
-std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes);  // for tests
+std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes);
 
 // Writes `file` (atomically): the script above, `images` named as the page names them.
 void writeCaseImagesScript(const std::filesystem::path& file, const std::string& caseName,
                            const std::vector<std::pair<std::string, const Image*>>& images);
+
+// A script written by writeCaseImagesScript, read back (iblkit-view --reference REPORT --case):
+// the images in the order written, linear (decodeRgbe), rows top to bottom, alpha 1.
+struct CaseImagesScript {
+  std::string caseName;
+  std::vector<std::pair<std::string, Image>> images;
+};
+// Throws Error("<file>: <problem>") for a missing file or one that is not such a script.
+CaseImagesScript readCaseImagesScript(const std::filesystem::path& file);
 
 }  // namespace iblkit

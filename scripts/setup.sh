@@ -12,7 +12,7 @@ packages=(
   libopenexr-dev libimath-dev zlib1g-dev
   libgtest-dev libbenchmark-dev libcli11-dev libimgui-dev
   clang libclang-rt-dev  # make fuzz: clang and its libFuzzer runtime (libclang_rt.fuzzer)
-  xvfb xauth
+  xvfb xauth xdotool  # the window tests: a virtual X server, and real input events (tests/view)
   chromium chromium-driver  # the report page's browser test (tests/programs/report_page_browser_test.py)
 )
 

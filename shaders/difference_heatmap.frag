@@ -14,6 +14,10 @@ layout(binding = kTextureUnitReference) uniform sampler2D referenceTexture;
 // magma (core/color_map.h) in linear RGB, n x 1: texel i holds magma(i / (n - 1)).
 layout(binding = kTextureUnitColorMap) uniform sampler2D colorMap;
 uniform float maxValue;
+// The reference's rectangle in the live frame's texture coordinates (imageViewport,
+// engine/view/reference_comparison.h): live uv = offset + uv * scale.
+uniform vec2 liveUvOffset;
+uniform vec2 liveUvScale;
 
 layout(location = 0) out vec4 fragColor;
 
@@ -30,7 +34,7 @@ vec3 magma(float t) {
 
 void main() {
   vec2 uv = ndc * 0.5 + 0.5;
-  vec3 live = texture(liveTexture, uv).rgb;
+  vec3 live = texture(liveTexture, liveUvOffset + uv * liveUvScale).rgb;
   vec3 reference = texture(referenceTexture, uv).rgb;
   float error = (relativeSquaredError(reference.r, live.r) + relativeSquaredError(reference.g, live.g) +
                  relativeSquaredError(reference.b, live.b)) / 3.0;

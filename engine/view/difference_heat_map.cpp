@@ -27,9 +27,12 @@ DifferenceHeatMap::DifferenceHeatMap() : colorMap_(uploadTable(magmaTable())) {
 
 DifferenceHeatMap::~DifferenceHeatMap() { glDeleteVertexArrays(1, &emptyVertexArray_); }
 
-void DifferenceHeatMap::draw(GLuint liveTexture, GLuint referenceTexture, float maxValue, int width,
-                             int height) const {
-  glViewport(0, 0, width, height);
+void DifferenceHeatMap::draw(GLuint liveTexture, GLuint referenceTexture, float maxValue, int width, int height,
+                             int x, int y, int w, int h) const {
+  glViewport(x, y, w, h);
+  // The rectangle's texture coordinates (0 to 1) to the live frame's.
+  program_.set("liveUvOffset", glm::vec2(float(x) / float(width), float(y) / float(height)));
+  program_.set("liveUvScale", glm::vec2(float(w) / float(width), float(h) / float(height)));
   // The samplers are declared with these units (layout(binding), texture_unit.h).
   glBindTextureUnit(kTextureUnitLive, liveTexture);
   glBindTextureUnit(kTextureUnitReference, referenceTexture);

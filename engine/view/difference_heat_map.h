@@ -19,10 +19,12 @@ class DifferenceHeatMap {
   DifferenceHeatMap(const DifferenceHeatMap&) = delete;
   DifferenceHeatMap& operator=(const DifferenceHeatMap&) = delete;
 
-  // Draws the heat map of `liveTexture` against `referenceTexture` (linear radiance, stretched
-  // over the viewport) into the viewport (0, 0, width, height) of the bound draw framebuffer, as
-  // display-referred sRGB, `maxValue` (> 0) at the top of the colour map.
-  void draw(GLuint liveTexture, GLuint referenceTexture, float maxValue, int width, int height) const;
+  // Draws the heat map of `liveTexture` (the width x height frame) against `referenceTexture`
+  // (linear radiance, stretched over the rectangle (x, y, w, h) of the frame, which may reach
+  // beyond it) into that rectangle of the bound draw framebuffer, as display-referred sRGB,
+  // `maxValue` (> 0) at the top of the colour map. Each pixel compares the live frame's pixel under it.
+  void draw(GLuint liveTexture, GLuint referenceTexture, float maxValue, int width, int height, int x, int y, int w,
+            int h) const;
 
  private:
   ShaderProgram program_{"fullscreen.vert", "difference_heatmap.frag"};

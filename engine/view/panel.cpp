@@ -25,7 +25,8 @@ const std::vector<std::string>& viewerHelpLines() {
       "wheel           zoom (+ / - and PageUp / PageDown too)",
       "R               reset the camera to the scene's",
       ", .             previous / next environment map of --env-dir",
-      "C               reference view: live, split, difference (with --reference)",
+      "C               reference view: live, split, difference, image (with --reference)",
+      "{ }             previous / next image of a report case (with --reference REPORT --case CASE)",
       "drag divider    move the split (with --reference)",
       "P               screenshot (EXR of the frame + PNG of the view)",
       "Tab             hide / show the panel",
@@ -35,11 +36,28 @@ const std::vector<std::string>& viewerHelpLines() {
   return lines;
 }
 
+float panelScale(float contentScale, int windowWidth, int framebufferWidth) {
+  if (!(contentScale > 0.0f) || windowWidth <= 0 || framebufferWidth <= 0) return 1.0f;
+  return std::max(1.0f, contentScale * float(windowWidth) / float(framebufferWidth));
+}
+
 Panel::Panel(GLFWwindow* window) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui::StyleColorsDark();
+  // High-DPI (panel.h, panelScale): where the framebuffer has as many pixels as the window
+  // (X11, Windows), ImGui's window coordinates are pixels and the panel is scaled up by the
+  // monitor's content scale; where it has more (macOS, Wayland), the backend's framebuffer
+  // scale already draws the panel at its size in points.
+  float contentX = 1.0f, contentY = 1.0f;
+  glfwGetWindowContentScale(window, &contentX, &contentY);
+  int windowWidth = 0, windowHeight = 0, framebufferWidth = 0, framebufferHeight = 0;
+  glfwGetWindowSize(window, &windowWidth, &windowHeight);
+  glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
+  const float scale = panelScale(contentX, windowWidth, framebufferWidth);
+  ImGui::GetStyle().ScaleAllSizes(scale);
+  ImGui::GetIO().FontGlobalScale = scale;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450 core");
 }
@@ -147,14 +165,26 @@ void lightsSection(FrameSettings& settings, const Renderer& renderer) {
 }
 
 void comparisonSection(ReferenceComparison& comparison, bool cameraMoved) {
-  ImGui::Text("reference: %s (%dx%d)", comparison.file().filename().string().c_str(), comparison.width(),
-              comparison.height());
+  ImGui::TextWrapped("reference: %s (%dx%d)", comparison.source().c_str(), comparison.width(), comparison.height());
   int view = int(comparison.view);
-  for (ComparisonView v : {ComparisonView::Live, ComparisonView::Split, ComparisonView::Difference}) {
-    if (v != ComparisonView::Live) ImGui::SameLine();
-    ImGui::RadioButton(comparisonViewName(v), &view, int(v));
+  for (const EnumName<ComparisonView>& v : kComparisonViewNames) {
+    if (v.value != ComparisonView::Live) ImGui::SameLine();
+    ImGui::RadioButton(std::string(v.name).c_str(), &view, int(v.value));
   }
   comparison.view = ComparisonView(view);
+  // A report case: its reference and each mode's frame, one shown at a time ({ and } flip).
+  if (comparison.count() > 1) {
+    if (ImGui::BeginCombo("image", comparison.shownLabel().c_str())) {
+      for (int i = 0; i < comparison.count(); ++i)
+        if (ImGui::Selectable(comparison.name(i).c_str(), i == comparison.shown())) comparison.show(i);
+      ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("{ }");
+  }
+  ImGui::Text("showing %s", comparison.shownLabel().c_str());
+  if (!comparison.detail(comparison.shown()).empty())
+    ImGui::TextWrapped("%s", comparison.detail(comparison.shown()).c_str());
   if (comparison.view == ComparisonView::Split)
     ImGui::SliderFloat("divider", &comparison.divider, 0.0f, 1.0f);
   if (comparison.view == ComparisonView::Difference) {

@@ -61,6 +61,12 @@ class Panel {
   char openPath_[1024] = {};  // the "open" field
 };
 
+// How much the panel is scaled up on a high-DPI screen: the monitor's content scale (GLFW's
+// glfwGetWindowContentScale, 2 at 192 dpi) over what the framebuffer already has beyond the window
+// (framebufferWidth / windowWidth, 2 on a Retina Mac), at least 1: a Retina Mac's 2 / 2 is 1, an
+// X11 screen at 192 dpi, whose framebuffer is the window's size, 2 / 1.
+float panelScale(float contentScale, int windowWidth, int framebufferWidth);
+
 // The key and mouse help, one line each (the panel's help window and docs/viewer.md).
 const std::vector<std::string>& viewerHelpLines();
 

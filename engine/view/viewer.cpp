@@ -15,12 +15,13 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "bakefile/bake_folder.h"
 #include "core/auto_exposure.h"
 #include "core/error.h"
-#include "core/image_io.h"
+#include "core/usage_error.h"
 #include "engine/gl/gl_debug.h"
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
@@ -30,6 +31,7 @@
 #include "engine/view/reference_comparison.h"
 #include "engine/view/screenshot.h"
 #include "engine/view/window_context.h"
+#include "engine/view/window_input.h"
 
 namespace iblkit {
 namespace {
@@ -42,18 +44,6 @@ double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-// Input the GLFW callbacks collect between frames (they run inside glfwPollEvents).
-struct PendingInput {
-  std::vector<int> keys;  // key presses (and repeats), in order
-  int mods = 0;
-  double scroll = 0.0;
-  std::vector<fs::path> drops;  // files dropped onto the window
-};
-
-PendingInput& pendingInput(GLFWwindow* window) {
-  return *static_cast<PendingInput*>(glfwGetWindowUserPointer(window));
 }
 
 enum class Drag { None, Orbit, Pan, Divider };
@@ -71,24 +61,23 @@ class Viewer {
     settings_.shadows = options.shadows;
     // The reference decides the size (same camera, same pixels) unless --width/--height do.
     int width = bake_.scene.width, height = bake_.scene.height;
-    if (!options.reference.empty()) {
-      ExrInfo info;
-      readExr(options.reference, &info);  // its errors before a window opens
-      width = info.width;
-      height = info.height;
+    if (!options.references.empty()) {
+      width = options.references.front().image.width();
+      height = options.references.front().image.height();
     }
     if (options.width > 0) width = options.width;
     if (options.height > 0) height = options.height;
 
-    window_.emplace(
-        WindowContext::open(width, height, "iblkit-view: " + options.input.filename().string(), false));
+    title_ = "iblkit-view: " + options.input.filename().string();
+    window_.emplace(WindowContext::open(width, height, title_, false));
     enableGlDebugOutput(GlDebugMode::Strict);
     renderer_ = std::make_unique<Renderer>(bake_, options.anisotropy);
     originalMaterials_ = renderer_->materials();
     camera_.emplace(sceneCamera(bake_.scene, float(width) / float(height)), bake_.scene.bounds);
-    if (!options.reference.empty()) {
-      comparison_ = std::make_unique<ReferenceComparison>(options.reference);
+    if (!options.references.empty()) {
+      comparison_ = std::make_unique<ReferenceComparison>(options.references, options.referenceSource);
       comparison_->view = parseComparisonView(options.compare);
+      if (!options.show.empty()) comparison_->show(comparison_->find(options.show));
     }
     environments_ =
         std::make_unique<EnvironmentSwitcher>(options.envDir, bake_.env.rotationDegrees, bake_.env.intensity,
@@ -96,16 +85,9 @@ class Viewer {
     if (!options.environment.empty()) environments_->requestFile(options.environment);
 
     GLFWwindow* window = window_->window();
-    glfwSetWindowUserPointer(window, &input_);
-    // Installed before the panel's, which chains to them.
-    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
-      if (action != GLFW_RELEASE) pendingInput(w).keys.push_back(key);
-      pendingInput(w).mods = mods;
-    });
-    glfwSetScrollCallback(window, [](GLFWwindow* w, double, double y) { pendingInput(w).scroll += y; });
-    glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
-      for (int i = 0; i < count; ++i) pendingInput(w).drops.emplace_back(paths[i]);
-    });
+    input_.install(window);  // before the panel's callbacks, which chain to these
+    glfwGetCursorPos(window, &cursorX_, &cursorY_);
+    glfwGetFramebufferSize(window, &framebufferWidth_, &framebufferHeight_);
     panel_ = std::make_unique<Panel>(window);
     panel_->visible = options.panel;
     checkGlErrors("viewer setup");
@@ -117,12 +99,19 @@ class Viewer {
     for (int frame = 0; !window_->shouldClose() && (options_.frames == 0 || frame < options_.frames);
          ++frame) {
       glfwPollEvents();
-      if (frame == 1)  // --open: after the first frame, as if dropped
-        for (const fs::path& file : options_.open) input_.drops.push_back(file);
+      if (frame == 1) {  // --open: after the first frame, as if dropped
+        std::vector<const char*> paths;
+        for (const fs::path& file : options_.open) paths.push_back(file.c_str());
+        input_.filesDropped(int(paths.size()), paths.data());
+      }
       handleInput();
       pollOpenedScene(false);
       if (std::optional<EnvironmentStages> stages = environments_->poll()) useEnvironment(std::move(*stages));
-      const int width = window_->framebufferWidth(), height = window_->framebufferHeight();
+      updateTitle();
+      // The framebuffer's size in pixels, as the last resize event gave it: the GL side (the
+      // offscreen targets, the viewport, the projection's aspect) follows it; the cursor and the
+      // panel work in window coordinates, which differ on a high-DPI screen.
+      const int width = framebufferWidth_, height = framebufferHeight_;
       if (width <= 0 || height <= 0) {  // minimised
         glfwWaitEventsTimeout(0.1);
         continue;
@@ -145,16 +134,15 @@ class Viewer {
       pollOpenedScene(true);
       if (std::optional<EnvironmentStages> stages = environments_->waitForResult())
         useEnvironment(std::move(*stages));
-      drawFrame(window_->framebufferWidth(), window_->framebufferHeight(),
-                screenshotFiles(options_.screenshot), false);
+      drawFrame(framebufferWidth_, framebufferHeight_, screenshotFiles(options_.screenshot), false);
       checkGlErrors("screenshot");
     }
     if (options_.frames > 0) {
       // The first two frames compile shader variants and upload: left out of the median when
       // there are more.
       const std::vector<double> steady(intervals.begin() + (intervals.size() > 2 ? 2 : 0), intervals.end());
-      std::cout << "iblkit-view: " << intervals.size() << " frames, " << window_->framebufferWidth() << "x"
-                << window_->framebufferHeight() << ", " << window_->description() << ", median frame time "
+      std::cout << "iblkit-view: " << intervals.size() << " frames, " << framebufferWidth_ << "x"
+                << framebufferHeight_ << ", " << window_->description() << ", median frame time "
                 << std::fixed << std::setprecision(2) << median(steady) << " ms, exposure " << settings_.exposure
                 << (autoExposure_ ? " (auto)" : " (locked)") << '\n';
     }
@@ -191,8 +179,9 @@ class Viewer {
       try {
         writeScreenshot(*capture, radiance, displayed);
         lastScreenshot_ = "saved " + capture->png.string();
+        // Flushed: a script driving the window waits for this line.
         std::cout << "iblkit-view: wrote " << capture->exr.string() << " and " << capture->png.string()
-                  << '\n';
+                  << std::endl;
       } catch (const Error& e) {
         if (!withPanel) throw;  // --screenshot at exit: the run fails
         lastScreenshot_ = std::string("screenshot failed: ") + e.what();  // P: the panel says why
@@ -272,13 +261,13 @@ class Viewer {
       bake_ = std::move(bake);
       renderer_ = std::make_unique<Renderer>(bake_, options_.anisotropy);
       originalMaterials_ = renderer_->materials();
-      const float aspect = float(std::max(window_->framebufferWidth(), 1)) / float(std::max(window_->framebufferHeight(), 1));
+      const float aspect = float(std::max(framebufferWidth_, 1)) / float(std::max(framebufferHeight_, 1));
       camera_.emplace(sceneCamera(bake_.scene, aspect), bake_.scene.bounds);
       cameraMoved_ = false;
       settings_.envRotationDegrees = 0.0f;
       environments_ = std::make_unique<EnvironmentSwitcher>(options_.envDir, bake_.env.rotationDegrees,
                                                             bake_.env.intensity, options_.prepareEnvironment);
-      glfwSetWindowTitle(window_->window(), ("iblkit-view: " + openingFile_.filename().string()).c_str());
+      title_ = "iblkit-view: " + openingFile_.filename().string();
       openStatus_ = "opened " + openingFile_.string();
       exposureAge_ = 0;
       checkGlErrors("open");
@@ -307,13 +296,16 @@ class Viewer {
         glfwSetWindowShouldClose(window_->window(), GLFW_TRUE);
         break;
       case GLFW_KEY_LEFT_BRACKET:
-        settings_.exposure -= 0.5f;
-        autoExposure_ = false;  // a chosen exposure stays
+      case GLFW_KEY_RIGHT_BRACKET: {
+        const int direction = key == GLFW_KEY_RIGHT_BRACKET ? 1 : -1;
+        if (mods & GLFW_MOD_SHIFT) {  // { and }: flip through the images of --reference
+          flipImage(direction);
+        } else {
+          settings_.exposure += 0.5f * float(direction);
+          autoExposure_ = false;  // a chosen exposure stays
+        }
         break;
-      case GLFW_KEY_RIGHT_BRACKET:
-        settings_.exposure += 0.5f;
-        autoExposure_ = false;
-        break;
+      }
       case GLFW_KEY_A:
         autoExposure_ = !autoExposure_;
         exposureAge_ = 0;
@@ -372,31 +364,69 @@ class Viewer {
     cameraMoved_ = true;
   }
 
+  // { and }: the next or previous image of --reference (a report case's reference and modes),
+  // shown alone when the live frame was.
+  void flipImage(int direction) {
+    if (!comparison_) return;
+    comparison_->flip(direction);
+    if (comparison_->view == ComparisonView::Live) comparison_->view = ComparisonView::Image;
+    report("showing " + comparison_->shownLabel());
+  }
+
+  // The window title: the scene, and the image compared with when a comparison is on.
+  void updateTitle() {
+    std::string title = title_;
+    if (comparison_ && comparison_->view != ComparisonView::Live)
+      title += " | " + std::string(comparisonViewName(comparison_->view)) + ": " + comparison_->shownLabel();
+    if (title == shownTitle_) return;
+    glfwSetWindowTitle(window_->window(), title.c_str());
+    shownTitle_ = title;
+  }
+
+  // Takes the window's events in order (window_input.h), up to one after which a frame must be
+  // drawn before the rest: a screenshot request (the picture shows what came before it, not what
+  // came after it in the same batch) or a resize (a frame at the new size first). The rest wait
+  // for the next frame. Mouse input over the panel, and keys while a text field of it is active,
+  // are the panel's.
   void handleInput() {
-    GLFWwindow* window = window_->window();
-    const PendingInput input = std::exchange(input_, {});
-    for (const fs::path& file : input.drops) open(file);
-    if (!panel_->wantsKeyboard())
-      for (int key : input.keys) handleKey(key, input.mods);
-    double x = 0.0, y = 0.0;
-    glfwGetCursorPos(window, &x, &y);
+    int windowWidth = 1, windowHeight = 1;
+    glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
+    windowWidth = std::max(windowWidth, 1);
+    windowHeight = std::max(windowHeight, 1);
+    const bool panelMouse = panel_->wantsMouse(), panelKeyboard = panel_->wantsKeyboard();
+    while (std::optional<InputEvent> event = input_.next()) {
+      if (const auto* key = std::get_if<KeyPressed>(&*event)) {
+        if (!panelKeyboard) handleKey(key->key, key->mods);
+        if (screenshotRequested_) return;
+      } else if (const auto* button = std::get_if<MouseButton>(&*event)) {
+        const int which = button->button;
+        if (which != GLFW_MOUSE_BUTTON_LEFT && which != GLFW_MOUSE_BUTTON_RIGHT && which != GLFW_MOUSE_BUTTON_MIDDLE)
+          continue;
+        buttonsDown_ = button->pressed ? buttonsDown_ | (1u << which) : buttonsDown_ & ~(1u << which);
+        if (buttonsDown_ == 0) drag_ = Drag::None;
+        if (button->pressed && drag_ == Drag::None && !panelMouse)
+          drag_ = which != GLFW_MOUSE_BUTTON_LEFT ? Drag::Pan
+                  : comparison_ && comparison_->nearDivider(cursorX_, windowWidth) ? Drag::Divider
+                                                                                  : Drag::Orbit;
+      } else if (const auto* cursor = std::get_if<CursorMoved>(&*event)) {
+        drag(cursor->x, cursor->y, windowWidth, windowHeight);
+      } else if (const auto* scroll = std::get_if<Scrolled>(&*event)) {
+        if (!panelMouse && drag_ == Drag::None) zoom(std::pow(0.9f, float(scroll->y)));
+      } else if (const auto* dropped = std::get_if<FileDropped>(&*event)) {
+        open(dropped->file);
+      } else if (const auto* resized = std::get_if<FramebufferResized>(&*event)) {
+        framebufferWidth_ = resized->width;
+        framebufferHeight_ = resized->height;
+        return;
+      }
+    }
+  }
+
+  // The cursor moved to (x, y), window coordinates: the drag under way follows it.
+  void drag(double x, double y, int windowWidth, int windowHeight) {
     const double dx = x - cursorX_, dy = y - cursorY_;
     cursorX_ = x;
     cursorY_ = y;
-    const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    const bool other = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
-                       glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-    int windowWidth = 1, windowHeight = 1;
-    glfwGetWindowSize(window, &windowWidth, &windowHeight);
-    if (!left && !other) drag_ = Drag::None;
-    if (drag_ == Drag::None && !panel_->wantsMouse()) {
-      if (left)
-        drag_ = comparison_ && comparison_->nearDivider(x, windowWidth) ? Drag::Divider : Drag::Orbit;
-      else if (other)
-        drag_ = Drag::Pan;
-      if (input.scroll != 0.0) zoom(std::pow(0.9f, float(input.scroll)));
-    }
-    if (dx == 0.0 && dy == 0.0) return;
     switch (drag_) {
       case Drag::Orbit:
         // A drag across the window's width turns the view half way round.
@@ -427,9 +457,12 @@ class Viewer {
   std::unique_ptr<EnvironmentSwitcher> environments_;
   std::unique_ptr<Panel> panel_;
   std::unique_ptr<RenderTarget> target_;
-  PendingInput input_;
+  WindowInput input_;
   Drag drag_ = Drag::None;
-  double cursorX_ = 0.0, cursorY_ = 0.0;
+  unsigned buttonsDown_ = 0;  // bit GLFW_MOUSE_BUTTON_*: the left, right and middle buttons held
+  double cursorX_ = 0.0, cursorY_ = 0.0;       // window coordinates
+  int framebufferWidth_ = 0, framebufferHeight_ = 0;  // pixels, from the resize events
+  std::string title_, shownTitle_;  // the scene's title; the one the window has now
   bool cameraMoved_ = false, screenshotRequested_ = false;
   std::vector<double> recent_;
   std::string lastScreenshot_;
@@ -462,6 +495,18 @@ OpenedKind openedKind(const fs::path& file) {
 int runViewer(const ViewerOptions& options) {
   // Bad names fail before anything is loaded or opened.
   parseComparisonView(options.compare);
+  if (!options.show.empty()) {
+    if (options.references.empty()) failUsage("--show", "only with --reference");
+    std::string names;
+    bool found = false;
+    for (const ComparisonImage& image : options.references) {
+      found |= image.name == options.show;
+      names += (names.empty() ? "" : ", ") + image.name;
+    }
+    if (!found)
+      failUsage("--show", "no image '" + options.show + "' in " + options.referenceSource + " (expected one of " +
+                              names + ")");
+  }
   if (!options.screenshot.empty()) screenshotFiles(options.screenshot);
   if (!options.environment.empty() && !fs::is_regular_file(options.environment))
     fail(options.environment, "no such file");

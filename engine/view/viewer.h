@@ -11,6 +11,7 @@
 #include "bakefile/bake_folder.h"
 #include "engine/gl/renderer.h"
 #include "engine/view/environment_switcher.h"
+#include "engine/view/reference_comparison.h"
 
 namespace iblkit {
 
@@ -39,8 +40,12 @@ struct ViewerOptions {
   float anisotropy = kDefaultTextureAnisotropy;  // Renderer's textureAnisotropy
   std::filesystem::path envDir = "assets/hdri";
   std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)
-  std::filesystem::path reference;    // --reference REF.exr
-  std::string compare = "split";      // the reference view to start with: live, split, difference
+  // --reference: the images to compare with (one reference, or a report case's reference and
+  // modes), read by the program; empty: no comparison. `referenceSource` names them for the panel.
+  std::vector<ComparisonImage> references;
+  std::string referenceSource;
+  std::string show;                   // --show: the image of `references` shown first (empty: the first)
+  std::string compare = "split";      // the reference view to start with: live, split, difference, image
   int frames = 0;                     // > 0: quit after this many frames
   std::filesystem::path screenshot;   // written from the last frame, at exit, after a pending
                                       // environment switch has been uploaded
@@ -50,8 +55,9 @@ struct ViewerOptions {
 
 // Loads the bake (its errors first: no window opens for a bad bake), opens the window and runs the
 // frame loop until Esc, the window's close button or `frames` frames. With `frames`, prints the
-// median frame time on stdout. Throws Error for bad input, a missing display ("cannot open a window
-// (...; use --headless)") or a GL error. Returns the exit status.
+// median frame time on stdout. Throws Error for bad input (a `show` that names no image: "--show:
+// ..."), a missing display ("cannot open a window (...; use --headless)") or a GL error. Returns
+// the exit status.
 int runViewer(const ViewerOptions& options);
 
 // What a file dropped onto the window (or typed into the panel's "open" field) is opened as.

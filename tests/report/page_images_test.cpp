@@ -55,3 +55,56 @@ TEST(PageImages, TheScriptNamesEveryImageAndRefusesMismatchedSizes) {
 
 }  // namespace
 }  // namespace iblkit
+
+namespace iblkit {
+namespace {
+
+TEST(PageImages, TheScriptReadsBackInOrderWithinRgbePrecision) {
+  Image reference(4, 3), frame(4, 3, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 4; ++x) reference.at(x, y) = glm::vec4(0.01f * float(1 + x), 3.0f * float(1 + y), 250.0f, 1.0f);
+  const auto file = test::scratchDir() / "case-linear.js";
+  // Not in alphabetical order: the reader keeps the written order.
+  writeCaseImagesScript(file, "bunny-sky", {{"reference", &reference}, {"full", &frame}, {"sh", &frame}});
+  const CaseImagesScript script = readCaseImagesScript(file);
+  EXPECT_EQ(script.caseName, "bunny-sky");
+  ASSERT_EQ(script.images.size(), 3u);
+  EXPECT_EQ(script.images[0].first, "reference");
+  EXPECT_EQ(script.images[1].first, "full");
+  EXPECT_EQ(script.images[2].first, "sh");
+  const Image& read = script.images[0].second;
+  ASSERT_EQ(read.width(), 4);
+  ASSERT_EQ(read.height(), 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 4; ++x) {
+      // RGBE keeps 8 bits of mantissa against the pixel's largest channel (250 here).
+      const glm::vec4 a = reference.at(x, y), b = read.at(x, y);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c], a[c], 250.0f / 128.0f) << x << "," << y << "," << c;
+      EXPECT_NEAR(b.g, a.g, 2.0f) << "row " << y;
+      EXPECT_EQ(b.a, 1.0f);
+    }
+  EXPECT_EQ(script.images[1].second.at(0, 0), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+}
+
+TEST(PageImages, AScriptThatDoesNotReadIsNamed) {
+  const auto dir = test::scratchDir();
+  auto problem = [](const std::filesystem::path& file) {
+    try {
+      readCaseImagesScript(file);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(problem(dir / "none.js"), (dir / "none.js").string() + ": cannot open: No such file or directory");
+  std::ofstream(dir / "other.js") << "console.log(1);\n";
+  EXPECT_EQ(problem(dir / "other.js").rfind((dir / "other.js").string() + ": not a report's linear images script", 0), 0u);
+  std::ofstream(dir / "short.js") << "iblkitCaseImages(\"a-b\", {\"width\": 4, \"height\": 4, \"images\": {\"reference\": \""
+                                  << base64(zlibCompress(std::vector<std::uint8_t>(12, 1))) << "\"}});\n";
+  EXPECT_EQ(problem(dir / "short.js"), (dir / "short.js").string() + ": image 'reference' has 3 pixels, not 4x4");
+  std::ofstream(dir / "corrupt.js") << "iblkitCaseImages(\"a-b\", {\"width\": 1, \"height\": 1, \"images\": {\"reference\": \"Zm9v\"}});\n";
+  EXPECT_EQ(problem(dir / "corrupt.js"), (dir / "corrupt.js").string() + ": zlib: corrupt data");
+}
+
+}  // namespace
+}  // namespace iblkit

@@ -45,7 +45,7 @@ void expectGpuHeatMapMatchesTheScorer(float maxValue) {
   const DifferenceHeatMap heatMap;
   RenderTarget target(kWidth, kHeight, 1);
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
-  heatMap.draw(live.id(), ref.id(), maxValue, kWidth, kHeight);
+  heatMap.draw(live.id(), ref.id(), maxValue, kWidth, kHeight, 0, 0, kWidth, kHeight);
   const Image gpu = target.readColor();
   checkGlErrors("difference heat map");
 

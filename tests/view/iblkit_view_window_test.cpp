@@ -1,7 +1,9 @@
 // End-to-end tests of iblkit-view's window (build/bin) under a virtual X server (xvfb-run, from
 // Debian's xvfb and xauth packages; llvmpipe through GLX), on a small bake of the bundled mirror
 // sphere scene: frames render, a screenshot matches the headless frame, the reference split and
-// difference views show what they should, and a missing display or bake is one line and exit 1.
+// difference views show what they should, and a missing display or bake is one line and exit 1;
+// real input events (xdotool, drive_window.sh) orbit, zoom, switch the mode, resize the window and
+// flip through a report case.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 
 #include "core/auto_exposure.h"
 #include "core/image_io.h"
+#include "support/report_output.h"
 #include "support/test_paths.h"
 
 namespace iblkit {
@@ -233,7 +236,7 @@ TEST_F(IblkitViewWindow, BadInputFailsBeforeAWindowOpens) {
   const ProgramRun view = run(program("iblkit-view") + " " + windowArguments("--compare sideways"));
   EXPECT_EQ(view.status, 2);  // a usage error (cli/program.h)
   EXPECT_EQ(view.output,
-            "iblkit-view: --compare: unknown view 'sideways' (expected one of live, split, difference)\n");
+            "iblkit-view: --compare: unknown view 'sideways' (expected one of live, split, difference, image)\n");
   const ProgramRun shot =
       run(program("iblkit-view") + " " + windowArguments("--screenshot " + shellQuoted(dir_ / "a.jpg")));
   EXPECT_EQ(shot.status, 1);
@@ -327,6 +330,274 @@ TEST_F(IblkitViewWindow, OpeningABadFileSaysSoAndKeepsTheSceneAMapSwitches) {
   const glm::vec4 corner = radiance.pixels()[0];
   EXPECT_GT(corner.r, 0.1f);
   EXPECT_LT(corner.g, 0.01f * corner.r);
+}
+
+}  // namespace
+}  // namespace iblkit
+
+namespace iblkit {
+namespace {
+
+// The screenshots (EXR of the radiance, PNG of the view) a run wrote with P, in order.
+struct Shot {
+  fs::path exr, png;
+};
+
+struct DrivenRun {
+  ProgramRun run;   // drive_window.sh's status and output (xdotool's, e.g. getwindowname)
+  std::string log;  // iblkit-view's stdout and stderr
+  std::vector<Shot> shots;
+};
+
+// iblkit-view `arguments` in a window on a fresh virtual display, driven by real X input events
+// (xdotool through tests/view/drive_window.sh, `events` one command a line), run in `dir` so
+// that P's screenshots land there; Esc at the end. At most 60 s in all.
+DrivenRun drive(const fs::path& dir, const std::string& events, const std::string& arguments) {
+  const fs::path script = IBLKIT_DRIVE_WINDOW;
+  std::ofstream(dir / "events") << events;
+  DrivenRun result;
+  result.run = run("cd " + shellQuoted(dir) + " && timeout 60 xvfb-run -a -s '-screen 0 640x480x24' bash " +
+                   shellQuoted(script) + " log events " + program("iblkit-view") + " " + arguments);
+  std::ifstream stream(dir / "log");
+  for (std::string line; std::getline(stream, line);) {
+    result.log += line + "\n";
+    const std::string wrote = "iblkit-view: wrote ", separator = " and ";
+    if (line.rfind(wrote, 0) != 0) continue;
+    const std::size_t at = line.find(separator);
+    result.shots.push_back({line.substr(wrote.size(), at - wrote.size()), line.substr(at + separator.size())});
+  }
+  return result;
+}
+
+double meanAbsoluteDifference(const Image& a, const Image& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+    const glm::vec4 d = glm::abs(a.pixels()[i] - b.pixels()[i]);
+    sum += (d.r + d.g + d.b) / 3.0;
+  }
+  return sum / double(a.pixels().size());
+}
+
+int coveredPixels(const Image& radiance) {
+  int covered = 0;
+  for (const glm::vec4& p : radiance.pixels()) covered += p.a == 1.0f;
+  return covered;
+}
+
+class IblkitViewWindowEvents : public IblkitViewWindow {
+ protected:
+  void SetUp() override {
+    IblkitViewWindow::SetUp();
+    if (IsSkipped()) return;
+    ASSERT_EQ(run("command -v xdotool >/dev/null").status, 0) << "xdotool is missing: install it (scripts/setup.sh)";
+  }
+};
+
+// Real input events: a left drag orbits, the wheel zooms, a key switches the mode, the window
+// resized by the X server gives frames (and screenshots) of its new size, a right drag pans.
+TEST_F(IblkitViewWindowEvents, DragWheelKeyAndResizeChangeTheFrameAsTheyShould) {
+  const DrivenRun r = drive(dir_,
+                            "mousemove --window %W 80 60\nkey p\nshots 1\n"
+                            "mousedown 1\nmousemove --window %W 120 60\nmouseup 1\nkey p\nshots 2\n"
+                            "click --repeat 3 4\nkey p\nshots 3\n"
+                            "key 1\nkey p\nshots 4\n"
+                            "windowsize %W 200 150\nkey p\nshots 5\n"
+                            "mousedown 3\nmousemove --window %W 150 75\nmouseup 3\nkey p\nshots 6\n",
+                            windowArguments("--no-panel"));
+  ASSERT_EQ(r.run.status, 0) << r.run.output << r.log;
+  ASSERT_EQ(r.shots.size(), 6u) << r.log;
+  std::vector<Image> radiance, shown;
+  for (const Shot& shot : r.shots) {
+    radiance.push_back(readExr(shot.exr));
+    shown.push_back(readPng(shot.png));
+  }
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_EQ(shown[std::size_t(i)].width(), kWidth) << i;
+    ASSERT_EQ(shown[std::size_t(i)].height(), kHeight) << i;
+  }
+  // The first is the scene's camera: the headless frame.
+  EXPECT_LT(meanAbsoluteDifference(radiance[0], renderHeadless("start.exr")), 1e-3);
+  // A 40-pixel drag turns the view by a quarter of pi: the sky behind the sphere moves.
+  EXPECT_GT(meanAbsoluteDifference(shown[0], shown[1]), 0.02);
+  // Three wheel steps towards the sphere (x0.9 each): it covers more of the frame.
+  EXPECT_GT(coveredPixels(radiance[2]), coveredPixels(radiance[1]) * 13 / 10)
+      << coveredPixels(radiance[1]) << " -> " << coveredPixels(radiance[2]);
+  // Key 1, the unlit mode: the mirror shows its flat base colour instead of the sky.
+  EXPECT_GT(meanAbsoluteDifference(shown[2], shown[3]), 0.05);
+  EXPECT_EQ(coveredPixels(radiance[3]), coveredPixels(radiance[2]));
+  // Resized to 200 x 150: both files have the new size, the same view at the same scale (the
+  // vertical field of view kept; the same shape, so the sphere covers the same fraction).
+  EXPECT_EQ(radiance[4].width(), 200);
+  EXPECT_EQ(radiance[4].height(), 150);
+  EXPECT_EQ(shown[4].width(), 200);
+  EXPECT_EQ(shown[4].height(), 150);
+  const double before = double(coveredPixels(radiance[3])) / double(kWidth * kHeight);
+  const double after = double(coveredPixels(radiance[4])) / (200.0 * 150.0);
+  EXPECT_NEAR(after, before, 0.02);
+  // A right drag pans: the sphere follows the cursor, 50 pixels to the right, its coverage about kept.
+  auto centreX = [](const Image& frame) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = 0; y < frame.height(); ++y)
+      for (int x = 0; x < frame.width(); ++x)
+        if (frame.at(x, y).a == 1.0f) sum += x, ++count;
+    return count > 0 ? sum / count : 0.0;
+  };
+  EXPECT_GT(centreX(radiance[5]), centreX(radiance[4]) + 10.0) << centreX(radiance[4]) << " -> " << centreX(radiance[5]);
+}
+
+// A window wider than the reference: the image keeps the live frame's scale (full height,
+// centred, black beside it), and the difference view compares each pixel with the live pixel
+// under it, so the headless frame of the narrower shape is black against the wider live frame.
+TEST_F(IblkitViewWindow, AReferenceKeepsTheLiveFramesScaleInAWiderWindow) {
+  const fs::path magenta = dir_ / "magenta.exr";
+  writeExr(magenta, Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f)), {.pixelType = PixelType::Float});
+  const std::string wide = " --width 240 --height 120 --env-dir " + shellQuoted(dir_ / "no-maps");
+  const fs::path imageShot = dir_ / "wide-image.png";
+  ProgramRun r = run(inWindow(shellQuoted(bake_) + wide + " --reference " + shellQuoted(magenta) +
+                              " --compare image --frames 2 --screenshot " + shellQuoted(imageShot)));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image image = readPng(imageShot);
+  ASSERT_EQ(image.width(), 240);
+  int inside = 0, outside = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < 240; ++x) {
+      if (x >= 40 && x < 200) inside += isMagenta(image.at(x, y));
+      else outside += maxComponent(image.at(x, y)) == 0.0f;
+    }
+  EXPECT_EQ(inside, kWidth * kHeight);
+  EXPECT_EQ(outside, 80 * kHeight);
+
+  renderHeadless("narrow.exr");
+  const fs::path differenceShot = dir_ / "wide-difference.png";
+  r = run(inWindow(shellQuoted(bake_) + wide + " --reference " + shellQuoted(dir_ / "narrow.exr") +
+                   " --compare difference --frames 2 --screenshot " + shellQuoted(differenceShot)));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image difference = readPng(differenceShot);
+  int black = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 40; x < 200; ++x) black += maxComponent(difference.at(x, y)) < 0.02f;
+  EXPECT_GT(black, kWidth * kHeight * 97 / 100);
+}
+
+// A real iblkit-report output (the mirror sphere under sky, two modes, 160x90, an 8-spp
+// reference: about 9 s): its case's images are the scene at the window's camera, so the
+// difference view of each against the live frame of the same bake is dark nearly everywhere.
+TEST_F(IblkitViewWindow, ARealReportCaseLinesUpWithTheLiveFrame) {
+  const fs::path report = dir_ / "report";
+  ProgramRun r = run(program("iblkit-report") + " --bin " + shellQuoted(test::binDir()) + " " +
+                     shellQuoted(test::assetsDir() / "scenes" / "mirror_sphere.json") + " --env-dir " +
+                     shellQuoted(test::assetsDir() / "hdri") +
+                     " --envs sky --modes mirror,full --width 160 --height 90 --pass-spp 4 --min-passes 2"
+                     " --max-passes 2 --bench 1 -o " + shellQuoted(report));
+  ASSERT_EQ(r.status, 0) << r.output;
+  // The images in the report's order, as a bad --show lists them.
+  r = run(program("iblkit-view") + " " + shellQuoted(bake_) + " --reference " + shellQuoted(report) + " --show none");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("case mirror_sphere-sky (expected one of reference, mirror, full)"), std::string::npos)
+      << r.output;
+  for (const char* shown : {"reference", "mirror", "full"}) {
+    const fs::path shot = dir_ / (std::string("difference-") + shown + ".png");
+    r = run(inWindow(shellQuoted(bake_) + " --env-dir " + shellQuoted(dir_ / "no-maps") + " --reference " +
+                     shellQuoted(report) + " --case mirror_sphere-sky --compare difference --show " + shown +
+                     " --frames 2 --screenshot " + shellQuoted(shot)));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("2 frames, 160x90"), std::string::npos) << r.output;  // the report's size
+    const Image difference = readPng(shot);
+    int dark = 0;
+    for (const glm::vec4& p : difference.pixels()) dark += maxComponent(p) < 0.1f;
+    EXPECT_GT(dark, int(difference.pixelCount()) * 95 / 100) << shown;  // measured: 98.8%
+  }
+}
+
+// A report case: the reference and each mode's frame, written by the report's writers.
+class IblkitViewReportCase : public IblkitViewWindow {
+ protected:
+  void SetUp() override {
+    IblkitViewWindow::SetUp();
+    if (IsSkipped()) return;
+    report_ = dir_ / "report";
+    test::writeReportOutput(report_, {{"mirror_sphere", "sky",
+                                       {{"reference", Image(kWidth, kHeight, glm::vec4(2.0f, 0.0f, 2.0f, 1.0f))},
+                                        {"full", Image(kWidth, kHeight, glm::vec4(0.0f, 2.0f, 0.0f, 1.0f))},
+                                        {"mirror", Image(kWidth, kHeight, glm::vec4(0.0f, 0.0f, 2.0f, 1.0f))}}}});
+  }
+
+  // The colour that fills a screenshot ('m'agenta, 'g'reen, 'b'lue; '?' for anything else).
+  static char fill(const Image& png) {
+    int magenta = 0, green = 0, blue = 0;
+    for (const glm::vec4& p : png.pixels()) {
+      magenta += p.r > 0.3f && p.b > 0.3f && p.g < 0.01f;
+      green += p.g > 0.3f && p.r < 0.01f && p.b < 0.01f;
+      blue += p.b > 0.3f && p.r < 0.01f && p.g < 0.01f;
+    }
+    const int all = int(png.pixelCount());
+    return magenta == all ? 'm' : green == all ? 'g' : blue == all ? 'b' : '?';
+  }
+
+  fs::path report_;
+};
+
+TEST_F(IblkitViewReportCase, ShowStartsAtTheNamedImageAndBadCasesAreOneLine) {
+  const fs::path shot = dir_ / "full.png";
+  ProgramRun r = run(inWindow(windowArguments("--reference " + shellQuoted(report_) +
+                                              " --case mirror_sphere-sky --show full --compare image --frames 2 "
+                                              "--screenshot " + shellQuoted(shot))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(fill(readPng(shot)), 'g');
+  // report.json itself, the only case taken without --case, the split view: live left, the reference right.
+  const fs::path split = dir_ / "split.png";
+  r = run(inWindow(windowArguments("--reference " + shellQuoted(report_ / "report.json") + " --frames 2 --screenshot " +
+                                   shellQuoted(split))));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image splitShown = readPng(split);
+  EXPECT_TRUE(isMagenta(splitShown.at(kWidth - 1, kHeight / 2)));
+  EXPECT_FALSE(isMagenta(splitShown.at(0, kHeight / 2)));
+
+  const std::string json = (report_ / "report.json").string();
+  r = run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(report_) + " --case bunny-sky"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(r.output.ends_with("iblkit-view: " + json + ": no case 'bunny-sky' (cases: mirror_sphere-sky)\n")) << r.output;
+  r = run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(dir_ / "no-report") + "/"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("iblkit-view: " + (dir_ / "no-report").string() + "/: cannot open"), std::string::npos)
+      << r.output;
+  fs::remove(report_ / "images" / "mirror_sphere-sky-linear.js");
+  r = run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(report_)));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(r.output.ends_with("iblkit-view: " + (report_ / "images" / "mirror_sphere-sky-linear.js").string() +
+                                 ": cannot open: No such file or directory\n"))
+      << r.output;
+  r = run(program("iblkit-view") + " " + windowArguments("--reference " + shellQuoted(report_) + " --show sh"));
+  EXPECT_EQ(r.status, 1);  // the missing images script comes first
+  r = run(program("iblkit-view") + " " + windowArguments("--case mirror_sphere-sky"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "iblkit-view: --case: only with --reference REPORT\n");
+}
+
+TEST_F(IblkitViewReportCase, BracesFlipThroughTheReferenceAndTheModesAndTheTitleSaysWhich) {
+  const DrivenRun r = drive(dir_,
+                            "key p\nshots 1\n"
+                            "key shift+bracketright\nkey p\nshots 2\n"
+                            "key shift+bracketright\nkey p\nshots 3\ngetwindowname %W\n"
+                            "key shift+bracketright\nkey shift+bracketleft\nkey p\nshots 4\n",
+                            windowArguments("--no-panel --compare image --reference " + shellQuoted(report_) +
+                                            " --case mirror_sphere-sky"));
+  ASSERT_EQ(r.run.status, 0) << r.run.output << r.log;
+  ASSERT_EQ(r.shots.size(), 4u) << r.log;
+  std::string fills;
+  for (const Shot& shot : r.shots) fills += fill(readPng(shot.png));
+  EXPECT_EQ(fills, "mgbb");
+  EXPECT_NE(r.log.find("iblkit-view: showing full (2 of 3)\n"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("iblkit-view: showing reference (1 of 3)\n"), std::string::npos) << r.log;
+  EXPECT_NE(r.run.output.find("iblkit-view: bake | image: mirror (3 of 3)"), std::string::npos) << r.run.output;
+  // --show with a name the case does not have: a usage error listing the names.
+  const ProgramRun bad = run(program("iblkit-view") + " " +
+                             windowArguments("--reference " + shellQuoted(report_) + " --show sh"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_TRUE(bad.output.ends_with("iblkit-view: --show: no image 'sh' in " + (report_ / "report.json").string() +
+                                   ", case mirror_sphere-sky (expected one of reference, full, mirror)\n"))
+      << bad.output;
 }
 
 }  // namespace
