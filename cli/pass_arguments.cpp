@@ -15,8 +15,9 @@ constexpr std::array<std::string_view, 5> kMergeOptions = {"--output", "--sum", 
                                                            "--exposure"};
 // The options that leave every sample as it is (samplingArguments).
 constexpr std::array<std::string_view, 17> kNonSamplingOptions = {
-    "--help",  "--output", "--png",  "--exposure", "--albedo",  "--normal", "--depth", "--variance", "--mask",
-    "--bent-normal", "--spp", "--time", "--threads", "--pass", "--passes", "--sum", "--env"};
+    "--help",    "--output",   "--png",    "--exposure",    "--albedo", "--normal",
+    "--depth",   "--variance", "--mask",   "--bent-normal", "--spp",    "--time",
+    "--threads", "--pass",     "--passes", "--sum",         "--env"};
 
 template <std::size_t N>
 bool listed(const std::array<std::string_view, N>& names, const std::string& name) {
@@ -27,9 +28,10 @@ bool listed(const std::array<std::string_view, N>& names, const std::string& nam
 
 void addPassArguments(CLI::App& app, PassArguments& arguments, const std::string& scene) {
   app.get_option(scene)->required(false);
-  CLI::Option* pass =
-      app.add_option("--pass", arguments.pass, "render only pass I (0-based) of --passes: its share of --spp's samples");
-  CLI::Option* passes = app.add_option("--passes", arguments.passes, "the passes --spp is split into (1..--spp)");
+  CLI::Option* pass = app.add_option(
+      "--pass", arguments.pass, "render only pass I (0-based) of --passes: its share of --spp's samples");
+  CLI::Option* passes =
+      app.add_option("--passes", arguments.passes, "the passes --spp is split into (1..--spp)");
   pass->needs(passes);
   passes->needs(pass);
   app.add_option("--sum", arguments.sum, "the render's exact sums, for --merge (docs/cluster.md)");

@@ -77,6 +77,9 @@ void drawProgress(double fraction, double seconds) {
 int mergePasses(const Options& options) {
   checkOutputs(options.passes.merge, {options.output, options.variance, options.png, options.passes.sum});
   const PassSum sum = mergePassSumFiles(options.passes.merge);
+  if (sum.samples.size() > 1 || sum.samples.front().first != 0)
+    warn("--merge", "the samples merged are " + sampleRangesText(sum.samples) +
+                        ", not one range from 0: is a pass missing?");
   const Image beauty = meanRadiance(sum);
   const ExrWriteOptions exrOptions{.pixelType = PixelType::Float};
   if (!options.output.empty()) writeExr(options.output, beauty, exrOptions);
@@ -91,7 +94,8 @@ int mergePasses(const Options& options) {
 int run(const Options& options, const CLI::App& app) {
   checkPassArguments(app, options.passes, "scene");
   if (!options.passes.merge.empty()) return mergePasses(options);
-  if (options.passes.passes && options.timeSeconds > 0.0) failUsage("--passes", "cannot split a --time render");
+  if (options.passes.passes && options.timeSeconds > 0.0)
+    failUsage("--passes", "cannot split a --time render");
   // Before any file is read, naming the option (render() would say "render: ...").
   requireInRange("--spp", options.samplesPerPixel, 1, kMaxSamplesPerPixel);
   if (app.count("--width")) requireInRange("--width", options.width, 1, kMaxImageSide);
@@ -127,9 +131,10 @@ int run(const Options& options, const CLI::App& app) {
   }
   if (!options.bentNormal.empty() && integratorSettings.kind != IntegratorKind::AmbientOcclusion)
     failUsage("--bent-normal", "needs --integrator ao");
-  const SampleRange samples = options.passes.passes
-                                  ? passSamples(options.samplesPerPixel, *options.passes.pass, *options.passes.passes)
-                                  : SampleRange{0, static_cast<std::uint32_t>(options.samplesPerPixel)};
+  const SampleRange samples =
+      options.passes.passes
+          ? passSamples(options.samplesPerPixel, *options.passes.pass, *options.passes.passes)
+          : SampleRange{0, static_cast<std::uint32_t>(options.samplesPerPixel)};
   for (const auto* file : {&options.output, &options.png, &options.albedo, &options.normal, &options.depth,
                            &options.variance, &options.mask, &options.bentNormal, &options.passes.sum})
     checkOutputFolder(*file);
@@ -139,10 +144,10 @@ int run(const Options& options, const CLI::App& app) {
   checkOutputs(sceneInputs(scene, options.scene.environment),
                {options.output, options.png, options.albedo, options.normal, options.depth, options.variance,
                 options.mask, options.bentNormal, options.passes.sum});
-  const std::uint64_t key = options.passes.sum.empty()
-                                ? 0
-                                : renderKey(sceneInputs(scene, options.scene.environment),
-                                            samplingArguments(app, "scene"));
+  const std::uint64_t key =
+      options.passes.sum.empty()
+          ? 0
+          : renderKey(sceneInputs(scene, options.scene.environment), samplingArguments(app, "scene"));
   RenderSettings settings;
   settings.width = app.count("--width") ? options.width : scene.width;
   settings.height = app.count("--height") ? options.height : scene.height;

@@ -74,6 +74,14 @@ std::vector<SampleRange> joined(std::vector<SampleRange> ranges) {
   return out;
 }
 
+// The ranges of `a` and `b` (each sorted, disjoint from the other), sorted and joined.
+std::vector<SampleRange> unitedRanges(const std::vector<SampleRange>& a, const std::vector<SampleRange>& b) {
+  std::vector<SampleRange> all(a);
+  all.insert(all.end(), b.begin(), b.end());
+  std::sort(all.begin(), all.end(), [](const SampleRange& x, const SampleRange& y) { return x.first < y.first; });
+  return joined(std::move(all));
+}
+
 std::string checkRanges(const std::vector<SampleRange>& ranges) {
   for (std::size_t i = 0; i < ranges.size(); ++i) {
     const SampleRange& r = ranges[i];
@@ -126,6 +134,12 @@ FixedPointSum PassSum::toFixedPointSquare(float value) {
   return static_cast<FixedPointSum>(std::nearbyint(v * v * kScale));  // v * v is exact in double
 }
 
+std::string sampleRangesText(const std::vector<SampleRange>& samples) {
+  std::string text;
+  for (const SampleRange& r : samples) text += (text.empty() ? "" : ", ") + rangeText(r);
+  return text;
+}
+
 std::string mergeConflict(const PassSum& a, const PassSum& b) {
   if (a.width != b.width || a.height != b.height)
     return "is " + std::to_string(b.width) + "x" + std::to_string(b.height) + ", the others " +
@@ -146,20 +160,20 @@ std::string mergeConflict(const PassSum& a, const PassSum& b) {
                " already merged (the same pass twice?)";
   if (a.sampleCount() + b.sampleCount() > std::uint64_t(kMaxSamplesPerPixel))
     return "takes the sample count beyond " + std::to_string(kMaxSamplesPerPixel);
+  if (unitedRanges(a.samples, b.samples).size() > std::size_t(kMaxPassSumRanges))
+    return "leaves more than " + std::to_string(kMaxPassSumRanges) + " separate sample ranges";
   return {};
 }
 
 void addPassSum(PassSum& a, const PassSum& b) {
-  if (const std::string conflict = mergeConflict(a, b); !conflict.empty()) throw std::invalid_argument(conflict);
+  if (const std::string conflict = mergeConflict(a, b); !conflict.empty())
+    throw std::invalid_argument(conflict);
   for (std::size_t i = 0; i < a.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) {
       a.pixels[i].radiance[c] += b.pixels[i].radiance[c];
       a.pixels[i].squared[c] += b.pixels[i].squared[c];
     }
-  a.samples.insert(a.samples.end(), b.samples.begin(), b.samples.end());
-  std::sort(a.samples.begin(), a.samples.end(),
-            [](const SampleRange& x, const SampleRange& y) { return x.first < y.first; });
-  a.samples = joined(std::move(a.samples));
+  a.samples = unitedRanges(a.samples, b.samples);
 }
 
 Image meanRadiance(const PassSum& sum) {
@@ -222,22 +236,28 @@ PassSum readPassSum(const std::filesystem::path& file) {
   in.read(reinterpret_cast<char*>(header.data()), std::streamsize(header.size()));
   if (std::size_t(in.gcount()) < kHeaderBytes)
     fail(file, "truncated: " + std::to_string(in.gcount()) + " bytes, shorter than a pass sum's header");
-  if (std::memcmp(header.data(), kMagic, sizeof kMagic) != 0) fail(file, "not an iblkit pass sum (wrong magic)");
+  if (std::memcmp(header.data(), kMagic, sizeof kMagic) != 0)
+    fail(file, "not an iblkit pass sum (wrong magic)");
   const std::uint8_t* h = header.data();
   if (getU32(h + 8) != kVersion)
-    fail(file, "pass sum version " + std::to_string(getU32(h + 8)) + ", expected " + std::to_string(kVersion));
+    fail(file,
+         "pass sum version " + std::to_string(getU32(h + 8)) + ", expected " + std::to_string(kVersion));
   const std::uint32_t width = getU32(h + 12), height = getU32(h + 16), rangeCount = getU32(h + 28);
-  if (width < 1 || width > std::uint32_t(kMaxImageSide) || height < 1 || height > std::uint32_t(kMaxImageSide))
+  if (width < 1 || width > std::uint32_t(kMaxImageSide) || height < 1 ||
+      height > std::uint32_t(kMaxImageSide))
     fail(file, "image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1.." +
                    std::to_string(kMaxImageSide));
-  if (getU32(h + 20) != std::uint32_t(kPassSumChannels) || getU32(h + 24) != std::uint32_t(kPassSumFractionBits))
+  if (getU32(h + 20) != std::uint32_t(kPassSumChannels) ||
+      getU32(h + 24) != std::uint32_t(kPassSumFractionBits))
     fail(file, std::to_string(getU32(h + 20)) + " channels of " + std::to_string(getU32(h + 24)) +
                    " fraction bits, expected " + std::to_string(kPassSumChannels) + " of " +
                    std::to_string(kPassSumFractionBits));
   if (rangeCount < 1 || rangeCount > std::uint32_t(kMaxPassSumRanges))
-    fail(file, std::to_string(rangeCount) + " sample ranges, outside 1.." + std::to_string(kMaxPassSumRanges));
+    fail(file,
+         std::to_string(rangeCount) + " sample ranges, outside 1.." + std::to_string(kMaxPassSumRanges));
   const std::uint64_t pixelCount = std::uint64_t{width} * height;
-  const std::uint64_t expected = kHeaderBytes + kRangeBytes * rangeCount + kPixelBytes * pixelCount + kChecksumBytes;
+  const std::uint64_t expected =
+      kHeaderBytes + kRangeBytes * rangeCount + kPixelBytes * pixelCount + kChecksumBytes;
   std::error_code error;
   const std::uintmax_t actual = std::filesystem::file_size(file, error);
   if (error) fail(file, "cannot read its size: " + error.message());
@@ -251,7 +271,8 @@ PassSum readPassSum(const std::filesystem::path& file) {
   const std::uint64_t checksum =
       ContentHash().add({reinterpret_cast<const char*>(bytes.data()), expected - kChecksumBytes}).value();
 #ifndef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
-  if (checksum != getU64(bytes.data() + expected - kChecksumBytes)) fail(file, "checksum mismatch (corrupt file)");
+  if (checksum != getU64(bytes.data() + expected - kChecksumBytes))
+    fail(file, "checksum mismatch (corrupt file)");
 #else
   (void)checksum;
 #endif
@@ -261,7 +282,8 @@ PassSum readPassSum(const std::filesystem::path& file) {
   sum.height = int(height);
   sum.renderKey = getU64(h + 32);
   const std::uint8_t* p = bytes.data() + kHeaderBytes;
-  for (std::uint32_t i = 0; i < rangeCount; ++i, p += kRangeBytes) sum.samples.push_back({getU32(p), getU32(p + 4)});
+  for (std::uint32_t i = 0; i < rangeCount; ++i, p += kRangeBytes)
+    sum.samples.push_back({getU32(p), getU32(p + 4)});
   if (const std::string problem = checkRanges(sum.samples); !problem.empty()) fail(file, problem);
   const std::uint64_t n = sum.sampleCount();
   if (n != getU64(h + 40))

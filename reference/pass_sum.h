@@ -97,6 +97,9 @@ struct PassSum {
   static FixedPointSum toFixedPointSquare(float value);
 };
 
+// The sample ranges as text, "0..3, 8..11".
+std::string sampleRangesText(const std::vector<SampleRange>& samples);
+
 // Why `b` cannot be added to `a` (different size or render key, or a sample index both cover, so
 // the same pass merged twice), in words that follow a file name; empty when it can.
 std::string mergeConflict(const PassSum& a, const PassSum& b);

@@ -63,7 +63,8 @@ std::vector<std::uint8_t> bytesOf(const fs::path& file) {
 }
 
 void writeBytes(const fs::path& file, const std::vector<std::uint8_t>& bytes) {
-  std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  std::ofstream(file, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 TEST(PassSamples, SplitsTheSamplesIntoDisjointRangesThatCoverThemAll) {
@@ -151,11 +152,17 @@ TEST(PassSum, RefusesPassesOfAnotherRenderAndTheSameSamplesTwice) {
   PassSum copy = a;
   EXPECT_THROW(addPassSum(copy, a), std::invalid_argument);
   EXPECT_EQ(mergeConflict(a, sumOf(5, 1)), "");  // a gap is fine: the mean of the samples there are
+  PassSum gap = a;
+  addPassSum(gap, sumOf(5, 1));
+  addPassSum(gap, sumOf(2, 1));
+  EXPECT_EQ(sampleRangesText(gap.samples), "0..2, 5..5");
 
   const fs::path dir = test::scratchDir();
   writePassSum(dir / "a.sum", a);
   writePassSum(dir / "other.sum", otherKey);
-  const std::string message = test::errorMessage([&] { mergePassSumFiles({dir / "a.sum", dir / "other.sum"}); });
+  const std::string message = test::errorMessage([&] {
+    mergePassSumFiles({dir / "a.sum", dir / "other.sum"});
+  });
   EXPECT_EQ(message.rfind((dir / "other.sum").string() + ": is a pass of another render", 0), 0u) << message;
 }
 
@@ -171,8 +178,8 @@ TEST(PassSum, RefusesTruncatedAndDamagedFiles) {
     writeBytes(bad, content);
     return test::errorMessage([&] { readPassSum(bad); });
   };
-  for (std::size_t size : {std::size_t{0}, std::size_t{7}, std::size_t{47}, std::size_t{48}, std::size_t{1000},
-                           bytes.size() - 1}) {
+  for (std::size_t size : {std::size_t{0}, std::size_t{7}, std::size_t{47}, std::size_t{48},
+                           std::size_t{1000}, bytes.size() - 1}) {
     const std::string message = refusal({bytes.begin(), bytes.begin() + std::ptrdiff_t(size)});
     EXPECT_EQ(message.rfind(bad.string() + ": ", 0), 0u) << size << ": " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos);
