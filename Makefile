@@ -46,7 +46,7 @@ bench: build assets
 sanitize:
 	@$(MAKE) --no-print-directory test BUILD=build-asan TEST_FUZZ_SECONDS=0 CMAKE_FLAGS="-DIBLKIT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIBLKIT_BUILD_BENCHMARKS=OFF"
 
-# Only core, bakefile and fuzz/, with clang's -fsanitize=fuzzer,address,undefined (CMakeLists.txt).
+# Only core, bakefile, reference/pass_sum and fuzz/, with clang's -fsanitize=fuzzer,address,undefined (CMakeLists.txt).
 fuzz-build: setup
 	@cmake -S . -B $(FUZZ_BUILD) -G Ninja -DIBLKIT_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ >/dev/null

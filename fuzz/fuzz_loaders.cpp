@@ -20,6 +20,7 @@
 #include "core/input_file.h"
 #include "core/scene_file.h"
 #include "core/texture_image.h"
+#include "reference/pass_sum.h"
 
 namespace iblkit::fuzz {
 namespace {
@@ -82,6 +83,7 @@ std::string fileName(Loader loader, std::span<const std::uint8_t> bytes) {
     case Loader::Sh9: return "sh9.json";
     case Loader::Texture: return "texture.img";
     case Loader::Lights: return "lights.json";
+    case Loader::PassSum: return "pass.sum";
   }
   std::abort();
 }
@@ -111,6 +113,7 @@ void load(Loader loader, const fs::path& file) {
       return;
     }
     case Loader::Lights: readEnvironmentLightsJson(file); return;
+    case Loader::PassSum: readPassSum(file); return;
   }
 }
 

@@ -266,3 +266,29 @@ put("lights", "seed_lights.json", json.dumps({
 put("sh9", "seed_sh9.json", json.dumps({
     "basis": "real, orthonormal", "A": [3.14159, 2.0944, 0.785398],
     "L": [[0.1 * k, 0.2, 0.3 - 0.01 * k] for k in range(9)], "windowCutoff": 22.75}, indent=1))
+
+# --- reference pass sums (reference/pass_sum.h) ----------------------------------------------------
+def fnv1a_length_prefixed(data):
+    """ContentHash().add(data).value(): FNV-1a 64 of the length (8 bytes, little-endian), then the bytes."""
+    h = 0xcbf29ce484222325
+    for byte in struct.pack("<Q", len(data)) + data:
+        h = ((h ^ byte) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+    return h
+
+
+def pass_sum(width, height, ranges, key=0x1234):
+    count = sum(c for _, c in ranges)
+    head = b"IBLKSUM\n" + struct.pack("<IIIIII", 1, width, height, 6, 32, len(ranges)) + struct.pack("<QQ", key, count)
+    head += b"".join(struct.pack("<II", first, c) for first, c in ranges)
+    body = b""
+    for p in range(width * height):
+        value = (p + 1) * count << 31  # mean radiance (p + 1) / 2 per channel
+        body += b"".join(struct.pack("<q", value).ljust(16, b"\0" if value >= 0 else b"\xff") for _ in range(3))
+        body += b"".join(struct.pack("<Q", value * (p + 1) // 2 & 0xFFFFFFFFFFFFFFFF) + struct.pack("<Q", 0)
+                         for _ in range(3))
+    data = head + body
+    return data + struct.pack("<Q", fnv1a_length_prefixed(data))
+
+
+put("pass_sum", "seed_2x1_one_range.sum", pass_sum(2, 1, [(0, 4)]))
+put("pass_sum", "seed_1x2_two_ranges.sum", pass_sum(1, 2, [(0, 2), (8, 3)]))

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/pass_arguments.h"
 #include "cli/program.h"
 #include "cli/scene_arguments.h"
 #include "core/error.h"
@@ -22,6 +23,7 @@
 #include "reference/environment_sampler.h"
 #include "reference/integrator.h"
 #include "reference/median_cut_sampler.h"
+#include "reference/pass_sum.h"
 #include "reference/render_scene.h"
 #include "reference/renderer.h"
 
@@ -46,6 +48,7 @@ struct Options {
   std::optional<float> phongExponent;
   bool noTextures = false;
   float textureFootprint = kDefaultTextureFootprint;
+  PassArguments passes;  // --pass, --passes, --sum, --merge (cli/pass_arguments.h, docs/cluster.md)
 };
 
 // Fails early, before a long render, when an output cannot be written.
@@ -70,7 +73,29 @@ void drawProgress(double fraction, double seconds) {
   std::fflush(stderr);
 }
 
+// iblkit-trace --merge SUM...: the passes' sums added up, written as the image and its layers.
+int mergePasses(const Options& options) {
+  checkOutputs(options.passes.merge, {options.output, options.variance, options.png, options.passes.sum});
+  const PassSum sum = mergePassSumFiles(options.passes.merge);
+  if (sum.samples.size() > 1 || sum.samples.front().first != 0)
+    warn("--merge", "the samples merged are " + sampleRangesText(sum.samples) +
+                        ", not one range from 0: is a pass missing?");
+  const Image beauty = meanRadiance(sum);
+  const ExrWriteOptions exrOptions{.pixelType = PixelType::Float};
+  if (!options.output.empty()) writeExr(options.output, beauty, exrOptions);
+  if (!options.variance.empty()) writeExr(options.variance, meanVariance(sum), exrOptions);
+  if (!options.png.empty()) writePng(options.png, beauty, ToneMapping{.exposure = options.exposure});
+  if (!options.passes.sum.empty()) writePassSum(options.passes.sum, sum);
+  std::printf("%dx%d, %llu spp merged from %zu files\n", sum.width, sum.height,
+              static_cast<unsigned long long>(sum.sampleCount()), options.passes.merge.size());
+  return 0;
+}
+
 int run(const Options& options, const CLI::App& app) {
+  checkPassArguments(app, options.passes, "scene");
+  if (!options.passes.merge.empty()) return mergePasses(options);
+  if (options.passes.passes && options.timeSeconds > 0.0)
+    failUsage("--passes", "cannot split a --time render");
   // Before any file is read, naming the option (render() would say "render: ...").
   requireInRange("--spp", options.samplesPerPixel, 1, kMaxSamplesPerPixel);
   if (app.count("--width")) requireInRange("--width", options.width, 1, kMaxImageSide);
@@ -106,19 +131,28 @@ int run(const Options& options, const CLI::App& app) {
   }
   if (!options.bentNormal.empty() && integratorSettings.kind != IntegratorKind::AmbientOcclusion)
     failUsage("--bent-normal", "needs --integrator ao");
+  const SampleRange samples =
+      options.passes.passes
+          ? passSamples(options.samplesPerPixel, *options.passes.pass, *options.passes.passes)
+          : SampleRange{0, static_cast<std::uint32_t>(options.samplesPerPixel)};
   for (const auto* file : {&options.output, &options.png, &options.albedo, &options.normal, &options.depth,
-                           &options.variance, &options.mask, &options.bentNormal})
+                           &options.variance, &options.mask, &options.bentNormal, &options.passes.sum})
     checkOutputFolder(*file);
 
   Scene scene = loadScene(options.scene.input);
   // No output may replace the scene, a model or the map (nor a device node).
   checkOutputs(sceneInputs(scene, options.scene.environment),
                {options.output, options.png, options.albedo, options.normal, options.depth, options.variance,
-                options.mask, options.bentNormal});
+                options.mask, options.bentNormal, options.passes.sum});
+  const std::uint64_t key =
+      options.passes.sum.empty()
+          ? 0
+          : renderKey(sceneInputs(scene, options.scene.environment), samplingArguments(app, "scene"));
   RenderSettings settings;
   settings.width = app.count("--width") ? options.width : scene.width;
   settings.height = app.count("--height") ? options.height : scene.height;
-  settings.samplesPerPixel = options.samplesPerPixel;
+  settings.firstSample = static_cast<int>(samples.first);
+  settings.samplesPerPixel = static_cast<int>(samples.count);
   settings.timeSeconds = options.timeSeconds;
   settings.seed = options.seed;
   settings.threads = options.threads;
@@ -146,12 +180,16 @@ int run(const Options& options, const CLI::App& app) {
       {medianCutSampler ? &*medianCutSampler : nullptr, pointLights ? &*pointLights : nullptr});
 
   const bool terminal = isatty(STDERR_FILENO) != 0;
-  const RenderResult result =
+  RenderResult result =
       render(integrator, camera, settings, terminal ? RenderProgress(drawProgress) : RenderProgress());
   if (terminal) std::fputs("\n", stderr);
 
   const ExrWriteOptions exrOptions{.pixelType = PixelType::Float};
-  writeExr(options.output, result.beauty, exrOptions);
+  if (!options.output.empty()) writeExr(options.output, result.beauty, exrOptions);
+  if (!options.passes.sum.empty()) {
+    result.sum.renderKey = key;
+    writePassSum(options.passes.sum, result.sum);
+  }
   const std::pair<const std::filesystem::path*, const Image*> layers[] = {
       {&options.albedo, &result.albedo}, {&options.normal, &result.normal},
       {&options.depth, &result.depth},   {&options.variance, &result.variance},
@@ -175,7 +213,7 @@ int main(int argc, char** argv) {
   Options options;
   CLI::App app{"Reference path tracer (Embree): renders a scene under its environment map", "iblkit-trace"};
   addSceneArguments(app, options.scene, "scene", "scene (.json), or a .gltf/.glb model lit by --env");
-  app.add_option("-o,--output", options.output, "beauty image, OpenEXR float RGB")->required();
+  app.add_option("-o,--output", options.output, "beauty image, OpenEXR float RGB (required unless --sum)");
   app.add_option("--png", options.png, "PNG preview (tone-mapped, sRGB)");
   app.add_option("--exposure", options.exposure, "PNG exposure in stops");
   app.add_option("--albedo", options.albedo, "first-hit base colour, OpenEXR");
@@ -209,5 +247,6 @@ int main(int argc, char** argv) {
   addNameOption(app, "--env-sampling", options.envSampling, kEnvSamplingNames, "strategy");
   // gaussian: sigma 0.5 px, radius 1.5 px (reference/pixel_filter.h).
   addNameOption(app, "--filter", options.filter, kPixelFilterNames, "filter");
+  addPassArguments(app, options.passes, "scene");
   return runProgram(app, argc, argv, [&] { return run(options, app); });
 }

@@ -20,9 +20,9 @@ namespace iblkit {
 
 namespace {
 
-// Running sums of one pixel over its samples (double: millions of samples add up exactly enough).
+// Running sums of one pixel's feature layers over its samples (double: millions of samples add up
+// exactly enough); the beauty's are exact, in the PassSum.
 struct PixelSums {
-  glm::dvec3 radiance{0.0}, radianceSquared{0.0};
   glm::dvec3 albedo{0.0}, normal{0.0}, unoccluded{0.0};
   double distance = 0.0, coverage = 0.0;
 };
@@ -35,6 +35,10 @@ void checkSettings(const RenderSettings& settings) {
   if (!inRange(settings.samplesPerPixel, 1, kMaxSamplesPerPixel))
     fail("render", "samples per pixel " + std::to_string(settings.samplesPerPixel) + " is outside 1.." +
                        std::to_string(kMaxSamplesPerPixel));
+  if (!inRange(settings.firstSample, 0, kMaxSamplesPerPixel - settings.samplesPerPixel))
+    fail("render", "samples " + std::to_string(settings.firstSample) + " + " +
+                       std::to_string(settings.samplesPerPixel) + " end beyond " +
+                       std::to_string(kMaxSamplesPerPixel));
   if (!(settings.textureFootprint >= 0.0f) || !std::isfinite(settings.textureFootprint))
     fail("render", "texture footprint " + std::to_string(settings.textureFootprint) + " is not finite and >= 0");
   if (!inRange(settings.threads, 0, kMaxRenderThreads))
@@ -45,24 +49,20 @@ void checkSettings(const RenderSettings& settings) {
 glm::vec4 grey(double value) { return glm::vec4(glm::vec3(static_cast<float>(value)), 1.0f); }
 glm::vec4 opaque(const glm::dvec3& rgb) { return glm::vec4(glm::vec3(rgb), 1.0f); }
 
-RenderResult resolve(const std::vector<PixelSums>& sums, const RenderSettings& settings, int samples) {
+RenderResult resolve(const std::vector<PixelSums>& sums, PassSum&& radiance, const RenderSettings& settings,
+                     int samples) {
   const int w = settings.width, h = settings.height;
   RenderResult result;
-  for (Image* image : {&result.beauty, &result.albedo, &result.normal, &result.depth, &result.mask,
-                       &result.variance, &result.bentNormal})
+  for (Image* image : {&result.albedo, &result.normal, &result.depth, &result.mask, &result.bentNormal})
     *image = Image(w, h);
+  result.beauty = meanRadiance(radiance);
+  result.variance = meanVariance(radiance);
+  result.sum = std::move(radiance);
   const double n = samples;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const PixelSums& s =
           sums[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
-      const glm::dvec3 mean = s.radiance / n;
-      result.beauty.at(x, y) = opaque(mean);
-      // Unbiased sample variance, divided by n: the variance of the pixel's mean.
-      const glm::dvec3 sampleVariance =
-          samples > 1 ? glm::max(s.radianceSquared - n * mean * mean, glm::dvec3(0.0)) / (n - 1.0)
-                      : glm::dvec3(0.0);
-      result.variance.at(x, y) = opaque(sampleVariance / n);
       result.albedo.at(x, y) = opaque(s.albedo / n);
       const double normalLength = glm::length(s.normal);
       result.normal.at(x, y) = opaque(normalLength > 0.0 ? s.normal / normalLength : glm::dvec3(0.0));
@@ -91,6 +91,7 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
   checkSettings(settings);
   const int w = settings.width, h = settings.height;
   std::vector<PixelSums> sums(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  PassSum radianceSum(w, h, {static_cast<std::uint32_t>(settings.firstSample), 0});
   std::atomic<std::uint64_t> rays{0};
   std::mutex progressMutex;
   const auto start = std::chrono::steady_clock::now();
@@ -106,7 +107,8 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   int samples = 0;
   do {
-    const int first = samples, last = std::min(samples + settings.samplesPerPixel, kMaxSamplesPerPixel);
+    const int first = settings.firstSample + samples,
+              last = std::min(first + settings.samplesPerPixel, kMaxSamplesPerPixel);
     std::atomic<int> tilesDone{0};
     arena.execute([&] {
       tbb::parallel_for(
@@ -128,9 +130,7 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
                   for (std::size_t b = 0; b < size; ++b) {
                     const CameraSample& c = batchResults[b];
                     PixelSums& s = sums[batchPixels[b]];
-                    const glm::dvec3 radiance(c.radiance);
-                    s.radiance += radiance;
-                    s.radianceSquared += radiance * radiance;
+                    radianceSum.addSample(batchPixels[b], c.radiance);
                     s.albedo += glm::dvec3(c.albedo);
                     s.normal += glm::dvec3(c.normal);
                     s.unoccluded += glm::dvec3(c.unoccludedDirection);
@@ -167,10 +167,12 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
               }
           });
     });
-    samples = last;
-  } while (settings.timeSeconds > 0.0 && elapsed() < settings.timeSeconds && samples < kMaxSamplesPerPixel);
+    samples = last - settings.firstSample;
+  } while (settings.timeSeconds > 0.0 && elapsed() < settings.timeSeconds &&
+           settings.firstSample + samples < kMaxSamplesPerPixel);
 
-  RenderResult result = resolve(sums, settings, samples);
+  radianceSum.samples.front().count = static_cast<std::uint32_t>(samples);
+  RenderResult result = resolve(sums, std::move(radianceSum), settings, samples);
   result.seconds = elapsed();
   result.rays = rays;
   return result;

@@ -11,14 +11,12 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "reference/integrator.h"
+#include "reference/pass_sum.h"
 #include "reference/pixel_filter.h"
 
 namespace iblkit {
 
 inline constexpr int kTileSize = 16;
-// Largest accepted image side and sample count per pixel (Sobol indices stay exact in floats).
-inline constexpr int kMaxImageSide = 16384;
-inline constexpr int kMaxSamplesPerPixel = 1 << 24;
 // The most threads a render takes (TBB crashes on an arena of 70,000).
 inline constexpr int kMaxRenderThreads = 1024;
 
@@ -34,6 +32,9 @@ struct RenderSettings {
   int width = 0, height = 0;
   // Samples per pixel; with timeSeconds > 0, the size of each pass.
   int samplesPerPixel = 64;
+  // The index of the first sample: a pass of a split render takes samples firstSample ..
+  // firstSample + samplesPerPixel - 1 (passSamples, pass_sum.h).
+  int firstSample = 0;
   // > 0: render passes of samplesPerPixel until this many seconds have passed (at least one).
   double timeSeconds = 0.0;
   std::uint32_t seed = 0;
@@ -54,6 +55,9 @@ struct RenderResult {
   Image mask;               // coverage of non-ground objects, grey in [0, 1]
   Image variance;           // per channel variance of the beauty pixel's mean (sample variance / n)
   Image bentNormal;         // ao: normalised mean unoccluded direction (0 where none)
+  // The beauty's exact sums, of which beauty and variance are the mean and its variance
+  // (pass_sum.h): what a pass of a split render writes (--sum) for the merge.
+  PassSum sum;
   int samplesPerPixel = 0;  // samples actually taken
   double seconds = 0.0;
   std::uint64_t rays = 0;  // closest-hit and shadow rays traced
@@ -66,8 +70,8 @@ using RenderProgress = std::function<void(double fraction, double seconds)>;
 // Renders through `camera`; pixel (i, j) averages primary rays through raster positions
 // (i, j) + PixelFilter(settings.filter).sample(u): u uniform in the pixel for the box filter, or
 // spread over the neighbours by the Gaussian's density (filter importance sampling).
-// Throws Error("render: ...") for sizes outside 1..kMaxImageSide, sample counts outside
-// 1..kMaxSamplesPerPixel or a negative thread count.
+// Throws Error("render: ...") for sizes outside 1..kMaxImageSide, sample indices beyond
+// kMaxSamplesPerPixel or a negative thread count.
 RenderResult render(const Integrator& integrator, const Camera& camera, const RenderSettings& settings,
                     const RenderProgress& progress = {});
 

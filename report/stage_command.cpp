@@ -1,6 +1,6 @@
 #include "report/stage_command.h"
 
-#include "report/content_hash.h"
+#include "core/content_hash.h"
 
 namespace iblkit {
 

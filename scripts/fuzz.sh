@@ -13,14 +13,14 @@ cd "$(dirname "$0")/.."
 BUILD=${1:?usage: scripts/fuzz.sh BUILD SECONDS [TARGET...]}
 SECONDS_PER_TARGET=${2:?usage: scripts/fuzz.sh BUILD SECONDS [TARGET...]}
 shift 2
-ALL_TARGETS=(exr hdr png gltf scene bake_record sh9 texture lights)
+ALL_TARGETS=(exr hdr png gltf scene bake_record sh9 texture lights pass_sum)
 [ $# -gt 0 ] && TARGETS=("$@") || TARGETS=("${ALL_TARGETS[@]}")
 
 # Per target: the dictionary, the largest input, and the seeds taken at run time (globs).
 declare -A DICT=([exr]=exr [hdr]=hdr [png]=png [gltf]=gltf [scene]=json [bake_record]=json [sh9]=json [texture]=texture
-                  [lights]=json)
+                  [lights]=json [pass_sum]=pass_sum)
 declare -A MAX_LEN=([exr]=65536 [hdr]=65536 [png]=65536 [gltf]=65536 [scene]=8192 [bake_record]=4096 [sh9]=4096
-                   [texture]=65536 [lights]=8192)
+                   [texture]=65536 [lights]=8192 [pass_sum]=4096)
 declare -A SEEDS=(
   [exr]="tests/data/bad/*.exr tests/data/exr/*.exr assets/hdri/studio.exr assets/hdri/sky.exr"
   [hdr]="tests/data/bad/*.hdr assets/hdri/*.hdr"
@@ -30,6 +30,7 @@ declare -A SEEDS=(
   [bake_record]=""
   [sh9]=""
   [lights]=""
+  [pass_sum]=""
   [texture]="tests/data/bad/*.png tests/data/flip/*.png assets/normals/*.webp assets/textures/*.webp"
 )
 

@@ -40,7 +40,7 @@ const std::vector<test::Layer> kLayers = {
       "cli"},
      {}},
     {"bench", {"core", "raytrace", "bakefile", "baker", "reference", "score", "cli"}, kGl},
-    {"fuzz", {"core", "bakefile"}, both(kGl, kEmbree)},
+    {"fuzz", {"core", "bakefile", "reference"}, both(kGl, kEmbree)},
 };
 
 TEST(IncludeLayering, TheTreeHasNoWrongWayInclude) {

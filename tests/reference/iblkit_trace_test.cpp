@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
+#include <vector>
 
 #include "core/image_io.h"
 #include "support/gltf_builder.h"
@@ -188,6 +190,57 @@ TEST_F(IblkitTrace, MaskedHoleInAGlbShowsTheEnvironment) {
     }
 }
 
+std::vector<char> bytesOf(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A render split into passes (--pass I --passes N --sum) and merged (--merge) is the single run of
+// the same samples, file for file (beauty and variance); a render of more samples continues one
+// of fewer (samples 0..3 of --spp 4 and 4..7 of --spp 8 are --spp 8).
+TEST_F(IblkitTrace, SplitPassesMergeIntoTheSingleRunByteForByte) {
+  std::string output;
+  const std::string common = "scene.json --spp 8 --threads 2";
+  ASSERT_EQ(trace(common + " -o single.exr --variance single_variance.exr --sum single.sum", &output), 0)
+      << output;
+  for (int pass = 0; pass < 3; ++pass)
+    ASSERT_EQ(trace(common + " --passes 3 --pass " + std::to_string(pass) + " --sum pass" +
+                        std::to_string(pass) + ".sum",
+                    &output),
+              0)
+        << output;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "out.exr"));
+  ASSERT_EQ(trace("--merge pass2.sum pass0.sum pass1.sum -o merged.exr --variance merged_variance.exr --sum "
+                  "merged.sum",
+                  &output),
+            0)
+      << output;
+  EXPECT_EQ(output, "24x16, 8 spp merged from 3 files\n");
+  EXPECT_EQ(bytesOf(dir_ / "merged.exr"), bytesOf(dir_ / "single.exr"));
+  EXPECT_EQ(bytesOf(dir_ / "merged_variance.exr"), bytesOf(dir_ / "single_variance.exr"));
+  EXPECT_EQ(bytesOf(dir_ / "merged.sum"), bytesOf(dir_ / "single.sum"));
+
+  ASSERT_EQ(trace("scene.json --spp 4 --threads 1 --sum first.sum", &output), 0) << output;
+  ASSERT_EQ(trace(common + " --pass 1 --passes 2 --sum second.sum", &output), 0) << output;
+  ASSERT_EQ(trace("--merge first.sum second.sum -o continued.exr", &output), 0) << output;
+  EXPECT_EQ(bytesOf(dir_ / "continued.exr"), bytesOf(dir_ / "single.exr"));
+  // A merge with a pass missing is the mean of the samples it has, with a warning.
+  ASSERT_EQ(trace("--merge pass0.sum pass2.sum -o gap.exr", &output), 0) << output;
+  EXPECT_NE(output.find("--merge: warning: the samples merged are 0..1, 5..7, not one range from 0"),
+            std::string::npos)
+      << output;
+
+  // Another seed is another render, and the same pass twice is refused; nothing is written.
+  ASSERT_EQ(trace(common + " --seed 5 --passes 3 --pass 1 --sum other.sum", &output), 0) << output;
+  EXPECT_EQ(trace("--merge pass0.sum other.sum -o refused.exr", &output), 1);
+  EXPECT_EQ(output.rfind("iblkit-trace: other.sum: is a pass of another render", 0), 0u) << output;
+  EXPECT_EQ(trace("--merge pass0.sum pass1.sum pass0.sum -o refused.exr", &output), 1);
+  EXPECT_EQ(
+      output,
+      "iblkit-trace: pass0.sum: samples 0..1 overlap samples 0..4 already merged (the same pass twice?)\n");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "refused.exr"));
+}
+
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
   struct Case {
     std::string arguments;
@@ -226,6 +279,22 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
       {"scene.json -o out.exr --texture-footprint -1", 2,
        "iblkit-trace: --texture-footprint: must be >= 0 (pixels)\n"},
       {"scene.json", 2, "iblkit-trace: --output is required\n"},
+      {"-o out.exr", 2, "iblkit-trace: scene is required\n"},
+      {"scene.json -o out.exr --pass 1", 2, "iblkit-trace: --pass requires --passes\n"},
+      {"scene.json -o out.exr --pass 4 --passes 4 --spp 8", 2,
+       "iblkit-trace: --pass: must be in 0..3, not 4\n"},
+      {"scene.json -o out.exr --pass 0 --passes 9 --spp 8", 2,
+       "iblkit-trace: --passes: must be in 1..8 (the --spp), not 9\n"},
+      {"scene.json --pass 0 --passes 2 --time 1 --sum s.sum", 2,
+       "iblkit-trace: --passes: cannot split a --time render\n"},
+      {"--merge a.sum", 2, "iblkit-trace: --merge: needs an output (-o, --sum, --variance or --png)\n"},
+      {"scene.json --merge a.sum -o out.exr", 2, "iblkit-trace: scene: does not apply to --merge\n"},
+      {"--merge a.sum -o out.exr --spp 4", 2, "iblkit-trace: --spp: does not apply to --merge\n"},
+      {"--merge a.sum --pass 1 --passes 2 -o out.exr", 2, "iblkit-trace: --pass excludes --merge\n"},
+      {"--merge missing.sum -o out.exr", 1,
+       "iblkit-trace: missing.sum: cannot open: No such file or directory\n"},
+      {"scene.json --sum scene.json", 1,
+       "iblkit-trace: scene.json: output is the same file as the input scene.json\n"},
       {"scene.json -o out.exr --no-such-option", 2,
        "iblkit-trace: The following argument was not expected: --no-such-option\n"},
   };

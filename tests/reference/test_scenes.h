@@ -50,10 +50,11 @@ inline Scene sphereScene(const Material& material) {
 }
 
 // Renders `scene` under `environment` at width x height, spp samples per pixel; mediancut and
-// lights use 2^medianCutLevels regions.
+// lights use 2^medianCutLevels regions; the samples are those from index firstSample on.
 inline RenderResult renderWith(Scene scene, const EnvironmentMap& environment,
                                const IntegratorSettings& integratorSettings, int size, int spp,
-                               std::uint32_t seed = 1, int threads = 2, int medianCutLevels = 6) {
+                               std::uint32_t seed = 1, int threads = 2, int medianCutLevels = 6,
+                               int firstSample = 0) {
   const Camera camera = sceneCamera(scene, 1.0f);
   const RenderScene renderScene(std::move(scene));
   const EnvironmentSampler sampler(environment);
@@ -68,6 +69,7 @@ inline RenderResult renderWith(Scene scene, const EnvironmentMap& environment,
   RenderSettings settings;
   settings.width = settings.height = size;
   settings.samplesPerPixel = spp;
+  settings.firstSample = firstSample;
   settings.seed = seed;
   settings.threads = threads;
   return render(integrator, camera, settings);

@@ -1,4 +1,4 @@
-#include "report/content_hash.h"
+#include "core/content_hash.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,8 @@
 #pragma once
-// Cache keys for the report's stages: a 64-bit FNV-1a hash (Fowler, Noll, Vo) of everything a
-// stage's output depends on: its input files' bytes, its arguments and the program that runs it.
-// A changed input, option or rebuilt program gives a new key, so a stale result is never reused.
+// A 64-bit FNV-1a hash (Fowler, Noll, Vo) of bytes and files. The report's stage cache keys hash
+// everything a stage's output depends on (its input files' bytes, its arguments and the program
+// that runs it), so a stale result is never reused; the reference tracer's render keys
+// (reference/pass_sum.h) so keep passes of different renders from merging, and check its files.
 
 #include <cstdint>
 #include <filesystem>

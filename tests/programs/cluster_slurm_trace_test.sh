@@ -1,0 +1,243 @@
+#!/usr/bin/env bash
+# A split reference render on a real one-node Slurm cluster (docs/cluster.md), started here
+# without systemd: munged with a temporary key, slurmctld and slurmd with a generated slurm.conf
+# (proctrack/linuxproc, task/none: no cgroups in a container), all in a temporary folder, each
+# stopped by its PID when the test ends, however it ends.
+#   cluster_slurm_trace_test.sh BIN_DIR SOURCE_DIR WORK_PARENT
+# 1. A job array renders 4 passes (scripts/slurm/trace_array.sh, iblkit-trace --pass --sum), a
+#    merge job (afterok, --kill-on-invalid-dep=yes) merges them: the EXR must be byte-identical
+#    to one local run of all the samples.
+# 2. Again with task 2 cancelled while it runs: it leaves no pass file (not even a partial one),
+#    the merge that depends on it is cancelled and never runs, the missing pass is found by its
+#    file and resubmitted alone, and the new merge is byte-identical too.
+# 3. A job that depends (afterok, --kill-on-invalid-dep=yes) on a job that fails is cancelled
+#    and never runs.
+# Exit 77 (ctest's skip) only where Slurm or munge is not installed; everything else must pass.
+set -euo pipefail
+BIN=$(cd "${1:?usage: $0 BIN_DIR SOURCE_DIR WORK_PARENT}" && pwd)
+SOURCE=$(cd "${2:?usage: $0 BIN_DIR SOURCE_DIR WORK_PARENT}" && pwd)
+PARENT=${3:?usage: $0 BIN_DIR SOURCE_DIR WORK_PARENT}
+
+for program in munged slurmctld slurmd sbatch squeue scontrol scancel sinfo; do
+  if ! command -v "$program" >/dev/null 2>&1 && [ ! -x "/usr/sbin/$program" ]; then
+    echo "SKIP: $program is not installed (scripts/setup.sh installs slurm-wlm and munge)"
+    exit 77
+  fi
+done
+export PATH=$PATH:/usr/sbin
+if [ "$(id -u)" -ne 0 ]; then
+  echo "cluster_slurm_trace: must run as root (slurmd starts jobs as their user; CI runs as root)" >&2
+  exit 1
+fi
+export USER=${USER:-$(id -un)}  # sbatch and slurmd want it; a container's shell may not set it
+
+mkdir -p "$PARENT"
+D=$(mktemp -d "$(cd "$PARENT" && pwd)/slurm.XXXXXX")
+pids=()
+M=
+cleanup() {
+  local status=$?
+  for pid in "${pids[@]}"; do kill "$pid" 2>/dev/null || true; done
+  for pid in "${pids[@]}"; do
+    for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+    kill -9 "$pid" 2>/dev/null || true
+  done
+  if [ "$status" -ne 0 ]; then
+    echo "--- logs in $D" >&2
+    tail -n 20 "$D"/*.log >&2 2>/dev/null || true
+  else
+    rm -rf "$D"
+  fi
+  [ -z "$M" ] || [ "$M" = "$D/munge" ] || rm -rf "$M"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+fail() {
+  echo "cluster_slurm_trace: FAIL: $*" >&2
+  exit 1
+}
+# Seconds since the start, or since the `date +%s%N` given.
+start=$(date +%s%N)
+elapsed() {
+  local ms=$((($(date +%s%N) - ${1:-$start}) / 1000000))
+  printf '%d.%03d' $((ms / 1000)) $((ms % 1000))
+}
+
+# --- munge, with a key of its own ------------------------------------------------------------------
+# A Unix socket's path has at most 107 bytes: munge lives under /tmp when the work folder is deep.
+M=$D/munge
+[ ${#M} -lt 80 ] || M=$(mktemp -d /tmp/iblkit-munge.XXXXXX)
+mkdir -p -m 700 "$M"
+dd if=/dev/urandom of="$M/munge.key" bs=1024 count=1 status=none
+chmod 400 "$M/munge.key"
+munged -F --force --socket="$M/munge.socket" --key-file="$M/munge.key" \
+  --pid-file="$M/munged.pid" --log-file="$D/munged.log" --seed-file="$M/munged.seed" 2>>"$D/munged.log" &
+pids+=($!)
+for _ in $(seq 50); do [ -S "$M/munge.socket" ] && break; sleep 0.1; done
+[ -S "$M/munge.socket" ] || fail "munged did not start"
+
+# --- slurm.conf, slurmctld and slurmd --------------------------------------------------------------
+host=$(hostname -s)
+port_free() { ! (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null; }
+ctld_port=$((20000 + RANDOM % 20000))
+until port_free "$ctld_port" && port_free $((ctld_port + 1)); do ctld_port=$((20000 + RANDOM % 20000)); done
+mkdir -p "$D/state" "$D/spool"
+export SLURM_CONF=$D/slurm.conf
+cat >"$SLURM_CONF" <<CONF
+ClusterName=iblkit
+SlurmctldHost=$host(127.0.0.1)
+SlurmctldPort=$ctld_port
+SlurmdPort=$((ctld_port + 1))
+SlurmUser=root
+SlurmdUser=root
+AuthType=auth/munge
+AuthInfo=socket=$M/munge.socket
+CredType=cred/munge
+StateSaveLocation=$D/state
+SlurmdSpoolDir=$D/spool
+SlurmctldPidFile=$D/slurmctld.pid
+SlurmdPidFile=$D/slurmd.pid
+SlurmctldLogFile=$D/slurmctld.log
+SlurmdLogFile=$D/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+JobAcctGatherType=jobacct_gather/none
+AccountingStorageType=accounting_storage/none
+JobCompType=jobcomp/none
+MpiDefault=none
+SchedulerType=sched/builtin
+SchedulerParameters=sched_interval=1
+SelectType=select/cons_tres
+SelectTypeParameters=CR_Core
+ReturnToService=2
+MinJobAge=600
+KillWait=2
+NodeName=$host NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
+PartitionName=test Nodes=$host Default=YES MaxTime=INFINITE State=UP
+CONF
+slurmctld -D -i -f "$SLURM_CONF" >>"$D/slurmctld.log" 2>&1 &
+pids+=($!)
+slurmd -D -f "$SLURM_CONF" -N "$host" >>"$D/slurmd.log" 2>&1 &
+pids+=($!)
+for _ in $(seq 150); do
+  [ "$(sinfo -h -n "$host" -o %T 2>/dev/null)" = idle ] && break
+  sleep 0.2
+done
+[ "$(sinfo -h -n "$host" -o %T 2>/dev/null)" = idle ] || fail "the node did not come up idle: $(sinfo 2>&1)"
+echo "cluster up after $(elapsed) s"
+
+# --- the scene: a glossy sphere on a ground under a generated map with a hot spot -------------------
+mkdir -p "$D/scene"
+python3 - "$D/scene" <<'PY'
+import json, math, os, sys
+folder = sys.argv[1]
+def rgbe(r, g, b):
+    m = max(r, g, b)
+    mant, e = math.frexp(m)
+    s = mant * 256.0 / m
+    return bytes([int(r * s), int(g * s), int(b * s), e + 128])
+w, h = 32, 16
+pixels = b"".join(rgbe(400, 380, 300) if (x, y) == (8, 3) else rgbe(0.6, 0.8, 1.0) if y < h // 2 else rgbe(0.2, 0.2, 0.25)
+                  for y in range(h) for x in range(w))
+with open(os.path.join(folder, "sky.hdr"), "wb") as f:
+    f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (h, w) + pixels)
+json.dump({"models": [{"shape": "sphere", "material": {"baseColor": [0.8, 0.5, 0.3], "metallic": 0.0, "roughness": 0.4}}],
+           "ground": {}, "environment": {"file": "sky.hdr"},
+           "camera": {"position": [0, 0.6, 3.2], "target": [0, 0, 0], "yfov": 45}},
+          open(os.path.join(folder, "scene.json"), "w"))
+PY
+TRACE_ARGS=("$D/scene/scene.json" --spp 12 --width 64 --height 36 --threads 1)
+PASSES=4
+"$BIN/iblkit-trace" "${TRACE_ARGS[@]}" -o "$D/single.exr" >/dev/null
+
+# --- helpers ---------------------------------------------------------------------------------------
+# The state of every task of job $1 (array tasks included), one per line.
+states() { scontrol -o show job "$1" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | cut -d= -f2; }
+# Waits until no task of job $1 is pending or running (polling squeue is faster than sbatch --wait).
+wait_done() {
+  for _ in $(seq 600); do
+    [ -z "$(squeue -h -j "$1" -o %T 2>/dev/null)" ] && return 0
+    sleep 0.1
+  done
+  fail "job $1 still queued: $(squeue -j "$1" 2>&1)"
+}
+submit() { sbatch --parsable --chdir="$D" -o "$D/job-%A_%a.log" "$@"; }
+submit_array() {  # OUTDIR ARRAY [sbatch options]: the trace tasks, through a wrapper that can hang
+  local out=$1 array=$2
+  shift 2
+  IBLKIT_TRACE=$BIN/iblkit-trace submit --array="$array" "$@" "$D/task.sh" "$PASSES" "$out" "${TRACE_ARGS[@]}"
+}
+submit_merge() {  # DEPENDENCY OUT.exr OUTDIR
+  submit --dependency="afterok:$1" --kill-on-invalid-dep=yes --wrap \
+    "'$BIN/iblkit-trace' --merge $(for i in $(seq 0 $((PASSES - 1))); do printf "'%s' " "$3/pass_$i.sum"; done) -o '$2'"
+}
+# The array task: scripts/slurm/trace_array.sh, except that task $HANG_TASK waits to be cancelled
+# while it runs (until the file $D/resubmitted exists).
+cat >"$D/task.sh" <<TASK
+#!/usr/bin/env bash
+if [ "\${SLURM_ARRAY_TASK_ID}" = "\${HANG_TASK:-none}" ] && [ ! -e "$D/resubmitted" ]; then sleep 300; fi
+exec "$SOURCE/scripts/slurm/trace_array.sh" "\$@"
+TASK
+chmod +x "$D/task.sh"
+expect_identical() {
+  [ -f "$1" ] || fail "$1 was not written (the job says COMPLETED: check outputs, not only states)"
+  cmp "$D/single.exr" "$1" || fail "$1 differs from the single-process render"
+}
+
+# --- 1. a split render and its merge --------------------------------------------------------------
+mkdir -p "$D/passes1"
+t=$(date +%s%N)
+array=$(submit_array "$D/passes1" "0-$((PASSES - 1))")
+merge=$(submit_merge "$array" "$D/merged1.exr" "$D/passes1")
+wait_done "$array"
+wait_done "$merge"
+[ "$(states "$array" | sort -u)" = COMPLETED ] || fail "array $array: $(states "$array" | tr '\n' ' ')"
+[ "$(states "$merge")" = COMPLETED ] || fail "merge $merge: $(states "$merge")"
+expect_identical "$D/merged1.exr"
+echo "1. $PASSES passes + merge through Slurm: byte-identical to the single run ($(elapsed "$t") s)"
+
+# --- 2. a task cancelled while it runs, found and resubmitted --------------------------------------
+mkdir -p "$D/passes2"
+t=$(date +%s%N)
+array=$(HANG_TASK=2 submit_array "$D/passes2" "0-$((PASSES - 1))")
+merge=$(submit_merge "$array" "$D/merged2.exr" "$D/passes2")
+for _ in $(seq 300); do
+  [ "$(squeue -h -j "${array}_2" -o %T 2>/dev/null)" = RUNNING ] && [ -f "$D/passes2/pass_0.sum" ] &&
+    [ -f "$D/passes2/pass_1.sum" ] && [ -f "$D/passes2/pass_3.sum" ] && break
+  sleep 0.1
+done
+[ "$(squeue -h -j "${array}_2" -o %T)" = RUNNING ] || fail "task ${array}_2 is not running"
+scancel "${array}_2"
+wait_done "$array"
+wait_done "$merge"
+[ "$(scontrol -o show job "${array}_2" | grep -o 'JobState=[A-Z]*')" = JobState=CANCELLED ] ||
+  fail "task ${array}_2: $(scontrol -o show job "${array}_2")"
+[ "$(states "$merge")" = CANCELLED ] || fail "the merge after a cancelled task is $(states "$merge"), not CANCELLED"
+[ ! -e "$D/merged2.exr" ] || fail "the merge ran although a pass was cancelled"
+missing=()
+for i in $(seq 0 $((PASSES - 1))); do [ -f "$D/passes2/pass_$i.sum" ] || missing+=("$i"); done
+[ "${missing[*]}" = 2 ] || fail "missing passes are '${missing[*]}', expected '2'"
+leftovers=$(find "$D/passes2" -name '*.tmp-*')
+[ -z "$leftovers" ] || fail "a cancelled task left $leftovers"
+touch "$D/resubmitted"
+again=$(submit_array "$D/passes2" "$(
+  IFS=,
+  echo "${missing[*]}"
+)")
+merge=$(submit_merge "$again" "$D/merged2.exr" "$D/passes2")
+wait_done "$again"
+wait_done "$merge"
+[ "$(states "$merge")" = COMPLETED ] || fail "merge $merge after the resubmission: $(states "$merge")"
+expect_identical "$D/merged2.exr"
+echo "2. task 2 cancelled while running, merge cancelled, task 2 resubmitted: byte-identical ($(elapsed "$t") s)"
+
+# --- 3. afterok on a failed job, with --kill-on-invalid-dep=yes ------------------------------------
+failing=$(submit --wrap "exit 3")
+dependent=$(submit --dependency="afterok:$failing" --kill-on-invalid-dep=yes --wrap "touch '$D/dependent-ran'")
+wait_done "$failing"
+wait_done "$dependent"
+[ "$(states "$failing")" = FAILED ] || fail "job $failing: $(states "$failing")"
+[ "$(states "$dependent")" = CANCELLED ] || fail "job $dependent after a failed job: $(states "$dependent")"
+[ ! -e "$D/dependent-ran" ] || fail "job $dependent ran although the job it depends on failed"
+echo "3. afterok on a failed job with --kill-on-invalid-dep=yes: cancelled, never ran"
+echo "cluster_slurm_trace: all passed in $(elapsed) s"
