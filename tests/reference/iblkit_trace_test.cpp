@@ -188,6 +188,24 @@ TEST_F(IblkitTrace, MaskedHoleInAGlbShowsTheEnvironment) {
     }
 }
 
+// --noise-split: the halves' mean as the beauty, and their noise as JSON and on stdout.
+TEST_F(IblkitTrace, NoiseSplitWritesTheMeanAndTheHalvesNoise) {
+  std::string output;
+  ASSERT_EQ(
+      trace("scene.json -o out.exr --spp 8 --threads 2 --camera-light-samples 4 --noise-split noise.json",
+            &output),
+      0)
+      << output;
+  EXPECT_NE(output.find("24x16, 8 spp, "), std::string::npos) << output;
+  EXPECT_NE(output.find("noise split: relMSE of the mean "), std::string::npos) << output;
+  EXPECT_EQ(readExr(dir_ / "out.exr").width(), 24);
+  std::ifstream json(dir_ / "noise.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  for (const char* key :
+       {"\"relMseEstimate\"", "\"halvesMeanFlip\"", "\"byFirstHit\"", "\"object\"", "\"ground\""})
+    EXPECT_NE(text.find(key), std::string::npos) << key << " in " << text;
+}
+
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
   struct Case {
     std::string arguments;
@@ -225,6 +243,10 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
        "iblkit-trace: --bent-normal: needs --integrator ao\n"},
       {"scene.json -o out.exr --texture-footprint -1", 2,
        "iblkit-trace: --texture-footprint: must be >= 0 (pixels)\n"},
+      {"scene.json -o out.exr --camera-light-samples 0", 2,
+       "iblkit-trace: --camera-light-samples: must be in 1..64, not 0\n"},
+      {"scene.json -o out.exr --spp 5 --noise-split noise.json", 2,
+       "iblkit-trace: --noise-split: needs an even --spp (half of it for each half)\n"},
       {"scene.json", 2, "iblkit-trace: --output is required\n"},
       {"scene.json -o out.exr --no-such-option", 2,
        "iblkit-trace: The following argument was not expected: --no-such-option\n"},
