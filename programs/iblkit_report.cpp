@@ -90,10 +90,11 @@ int report(Options& options) {
         concentrations[environment] = mapConcentration(loadEnvironmentMap(environment));
       result.concentration = concentrations[environment];
       result.mapKind = classifyMap(result.concentration);
-      std::fprintf(stderr, "iblkit-report: %s under %s: reference %d spp (relMSE %.2g, %s)%s\n",
-                   result.scene.c_str(), result.environment.c_str(), result.referenceSpp,
-                   result.referenceRelMse, result.referenceConverged ? "converged" : "not converged",
-                   cache.misses() == before ? ", cached" : "");
+      std::fprintf(
+          stderr, "iblkit-report: %s under %s: reference %d spp (relMSE %.2g, halves' FLIP %.3f, %s)%s\n",
+          result.scene.c_str(), result.environment.c_str(), result.referenceSpp, result.referenceRelMse,
+          result.referenceHalvesFlip, result.referenceConverged ? "converged" : "not converged",
+          cache.misses() == before ? ", cached" : "");
       summary.cases.push_back(std::move(result));
     }
   }
@@ -150,9 +151,15 @@ int main(int argc, char** argv) {
   app.add_option("--negligible", settings.negligibleRatio,
                  "converged when the reference's relMSE is at most this fraction of the best mode's")
       ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--negligible-relmse", settings.negligibleRelMse,
-                 "also converged when the reference's relMSE is at most this")
+  app.add_option("--negligible-relmse", settings.negligibleRelMse, "...or, when larger, at most this relMSE")
       ->check(CLI::Range(0.0, 1.0));
+  app.add_option(
+         "--max-reference-relmse", settings.maxReferenceRelMse,
+         "a converged reference's estimated relMSE is at most this, whatever the modes' (default 1e-3)")
+      ->check(CLI::Range(0.0, 1e9));
+  app.add_option("--reference-light-samples", settings.referenceLightSamples,
+                 "iblkit-trace --camera-light-samples of the reference passes (default 4)")
+      ->check(CLI::Range(1, 64));
   app.add_option("--bench", settings.benchFrames, "frames for each mode's median frame time (0: none)")
       ->check(CLI::Range(0, 1000));
   app.add_option("--samples", settings.engineSamples,

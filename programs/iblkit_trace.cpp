@@ -23,9 +23,11 @@
 #include "reference/environment_sampler.h"
 #include "reference/integrator.h"
 #include "reference/median_cut_sampler.h"
+#include "reference/noise_split.h"
 #include "reference/pass_sum.h"
 #include "reference/render_scene.h"
 #include "reference/renderer.h"
+#include "score/halves_flip.h"
 
 namespace iblkit {
 namespace {
@@ -49,6 +51,8 @@ struct Options {
   bool noTextures = false;
   float textureFootprint = kDefaultTextureFootprint;
   PassArguments passes;  // --pass, --passes, --sum, --merge (cli/pass_arguments.h, docs/cluster.md)
+  int cameraLightSamples = 1;
+  std::filesystem::path noiseSplit;  // --noise-split: the halves' noise as JSON
 };
 
 // Fails early, before a long render, when an output cannot be written.
@@ -121,6 +125,10 @@ int run(const Options& options, const CLI::App& app) {
               "must be a power of 2 in 1..4096, not " + std::to_string(options.environmentLights));
   integratorSettings.maxDepth = options.maxDepth;
   integratorSettings.aoDistance = options.aoDistance;
+  requireInRange("--camera-light-samples", options.cameraLightSamples, 1, kMaxSplitLightDraws);
+  integratorSettings.cameraLightSamples = options.cameraLightSamples;
+  if (!options.noiseSplit.empty() && options.samplesPerPixel % 2 != 0)
+    failUsage("--noise-split", "needs an even --spp (half of it for each half)");
   const PixelFilterKind filter = parsePixelFilter(options.filter);
   if (options.phongExponent) {
     // Beyond ~1e6 the lobe's normalisation and pdf overflow float (NaN pixels).
@@ -135,15 +143,19 @@ int run(const Options& options, const CLI::App& app) {
       options.passes.passes
           ? passSamples(options.samplesPerPixel, *options.passes.pass, *options.passes.passes)
           : SampleRange{0, static_cast<std::uint32_t>(options.samplesPerPixel)};
+  // The halves take seeds 2s and 2s + 1 (reference/noise_split.h): no pass of another render.
+  if (!options.noiseSplit.empty() && (options.passes.passes || !options.passes.sum.empty()))
+    failUsage("--noise-split", "renders its own two halves; it does not go with --pass or --sum");
   for (const auto* file : {&options.output, &options.png, &options.albedo, &options.normal, &options.depth,
-                           &options.variance, &options.mask, &options.bentNormal, &options.passes.sum})
+                           &options.variance, &options.mask, &options.bentNormal, &options.passes.sum,
+                           &options.noiseSplit})
     checkOutputFolder(*file);
 
   Scene scene = loadScene(options.scene.input);
   // No output may replace the scene, a model or the map (nor a device node).
   checkOutputs(sceneInputs(scene, options.scene.environment),
                {options.output, options.png, options.albedo, options.normal, options.depth, options.variance,
-                options.mask, options.bentNormal, options.passes.sum});
+                options.mask, options.bentNormal, options.passes.sum, options.noiseSplit});
   const std::uint64_t key =
       options.passes.sum.empty()
           ? 0
@@ -180,8 +192,10 @@ int run(const Options& options, const CLI::App& app) {
       {medianCutSampler ? &*medianCutSampler : nullptr, pointLights ? &*pointLights : nullptr});
 
   const bool terminal = isatty(STDERR_FILENO) != 0;
-  RenderResult result =
-      render(integrator, camera, settings, terminal ? RenderProgress(drawProgress) : RenderProgress());
+  const RenderProgress progress = terminal ? RenderProgress(drawProgress) : RenderProgress();
+  std::optional<NoiseSplit> split;
+  if (!options.noiseSplit.empty()) split = renderNoiseSplit(integrator, camera, settings, progress);
+  RenderResult result = split ? split->mean : render(integrator, camera, settings, progress);
   if (terminal) std::fputs("\n", stderr);
 
   const ExrWriteOptions exrOptions{.pixelType = PixelType::Float};
@@ -202,6 +216,16 @@ int run(const Options& options, const CLI::App& app) {
       result.seconds > 0.0 ? static_cast<double>(result.rays) / result.seconds * 1e-6 : 0.0;
   std::printf("%dx%d, %d spp, %.2f s, %.2f Mrays/s\n", settings.width, settings.height,
               result.samplesPerPixel, result.seconds, megaRaysPerSecond);
+  if (split) {
+    const double flip =
+        split->geometry.empty() ? 0.0 : halvesMeanFlip(split->a.beauty, split->b.beauty, split->geometry);
+    writeNoiseSplitJson(options.noiseSplit, *split, flip);
+    std::printf(
+        "noise split: relMSE of the mean %.3g (object %.3g over %zu px, %.0f%%; ground %.3g over %zu px, "
+        "%.0f%%), halves' FLIP %.4f\n",
+        split->relMse, split->object.relMse, split->object.pixels, 100.0 * split->object.share,
+        split->ground.relMse, split->ground.pixels, 100.0 * split->ground.share, flip);
+  }
   return 0;
 }
 
@@ -236,6 +260,10 @@ int main(int argc, char** argv) {
   app.add_option("--width", options.width, "image width (default: the scene's)");
   app.add_option("--height", options.height, "image height (default: the scene's)");
   app.add_option("--seed", options.seed, "random seed");
+  app.add_option("--camera-light-samples", options.cameraLightSamples,
+                 "environment light samples at the camera ray's first hit (splitting, 1..64)");
+  app.add_option("--noise-split", options.noiseSplit,
+                 "render two independent halves (seeds 2s, 2s+1) and write their noise estimate (JSON)");
   app.add_option("--threads", options.threads, "worker threads (0: all)");
   app.add_flag("--no-textures", options.noTextures,
                "trace the materials' constant factors (every texture slot off; alpha from the factor)");

@@ -62,6 +62,9 @@ Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environme
     throw std::invalid_argument("Integrator: mediancut needs a MedianCutSampler");
   if (settings.envSampling == EnvSampling::Lights && !medianCut.pointLights)
     throw std::invalid_argument("Integrator: lights needs EnvironmentPointLights");
+  if (settings.cameraLightSamples < 1 || settings.cameraLightSamples > kMaxSplitLightDraws)
+    throw std::invalid_argument("Integrator: camera light samples outside 1.." +
+                                std::to_string(kMaxSplitLightDraws));
 }
 
 glm::vec3 Integrator::evalReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
@@ -112,6 +115,8 @@ struct Integrator::Path {
   glm::vec3 throughput{1.0f};
   float previousPdf = 0.0f;   // BRDF pdf of the ray being traced
   bool previousDelta = true;  // the camera ray, like a mirror ray, sees the environment directly
+  // Light samples taken at the vertex the ray leaves (K at the first hit), for its MIS weight.
+  float previousLightSamples = 1.0f;
   bool alive = true;
   Hit hit;
   glm::vec2 escapeUv{0.0f};  // where an escaping ray looks the environment sampler up (mis)
@@ -187,6 +192,12 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
   const bool envSampler = strategy == EnvSampling::Env || strategy == EnvSampling::Mis;
   const int maxDepth = settings_.kind == IntegratorKind::Direct ? 1 : settings_.maxDepth;
   const std::size_t count = paths.size();
+  // The first vertex's split light draws, K per path (none for K = 1, which uses uLight).
+  const int split = sampleLights ? settings_.cameraLightSamples : 1;
+  std::vector<glm::vec2> splitDraws(split > 1 ? count * std::size_t(split) : 0);
+  const auto splitDraw = [&](std::size_t i, int j) {
+    return splitDraws[i * std::size_t(split) + std::size_t(j)];
+  };
 
   for (int depth = 0;; ++depth) {
     bool any = false;
@@ -220,7 +231,8 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
         const EnvironmentSampler::Lookup seen = strategy == EnvSampling::Mis
                                                     ? environmentSampler_.lookupAt(p.escapeUv)
                                                     : lookupLight(p.ray.direction);
-        out[i].radiance += p.throughput * powerHeuristic(p.previousPdf, seen.pdf) * seen.radiance;
+        out[i].radiance +=
+            p.throughput * powerHeuristic(p.previousPdf, p.previousLightSamples * seen.pdf) * seen.radiance;
       }
     }
 
@@ -246,14 +258,23 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       p.uBrdf = sampler.next2D();
       p.uLobe = sampler.next1D();
       p.uRoulette = sampler.next1D();
+      if (depth == 0 && split > 1)
+        for (int j = 0; j < split; ++j)
+          splitDraws[i * std::size_t(split) + std::size_t(j)] = sampler.splitLight2D(j, split);
       p.brdf.reset();
       if (!settings_.phong) p.brdf.emplace(p.point.lobes, p.point.shadingNormal, wo);
     }
     // The light samples' tables and texels, brought in for the whole batch stage by stage.
+    const int lightSamples = depth == 0 ? split : 1;
     if (envSampler)
       for (int stage = 0; stage < EnvironmentSampler::kPrefetchStages; ++stage)
-        for (const Path& p : paths)
-          if (p.alive) environmentSampler_.prefetchSample(p.uLight, stage);
+        for (std::size_t i = 0; i < count; ++i) {
+          if (!paths[i].alive) continue;
+          if (lightSamples == 1)
+            environmentSampler_.prefetchSample(paths[i].uLight, stage);
+          else
+            for (int j = 0; j < lightSamples; ++j) environmentSampler_.prefetchSample(splitDraw(i, j), stage);
+        }
 
     // Next-event estimation and the bounce.
     for (std::size_t i = 0; i < count; ++i) {
@@ -264,8 +285,11 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       const glm::vec3 wo = -p.ray.direction;
       const glm::vec3 n = point.shadingNormal, ng = point.geometricNormal;
       const BrdfAtPoint* brdf = p.brdf ? &*p.brdf : nullptr;
-      if (sampleLights) {
-        const LightSample light = sampleLight(n, p.uLight);
+      // n light samples, each weighted 1/n: their density is n times the one sample's in the
+      // power heuristic (Veach 1997, eq. 9.13).
+      const float samples = float(lightSamples);
+      for (int j = 0; sampleLights && j < lightSamples; ++j) {
+        const LightSample light = sampleLight(n, lightSamples == 1 ? p.uLight : splitDraw(i, j));
         const float cosTheta = glm::dot(n, light.direction);
         // Directions below the triangle's plane are blocked by the surface itself.
         if (light.pdf > 0.0f && cosTheta > 0.0f && glm::dot(light.direction, ng) > 0.0f &&
@@ -275,9 +299,10 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
             ++result.rays;
             if (!occluded(offsetRayOrigin(point.position, ng), light.direction, kInfinity,
                           RayQuery{RayKind::Secondary, p.cone})) {
+              const float density = samples * light.pdf;
               const float weight =
-                  combine ? powerHeuristic(light.pdf, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
-              result.radiance += p.throughput * f * light.radiance * (cosTheta * weight / light.pdf);
+                  combine ? powerHeuristic(density, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
+              result.radiance += p.throughput * f * light.radiance * (cosTheta * weight / density);
             }
           }
         }
@@ -295,6 +320,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       if (!scattered.delta) p.cone.spread += std::min(1.0f, 1.0f / std::sqrt(glm::pi<float>() * scattered.pdf));
       p.previousPdf = scattered.pdf;
       p.previousDelta = scattered.delta;
+      p.previousLightSamples = samples;
       // Russian roulette (Arvo and Kirk 1990): continue with probability q, dividing by q.
       if (depth + 1 >= kRussianRouletteDepth) {
         const float q = std::min(0.95f, maxComponent(p.throughput));

@@ -20,6 +20,12 @@
 // median_cut_sampler.h, + brdf, power heuristic, like mis). Whatever the strategy the path is
 // continued by BRDF sampling, so every one of these converges to the same image.
 //
+// Splitting (cameraLightSamples K): at the camera ray's first hit the light strategy takes K
+// samples, each weighted 1/K, and the BRDF strategy one; MIS weighs them by Veach's power heuristic
+// with sample counts (eq. 9.13: w_i = (n_i p_i)^2 / sum_k (n_k p_k)^2), so the estimator stays
+// unbiased. Later vertices take one light sample. The K draws are stratified (PixelSampler::
+// splitLight2D). K = 1 is the plain estimator, bit for bit.
+//
 // lights is the biased approximation (environment_point_lights.h): at every non-delta vertex one of
 // the N median-cut point lights, picked by its power, with a shadow ray (next-event estimation,
 // weighted by 1 / its probability: in expectation the sum over all N lights). BRDF-sampled rays
@@ -77,6 +83,9 @@ struct IntegratorSettings {
   // of this exponent, tinted by its base colour, instead of the glTF BRDF: the second material
   // model of the sampling study (a lobe whose shape is known exactly).
   std::optional<PhongLobe> phong;
+  // Light samples at the camera ray's first hit (splitting, above), 1..kMaxSplitLightDraws; path
+  // and direct with a light strategy (not brdf).
+  int cameraLightSamples = 1;
 };
 
 // Everything one camera sample produces; the renderer averages these per pixel.
@@ -105,7 +114,7 @@ class Integrator {
   // `scene`, `environment`, `environmentSampler` and what `medianCut` points to must outlive the
   // integrator. `environmentSampler` samples `environment` (used by the env and mis strategies).
   // Throws std::invalid_argument when settings.envSampling is mediancut or lights and `medianCut`
-  // lacks its sampler.
+  // lacks its sampler, or when settings.cameraLightSamples is outside 1..kMaxSplitLightDraws.
   Integrator(const RenderScene& scene, const EnvironmentMap& environment,
              const EnvironmentSampler& environmentSampler, const IntegratorSettings& settings,
              const MedianCutLighting& medianCut = {});

@@ -83,4 +83,10 @@ glm::vec2 PixelSampler::next2D() {
   return rng_.uniform2D();
 }
 
+glm::vec2 PixelSampler::splitLight2D(int j, int count) const {
+  const std::uint32_t index =
+      static_cast<std::uint32_t>(count) * pairIndex(1, sampleIndex_) + static_cast<std::uint32_t>(j);
+  return owenScrambledSobol02(index, pixel_.scrambles_[1]);
+}
+
 }  // namespace iblkit

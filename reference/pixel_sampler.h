@@ -12,6 +12,12 @@
 // 65536 (pixel_sampler.cpp), so the samples that land on one side of an edge inside the pixel still
 // cover the light and BRDF squares evenly. Everything else comes from a PCG32 stream keyed by the
 // pixel and the sample index.
+//
+// Splitting (IntegratorSettings::cameraLightSamples K): the first vertex's K light draws are the
+// light pair's points at indices K l(i) .. K l(i) + K - 1, l(i) the light draw's permuted index of
+// sample i (splitLight2D). For K a power of 2 each sample's K points are an aligned block of the
+// (0,2)-sequence, a (0,log2 K,2)-net, and the K 2^m points of an aligned block of 2^m samples are
+// one too: the light directions stay stratified within a sample and across the pixel's samples.
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -28,6 +34,9 @@ std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b);
 
 // Number of leading 2D draws of a camera sample taken from the scrambled Sobol sequence.
 inline constexpr int kPixelSobolPairs = 3;
+// The most light draws PixelSampler::splitLight2D splits the first vertex's into (indices stay
+// below 2^32 for kMaxSamplesPerPixel = 2^24 samples).
+inline constexpr int kMaxSplitLightDraws = 64;
 
 // The part of a PixelSampler's keys that depends only on (seed, pixel): the hashes that scramble
 // each Sobol pair. The renderer computes it once per pixel instead of once per sample.
@@ -55,6 +64,10 @@ class PixelSampler {
   // The next number in [0,1) (always from PCG32: 1D choices such as lobe selection and Russian
   // roulette gain little from stratification).
   float next1D() { return rng_.uniformFloat(); }
+  // The j-th of `count` light draws of the first vertex (0 <= j < count <= kMaxSplitLightDraws),
+  // above. It does not advance the sequence; splitLight2D(0, 1) is the light pair's own draw,
+  // the second next2D().
+  glm::vec2 splitLight2D(int j, int count) const;
 
  private:
   PixelSeeds pixel_;

@@ -13,11 +13,6 @@ FrameScores scoreFrame(const Image& reference, const Image& test, std::span<cons
   return scoreImages(reference, test, mask, options, flip);
 }
 
-double halvesRelMseEstimate(const Image& a, const Image& b, std::span<const std::uint8_t> mask) {
-  // (a - mean)^2 = (a - b)^2 / 4, which is the estimate itself.
-  return relativeMeanSquaredError(averageImages(a, b), a, mask);
-}
-
 std::vector<std::uint8_t> geometryMask(const Image& depth) {
   std::vector<std::uint8_t> mask(depth.pixelCount());
   for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = depth.pixels()[i].r > 0.0f ? 1 : 0;

@@ -24,11 +24,6 @@ using FrameScores = ImageScores;
 FrameScores scoreFrame(const Image& reference, const Image& test, std::span<const std::uint8_t> mask,
                        const ExposureRange& exposures, FlipErrorMap* flip = nullptr);
 
-// The relative MSE of the mean of two independent, equally weighted Monte Carlo halves a and b,
-// estimated from their difference: E[(a - b)^2] = 2 var(half) and var(mean) = var(half) / 2, so
-// relMSE(mean) ~ relMSE(a vs b) / 4 (with the mean as the denominator's reference).
-double halvesRelMseEstimate(const Image& a, const Image& b, std::span<const std::uint8_t> mask);
-
 // Pixels that see geometry: a depth layer (distance along the camera ray, 0 where nothing is hit,
 // iblkit-trace --depth) above 0.
 std::vector<std::uint8_t> geometryMask(const Image& depth);

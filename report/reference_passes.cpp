@@ -5,10 +5,12 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/halves_noise.h"
 #include "core/image_io.h"
 #include "report/frame_scores.h"
 #include "report/stage_run.h"
 #include "score/flip.h"
+#include "score/halves_flip.h"
 #include "score/image_metrics.h"
 
 namespace iblkit {
@@ -63,27 +65,43 @@ double bestModeRelMse(const Reference& reference, const std::vector<Image>& fram
 
 }  // namespace
 
+double referenceTargetRelMse(const ReportSettings& settings, double bestModeRelMse) {
+  return std::min(settings.maxReferenceRelMse,
+                  std::max(settings.negligibleRatio * bestModeRelMse, settings.negligibleRelMse));
+}
+
+int referencePassesFor(const ReportSettings& settings, int passes, double relMse, double target) {
+  constexpr double kSpare = 1.25;
+  const double aimed =
+      target > 0.0 ? std::ceil(kSpare * passes * relMse / target) : double(settings.maxPasses);
+  const int even = 2 * int(std::ceil(std::min(aimed, double(settings.maxPasses)) / 2.0));
+  return std::clamp(even, std::min(passes + 2, settings.maxPasses), settings.maxPasses);
+}
+
 Reference traceReference(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
                          const CaseInputs& inputs, const std::vector<Image>& frames, CaseResult& result) {
   Reference reference;
   std::vector<Image> passes;
-  for (int count = settings.minPasses;; count = std::min(2 * count, settings.maxPasses)) {
+  Image a, b;
+  for (int count = settings.minPasses;;) {
     while (int(passes.size()) < count)
       tracePass(settings, cache, caseName, inputs, int(passes.size()), passes, reference, result);
     std::vector<Image> halfA, halfB;
     for (std::size_t i = 0; i < passes.size(); ++i) (i % 2 == 0 ? halfA : halfB).push_back(passes[i]);
-    const Image a = meanOf(halfA), b = meanOf(halfB);
+    a = meanOf(halfA);
+    b = meanOf(halfB);
     reference.image = averageImages(a, b);
     result.referenceSpp = count * settings.passSpp;
     result.scoredPixels = scoredPixelCount(reference.mask, reference.image.pixelCount());
     if (result.scoredPixels == 0) fail(inputs.sceneFile, "no pixel of the reference sees geometry");
     result.referenceRelMse = halvesRelMseEstimate(a, b, reference.mask);
     result.flipExposures = automaticExposureRange(reference.image);
-    const double best = bestModeRelMse(reference, frames, result);
-    result.referenceConverged =
-        result.referenceRelMse <= std::max(settings.negligibleRatio * best, settings.negligibleRelMse);
+    const double target = referenceTargetRelMse(settings, bestModeRelMse(reference, frames, result));
+    result.referenceConverged = result.referenceRelMse <= target;
     if (result.referenceConverged || count >= settings.maxPasses) break;
+    count = referencePassesFor(settings, count, result.referenceRelMse, target);
   }
+  result.referenceHalvesFlip = halvesMeanFlip(a, b, reference.mask, &result.flipExposures);
   return reference;
 }
 

@@ -19,11 +19,21 @@ struct Reference {
   std::vector<std::uint8_t> mask;  // the scored pixels: geometry less its rim (frame_scores.h)
 };
 
+// The relMSE at which a reference counts as converged, given the best mode's relMSE against it:
+// min(settings.maxReferenceRelMse, max(settings.negligibleRatio x best, settings.negligibleRelMse)).
+double referenceTargetRelMse(const ReportSettings& settings, double bestModeRelMse);
+
+// The passes to trace next, aimed at `target` from `relMse` measured at `passes` (relMSE falls as
+// 1 / passes): passes x relMse / target with 25% to spare, rounded up to even, at least passes + 2
+// and at most settings.maxPasses.
+int referencePassesFor(const ReportSettings& settings, int passes, double relMse, double target);
+
 // Traces passes with seeds 0, 1, 2, ... (stage "trace-CASE-SEED"; even seeds make half A, odd
-// seeds half B), from settings.minPasses doubling up to settings.maxPasses, until the halves'
-// relMSE estimate is negligible next to the best of `frames` (referenceConverged). Sets result's
-// reference fields (spp, relMSE, convergence, trace seconds, scored pixels, FLIP bracket), adds
-// pass 0's command, and marks the modes whose frame has the wrong size as failed.
+// seeds half B): settings.minPasses, then as many as referencePassesFor aims at, until the halves'
+// relMSE estimate (core/halves_noise.h) is at most referenceTargetRelMse of the best of `frames`,
+// or settings.maxPasses are traced. Sets result's reference fields (spp, relMSE, convergence, the
+// halves' FLIP, trace seconds, scored pixels, FLIP bracket), adds pass 0's command, and marks the
+// modes whose frame has the wrong size as failed.
 Reference traceReference(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
                          const CaseInputs& inputs, const std::vector<Image>& frames, CaseResult& result);
 

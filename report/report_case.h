@@ -38,6 +38,8 @@ struct CaseResult {
   double bakeSeconds = 0.0, traceSeconds = 0.0;
   int referenceSpp = 0;
   double referenceRelMse = 0.0;  // estimated from the two halves
+  // Mean HDR-FLIP between the two halves over the scored pixels (score/halves_flip.h); NaN until traced.
+  double referenceHalvesFlip = std::numeric_limits<double>::quiet_NaN();
   bool referenceConverged = false;
   float exposure = 0.0f;          // of the PNG thumbnails, stops
   ExposureRange flipExposures;    // HDR-FLIP bracket shared by every mode of this case

@@ -14,14 +14,24 @@ struct ReportSettings {
   int width = 320, height = 180;
   std::vector<std::string> modes;     // engine modes to score (iblkit-view --mode)
   int passSpp = 16;                   // samples per pixel of one reference pass
-  int minPasses = 4, maxPasses = 64;  // reference passes; even, doubled until negligible
-  // The reference is converged when its estimated relMSE is at most this fraction of the best
-  // mode's relMSE, so its noise adds at most that fraction to every mode's measured error.
+  // Reference passes; even. After the first minPasses the count is aimed at the target from the
+  // measured noise (referencePassesFor), at most maxPasses.
+  int minPasses = 4, maxPasses = 64;
+  // The reference is converged when its estimated relMSE is at most maxReferenceRelMse and at
+  // most the larger of negligibleRatio times the best mode's relMSE and negligibleRelMse
+  // (referenceTargetRelMse, docs/report.md "Reference").
+  // The absolute bound: 1e-3 is 3% RMS relative noise, about where a thumbnail stops looking
+  // grainy (the bunny under studio at 10% of its best mode stopped at 0.0094, 10% RMS).
+  double maxReferenceRelMse = 1e-3;
+  // The reference's noise adds at most this fraction to every mode's measured error.
   double negligibleRatio = 0.1;
-  // ...or at most this relMSE (1% RMS relative noise), whichever is larger: where a mode is
-  // nearly exact (the mirror sphere's `mirror`), 10% of its error would ask for thousands of
-  // samples to resolve differences no score can see.
+  // ...unless that is below this relMSE (1% RMS relative noise): where a mode is nearly exact
+  // (the mirror sphere's `mirror`), 10% of its error would ask for thousands of samples to
+  // resolve differences no score can see.
   double negligibleRelMse = 1e-4;
+  // iblkit-trace --camera-light-samples of the reference passes: environment light samples at the
+  // camera ray's first hit (splitting; docs/reference-tracer.md).
+  int referenceLightSamples = 4;
   int benchFrames = 5;  // iblkit-view --bench frames for the frame time; 0: not measured
   // Engine frames shade this many samples per pixel (iblkit-view --samples N --sample-shading), so
   // their pixels average the shading over the pixel as the reference's pixel filter does; 1: one.

@@ -185,7 +185,9 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                           {"referenceIntegrator", summary.settings.referenceIntegrator},
                           {"maxPasses", summary.settings.maxPasses},
                           {"negligibleRatio", summary.settings.negligibleRatio},
-                          {"negligibleRelMse", summary.settings.negligibleRelMse}};
+                          {"negligibleRelMse", summary.settings.negligibleRelMse},
+                          {"maxReferenceRelMse", summary.settings.maxReferenceRelMse},
+                          {"referenceLightSamples", summary.settings.referenceLightSamples}};
   document["seconds"] = summary.totalSeconds;
   document["stages"] = {{"cached", summary.cachedStages}, {"run", summary.runStages}};
   for (const Claim& claim : summary.claims)
@@ -206,6 +208,7 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                   {"traceSeconds", result.traceSeconds},
                   {"reference", {{"spp", result.referenceSpp},
                                  {"relMseEstimate", number(result.referenceRelMse)},
+                                 {"halvesMeanFlip", number(result.referenceHalvesFlip)},
                                  {"converged", result.referenceConverged},
                                  {"image", result.referenceImage}}},
                   {"scoredPixels", result.scoredPixels},
@@ -332,8 +335,9 @@ over the pixels that see geometry (the sky is trivially right): HDR-FLIP with on
 per reference, relative MSE, the luminance-weighted mean relative error and SSIM
 (<code>docs/scoring.md</code>, <code>docs/report.md</code>). The reference is traced in passes until its own
 relMSE, estimated from two independent halves, is at most )"
-       << summary.settings.negligibleRatio * 100.0 << R"(% of the best mode's, or at most )"
-       << summary.settings.negligibleRelMse << R"( (1% RMS noise), whichever is larger.</p>
+       << summary.settings.maxReferenceRelMse << R"( and at most )" << summary.settings.negligibleRatio * 100.0
+       << R"(% of the best mode's or )" << summary.settings.negligibleRelMse
+       << R"( (1% RMS noise), whichever is larger; the halves' FLIP against each other shows how visible that noise is.</p>
 )";
   std::error_code error;
   if (fs::exists(file.parent_path() / "inputs.html", error))
@@ -416,7 +420,9 @@ relMSE, estimated from two independent halves, is at most )"
     html << "<table><tr><th class=l>environment</th>"
             "<th title=\"the map's kind (docs/report.md): energy share of its brightest 1e-4 and 1% of the sphere\">"
             "kind (sun share / source share)</th><th>bake (s)</th><th>trace (s)</th><th>reference spp</th>"
-            "<th>reference relMSE (estimated)</th><th>converged</th>"
+            "<th>reference relMSE (estimated)</th>"
+            "<th title=\"mean HDR-FLIP between the reference's two independent halves (each of half its samples)\">"
+            "halves' FLIP</th><th>converged</th>"
             "<th title=\"mean relative error of SH9 irradiance against brute force on the scored pixels' normals: "
             "the least an sh frame can have on a convex Lambert object\">SH9's own error</th>"
             "<th title=\"what the sh frame gets wrong beyond SH9's own error, on 16x16-pixel blocks\">sh beyond SH9</th>"
@@ -426,7 +432,8 @@ relMSE, estimated from two independent halves, is at most )"
            << fixed(result->concentration.sunShare, 2) << " / " << fixed(result->concentration.sourceShare, 2)
            << ")</td><td>" << fixed(result->bakeSeconds, 1) << "</td><td>"
            << fixed(result->traceSeconds, 1) << "</td><td>" << result->referenceSpp << "</td><td>"
-           << fixed(result->referenceRelMse, 5) << "</td><td class=" << (result->referenceConverged ? "ok>yes" : "no>no")
+           << fixed(result->referenceRelMse, 5) << "</td><td>" << fixed(result->referenceHalvesFlip, 4)
+           << "</td><td class=" << (result->referenceConverged ? "ok>yes" : "no>no")
            << "</td><td>" << fixed(100.0 * result->sh9Truncation, 1) << "%</td><td>"
            << fixed(100.0 * result->shBeyondSh9, 2) << "%</td></tr>\n";
     html << "</table>\n";

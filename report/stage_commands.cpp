@@ -83,6 +83,9 @@ StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inpu
   if (seed == 0) arguments.insert(arguments.end(), {"--normal", stageFile("normal.exr")});
   if (settings.referenceIntegrator != "path")
     arguments.insert(arguments.end(), {"--integrator", settings.referenceIntegrator});
+  if (settings.referenceLightSamples != 1)
+    arguments.insert(arguments.end(),
+                     {"--camera-light-samples", std::to_string(settings.referenceLightSamples)});
   if (inputs.textured) {
     std::ostringstream footprint;
     footprint << 1.0 / double(std::max(1, settings.engineSupersample));  // 1, 0.5, 0.25: exact

@@ -36,7 +36,8 @@ StageCommand viewCommand(const ReportSettings& settings, const std::filesystem::
                          const std::string& mode);
 
 // iblkit-trace SCENE --env ENV: the reference pass with `seed` ({stage}/beauty.exr and depth.exr;
-// pass 0 also writes {stage}/normal.exr, for the mask's normals). A textured scene is traced with
+// pass 0 also writes {stage}/normal.exr, for the mask's normals), with --camera-light-samples K
+// unless K = settings.referenceLightSamples is 1 (whose command and key stay those of before). A textured scene is traced with
 // --texture-footprint 1/K, K the engine's --supersample: the engine's texture lookups take their
 // level of detail from the derivatives of its K x K finer pixels, so the reference's camera ray
 // cones spread over that pixel too (reference/renderer.h, textureFootprint). An untextured scene's

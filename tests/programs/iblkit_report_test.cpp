@@ -29,9 +29,14 @@ int report(const std::string& arguments, std::string* output) {
                           output);
 }
 
+// Small images and references held to the rule before the absolute bound, with one light sample
+// (--max-reference-relmse 1 --reference-light-samples 1), so that these tests of the modes take the
+// time they took before (the absolute bound and splitting have their test below).
 std::string smallReport(const fs::path& out, const std::string& scenes, const std::string& envs) {
   return scenes + " --env-dir " + quoted(test::assetsDir() / "hdri") + " --envs " + envs +
-         " --width 160 --height 90 --pass-spp 16 --min-passes 2 --max-passes 8 --bench 3 -o " + quoted(out);
+         " --width 160 --height 90 --pass-spp 16 --min-passes 2 --max-passes 8 --bench 3"
+         " --max-reference-relmse 1 --reference-light-samples 1 -o " +
+         quoted(out);
 }
 
 json readJson(const fs::path& file) {
@@ -209,6 +214,45 @@ TEST(IblkitReport, GltfOcclusionModesOnlyOnScenesWithAnOcclusionTexture) {
       EXPECT_EQ(modes, std::vector<std::string>{"full"}) << entry["scene"];
     }
   }
+}
+
+// The references' defaults: 4 light samples at the first hit (in every trace command, so in the
+// stage keys) and converged at the absolute bound, relMSE <= 1e-3 (--negligible-relmse 1e-3 makes
+// that bound the target whatever the sh frame's error), which the tiny diffuse sphere under city
+// reaches well before the 64-pass maximum (the count aimed from the measured noise); report.json
+// and the case table give the halves' FLIP.
+TEST(IblkitReport, ReferencesConvergeAtTheAbsoluteBoundWithSplitLightSamples) {
+  const fs::path out = test::scratchDir() / "report";
+  std::string output;
+  ASSERT_EQ(report(quoted(test::assetsDir() / "scenes" / "diffuse_sphere.json") + " --env-dir " +
+                       quoted(test::assetsDir() / "hdri") +
+                       " --envs city --width 64 --height 36 --pass-spp 8 --min-passes 2 --bench 0 --modes sh"
+                       " --negligible-relmse 1e-3 -o " +
+                       quoted(out),
+                   &output),
+            0)
+      << output;
+  const json document = readJson(out / "report.json");
+  EXPECT_EQ(document["settings"]["maxReferenceRelMse"].get<double>(), 1e-3);
+  EXPECT_EQ(document["settings"]["referenceLightSamples"].get<int>(), 4);
+  ASSERT_EQ(document["cases"].size(), 1u);
+  const json& reference = document["cases"][0]["reference"];
+  EXPECT_TRUE(reference["converged"].get<bool>()) << reference.dump();
+  EXPECT_LE(reference["relMseEstimate"].get<double>(), 1e-3) << reference.dump();
+  EXPECT_LT(reference["spp"].get<int>(), 64 * 8) << reference.dump();
+  const double flip = reference["halvesMeanFlip"].get<double>();
+  EXPECT_TRUE(flip > 0.0 && flip < 0.1) << reference.dump();
+  int traces = 0;
+  for (const json& command : document["cases"][0]["commands"]) {
+    const std::string text = command.get<std::string>();
+    if (text.find("iblkit-trace") == std::string::npos) continue;
+    ++traces;
+    EXPECT_NE(text.find("--camera-light-samples 4"), std::string::npos) << text;
+  }
+  EXPECT_EQ(traces, 1);
+  std::ifstream html(out / "report.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("halves' FLIP</th>"), std::string::npos);
 }
 
 TEST(IblkitReport, AMissingEnvironmentIsOneLineAndNoReport) {

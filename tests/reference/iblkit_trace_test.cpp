@@ -241,6 +241,24 @@ TEST_F(IblkitTrace, SplitPassesMergeIntoTheSingleRunByteForByte) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "refused.exr"));
 }
 
+// --noise-split: the halves' mean as the beauty, and their noise as JSON and on stdout.
+TEST_F(IblkitTrace, NoiseSplitWritesTheMeanAndTheHalvesNoise) {
+  std::string output;
+  ASSERT_EQ(
+      trace("scene.json -o out.exr --spp 8 --threads 2 --camera-light-samples 4 --noise-split noise.json",
+            &output),
+      0)
+      << output;
+  EXPECT_NE(output.find("24x16, 8 spp, "), std::string::npos) << output;
+  EXPECT_NE(output.find("noise split: relMSE of the mean "), std::string::npos) << output;
+  EXPECT_EQ(readExr(dir_ / "out.exr").width(), 24);
+  std::ifstream json(dir_ / "noise.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  for (const char* key :
+       {"\"relMseEstimate\"", "\"halvesMeanFlip\"", "\"byFirstHit\"", "\"object\"", "\"ground\""})
+    EXPECT_NE(text.find(key), std::string::npos) << key << " in " << text;
+}
+
 TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
   struct Case {
     std::string arguments;
@@ -278,6 +296,12 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
        "iblkit-trace: --bent-normal: needs --integrator ao\n"},
       {"scene.json -o out.exr --texture-footprint -1", 2,
        "iblkit-trace: --texture-footprint: must be >= 0 (pixels)\n"},
+      {"scene.json -o out.exr --camera-light-samples 0", 2,
+       "iblkit-trace: --camera-light-samples: must be in 1..64, not 0\n"},
+      {"scene.json -o out.exr --spp 5 --noise-split noise.json", 2,
+       "iblkit-trace: --noise-split: needs an even --spp (half of it for each half)\n"},
+      {"scene.json -o out.exr --noise-split noise.json --passes 2 --pass 0", 2,
+       "iblkit-trace: --noise-split: renders its own two halves; it does not go with --pass or --sum\n"},
       {"scene.json", 2, "iblkit-trace: --output is required\n"},
       {"-o out.exr", 2, "iblkit-trace: scene is required\n"},
       {"scene.json -o out.exr --pass 1", 2, "iblkit-trace: --pass requires --passes\n"},

@@ -125,6 +125,30 @@ TEST(PixelSampler, DrawsOfOneSampleAreUniformAndIndependentOverPixels) {
   }
 }
 
+// Splitting: the K light draws of one sample are a (0,log2 K,2)-net, the K 2^m draws of an aligned
+// block of 2^m samples one too, and K = 1 is the light draw itself (the plain estimator unchanged).
+TEST(PixelSampler, SplitLightDrawsAreStratifiedWithinASampleAndAcrossSamples) {
+  for (std::uint32_t sample : {0u, 5u, 1000u}) {
+    PixelSampler sampler(3, 40, sample);
+    sampler.next2D();
+    EXPECT_EQ(sampler.splitLight2D(0, 1), sampler.next2D()) << "sample " << sample;
+  }
+  for (int k : {2, 4, 16})
+    for (int m : {0, 3, 6})
+      for (std::uint32_t block : {0u, 3u}) {
+        std::vector<std::vector<float>> points;
+        for (std::uint32_t i = 0; i < (1u << m); ++i) {
+          const PixelSampler sampler(3, 40, (block << m) | i);
+          for (int j = 0; j < k; ++j) {
+            const glm::vec2 u = sampler.splitLight2D(j, k);
+            points.push_back({u.x, u.y});
+          }
+        }
+        const int bits = m + (k == 2 ? 1 : k == 4 ? 2 : 4);
+        EXPECT_TRUE(test::isNet(points, bits, 0)) << "K = " << k << ", m = " << m << ", block " << block;
+      }
+}
+
 TEST(HashCombine, IsOrderSensitiveAndSpreadsConsecutiveKeys) {
   EXPECT_NE(hashCombine(1, 2), hashCombine(2, 1));
   std::set<std::uint32_t> high;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/rng.h"
 #include "score/image_metrics.h"
 
 namespace iblkit {
@@ -44,24 +43,6 @@ TEST(FrameScores, NanPixelsAreCountedNotAveraged) {
   const FrameScores scores = scoreFrame(reference, test, {}, ExposureRange{});
   EXPECT_EQ(scores.invalidPixels, 2u);
   EXPECT_EQ(scores.meanFlip, 0.0);
-}
-
-TEST(FrameScores, HalvesEstimateTheMeansError) {
-  // Two independent noisy halves of a known image: the estimate from their difference matches the
-  // true relMSE of their mean (Monte Carlo agreement over 64k pixels, a few percent).
-  const int w = 256, h = 256;
-  const Image truth = constant(w, h, 2.0f);
-  Image a = truth, b = truth;
-  PCG32 rng(7);
-  for (Image* half : {&a, &b})
-    for (glm::vec4& pixel : half->pixels()) {
-      const float noise = 0.4f * (rng.uniformFloat() - 0.5f);
-      pixel = glm::vec4(glm::vec3(2.0f + noise), 1.0f);
-    }
-  const double estimate = halvesRelMseEstimate(a, b, {});
-  const double actual = relativeMeanSquaredError(truth, averageImages(a, b));
-  EXPECT_NEAR(estimate / actual, 1.0, 0.05);
-  EXPECT_EQ(halvesRelMseEstimate(truth, truth, {}), 0.0);
 }
 
 TEST(FrameScores, GeometryMaskFromDepth) {

@@ -83,13 +83,25 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   EXPECT_NE(std::find(texturedView.begin(), texturedView.end(), "--samples"), texturedView.end());
   const std::vector<std::function<void(ReportSettings&)>> traceChanges = {
       [](ReportSettings& s) { s.width = 64; }, [](ReportSettings& s) { s.passSpp = 32; },
-      [](ReportSettings& s) { s.referenceIntegrator = "direct"; }};
+      [](ReportSettings& s) { s.referenceIntegrator = "direct"; },
+      [](ReportSettings& s) { s.referenceLightSamples = 1; },
+      [](ReportSettings& s) { s.referenceLightSamples = 8; }};
   for (std::size_t i = 0; i < traceChanges.size(); ++i) {
     ReportSettings changed = fixture.settings;
     traceChanges[i](changed);
     EXPECT_NE(traceKey(changed), traceKey(fixture.settings)) << "trace change " << i;
   }
   EXPECT_NE(stageKey(traceCommand(fixture.settings, fixture.inputs, 4)), traceKey(fixture.settings));
+  // The references' light samples reach iblkit-trace as --camera-light-samples, 1 as no option.
+  const std::vector<std::string> trace = traceCommand(fixture.settings, fixture.inputs, 0).arguments;
+  const auto split = std::find(trace.begin(), trace.end(), "--camera-light-samples");
+  ASSERT_NE(split, trace.end());
+  ASSERT_NE(split + 1, trace.end());
+  EXPECT_EQ(*(split + 1), "4");
+  ReportSettings single = fixture.settings;
+  single.referenceLightSamples = 1;
+  const std::vector<std::string> plain = traceCommand(single, fixture.inputs, 0).arguments;
+  EXPECT_EQ(std::find(plain.begin(), plain.end(), "--camera-light-samples"), plain.end());
   // What iblkit-view alone reads does not touch the reference's key, nor the bake's.
   ReportSettings engineOnly = fixture.settings;
   engineOnly.engineSamples = 8;
