@@ -21,6 +21,19 @@ using test::sphereScene;
 bool covered(const RenderResult& r, int x, int y) { return r.mask.at(x, y).r == 1.0f; }
 bool background(const RenderResult& r, int x, int y) { return r.mask.at(x, y).r == 0.0f; }
 
+// Pixels (green channel) where two renders of one image differ by more than 4 sigma of their
+// estimated variances: a handful at most for unbiased estimators of the same image.
+int pixelsApartBeyond4Sigma(const RenderResult& first, const RenderResult& second) {
+  int outliers = 0;
+  for (int y = 0; y < first.beauty.height(); ++y)
+    for (int x = 0; x < first.beauty.width(); ++x) {
+      const float a = first.beauty.at(x, y).g, b = second.beauty.at(x, y).g;
+      const float sigma = std::sqrt(first.variance.at(x, y).g + second.variance.at(x, y).g);
+      outliers += std::abs(a - b) > 4.0f * sigma + 1e-4f;
+    }
+  return outliers;
+}
+
 // White furnace: a closed white Lambert object under a uniform environment of 1 reflects exactly
 // what it receives, so every pixel, object or background, is 1. At 256 spp with MIS (env and BRDF
 // sampling, power heuristic) every pixel the object covers is within 1% (0.90% at worst, 0.26%
@@ -135,14 +148,7 @@ TEST(Integrator, MedianCutAgreesWithMisUnderAPeakedMap) {
       renderWith(sphereScene(glossy), environment, integratorOf(IntegratorKind::Path, EnvSampling::MedianCut),
                  16, 256, 2);
   EXPECT_NEAR(medianCut.beauty.stats().meanLuminance / mis.beauty.stats().meanLuminance, 1.0, 0.005);
-  int outliers = 0;
-  for (int y = 0; y < 16; ++y)
-    for (int x = 0; x < 16; ++x) {
-      const float a = medianCut.beauty.at(x, y).g, b = mis.beauty.at(x, y).g;
-      const float sigma = std::sqrt(medianCut.variance.at(x, y).g + mis.variance.at(x, y).g);
-      outliers += std::abs(a - b) > 4.0f * sigma + 1e-4f;
-    }
-  EXPECT_LE(outliers, 2);
+  EXPECT_LE(pixelsApartBeyond4Sigma(medianCut, mis), 2);
 }
 
 // A glossy sphere on a Lambert ground under a map with a small bright spot: the ground sees the
@@ -209,14 +215,7 @@ TEST(Integrator, SplitLightSamplesConvergeToTheSameImage) {
     const RenderResult one = renderWith(groundedGlossyScene(), environment, splitting(1, kind), 16, 512, 1);
     const RenderResult four = renderWith(groundedGlossyScene(), environment, splitting(4, kind), 16, 512, 2);
     EXPECT_NEAR(four.beauty.stats().meanLuminance / one.beauty.stats().meanLuminance, 1.0, 0.005);
-    int outliers = 0;
-    for (int y = 0; y < 16; ++y)
-      for (int x = 0; x < 16; ++x) {
-        const float a = four.beauty.at(x, y).g, b = one.beauty.at(x, y).g;
-        const float sigma = std::sqrt(four.variance.at(x, y).g + one.variance.at(x, y).g);
-        outliers += std::abs(a - b) > 4.0f * sigma + 1e-4f;
-      }
-    EXPECT_LE(outliers, 2);
+    EXPECT_LE(pixelsApartBeyond4Sigma(four, one), 2);
   }
 }
 
