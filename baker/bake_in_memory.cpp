@@ -22,8 +22,17 @@ BakedScene bakeInMemory(const fs::path& sceneFile, const InMemoryBakeOptions& op
   VisibilitySettings settings;
   settings.rayCount = options.aoRays;
   useSceneMaterials(settings, bake.scene);  // AO rays pass through masked texels
+  std::function<void(std::size_t, std::size_t)> stagesProgress;
+  if (options.progress) {
+    settings.progress = [&](std::size_t done, std::size_t total) { options.progress("visibility", done, total); };
+    stagesProgress = [&](std::size_t done, std::size_t total) { options.progress("environment", done, total); };
+  }
   attachVisibilityAttributes(bake.scene.meshes, bakeVertexVisibility(bake.scene.meshes, settings));
-  bake.env = options.environmentStages ? *options.environmentStages : computeEnvironmentStages(*environment, options.stages);
+  if (options.environmentStages) {
+    bake.env = *options.environmentStages;
+  } else {
+    bake.env = computeEnvironmentStages(*environment, options.stages, stagesProgress);
+  }
   return bake;
 }
 

@@ -3,7 +3,9 @@
 // few visibility rays and the viewer's lighter environment stages, so it takes a second or two.
 // The program chooses this explicitly (programs/iblkit_view.cpp); the GL libraries only read a
 // BakedScene (bakefile/bake_folder.h).
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 
 #include "bakefile/bake_folder.h"
 #include "baker/environment_stages.h"
@@ -20,6 +22,10 @@ struct InMemoryBakeOptions {
   // Given: these stages light the scene as they are (no map is loaded; `environment` and `stages`
   // are unused): the viewer opening a model under the environment it already shows.
   const EnvironmentStages* environmentStages = nullptr;
+  // Called with the step under way ("visibility": vertices; "environment": stages) and how far it
+  // is (done of total), from worker threads and possibly concurrently: it must be thread-safe.
+  // Each step ends with done == total. May be empty.
+  std::function<void(const char* step, std::size_t done, std::size_t total)> progress;
 };
 
 // Loads `sceneFile` (.json, .gltf or .glb), bakes its vertex visibility and its environment's

@@ -17,8 +17,10 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -102,11 +104,19 @@ void requireExtension(const fs::path& file, std::initializer_list<const char*> a
 // the viewer's environment stages, under `environment` (the scene's map when it names none). A
 // bake folder given another map (--env) has that map's stages prefiltered here, at the override's
 // rotation and intensity, else the bake's.
-BakedScene loadViewScene(const fs::path& input, const EnvironmentOverride& environment, int aoRays) {
+// The in-memory bake's steps, reported to the viewer's panel (null: not shown).
+std::function<void(const char*, std::size_t, std::size_t)> progressTo(LoadProgress* progress) {
+  if (!progress) return {};
+  return [progress](const char* step, std::size_t done, std::size_t total) { progress->report(step, done, total); };
+}
+
+BakedScene loadViewScene(const fs::path& input, const EnvironmentOverride& environment, int aoRays,
+                         LoadProgress* progress = nullptr) {
   if (isSceneFile(input)) {
     InMemoryBakeOptions options;
     options.aoRays = aoRays;
     options.environment = environment;
+    options.progress = progressTo(progress);
     return bakeInMemory(input, options);
   }
   if (environment.intensity && environment.file.empty())
@@ -320,7 +330,8 @@ int runWindow(const Options& options) {
     viewer.environment = environment.file;
     environment.file.clear();
   }
-  viewer.loadScene = [aoRays = options.aoRays, environment](const fs::path& input, const EnvironmentStages* current) {
+  viewer.loadScene = [aoRays = options.aoRays, environment](const fs::path& input, const EnvironmentStages* current,
+                                                            LoadProgress* progress) {
     if (!current) return loadViewScene(input, environment, aoRays);
     // Opened from the window: a bare model under the environment shown, a scene under its own map.
     const std::string extension = lowerExtension(input);
@@ -328,9 +339,10 @@ int runWindow(const Options& options) {
       InMemoryBakeOptions options;
       options.aoRays = aoRays;
       options.environmentStages = current;
+      options.progress = progressTo(progress);
       return bakeInMemory(input, options);
     }
-    return loadViewScene(input, {}, aoRays);
+    return loadViewScene(input, {}, aoRays, progress);
   };
   viewer.prepareEnvironment = [](const EnvironmentMap& map) {
     return computeEnvironmentStages(map, kViewerEnvironmentStages);

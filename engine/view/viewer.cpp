@@ -51,7 +51,7 @@ enum class Drag { None, Orbit, Pan, Divider };
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options)
-      : options_(options), bake_(options.loadScene(options.input, nullptr)), autoExposure_(options.autoExposure) {
+      : options_(options), bake_(options.loadScene(options.input, nullptr, nullptr)), autoExposure_(options.autoExposure) {
     settings_.mode = parseShadingMode(options.mode);
     settings_.exposure = options.exposure;
     settings_.envRotationDegrees = envRotationFromBake(bake_.env, options.envRotation);
@@ -231,19 +231,18 @@ class Viewer {
     }
     openingFile_ = file;
     openingStart_ = Clock::now();
-    opening_ = std::async(std::launch::async, [loader = options_.loadScene, file, current = bake_.env]() {
-      return loader(file, &current);
-    });
+    openingProgress_ = std::make_shared<LoadProgress>();
+    opening_ = std::async(std::launch::async,
+                          [loader = options_.loadScene, file, current = bake_.env, progress = openingProgress_]() {
+                            return loader(file, &current, progress.get());
+                          });
     updateOpenStatus();
     report("opening " + file.string());
   }
 
   void updateOpenStatus() {
     const double seconds = std::chrono::duration<double>(Clock::now() - openingStart_).count();
-    std::ostringstream status;
-    status << "opening " << openingFile_.filename().string() << " (baking in memory when not a bake folder) "
-           << std::fixed << std::setprecision(1) << seconds << " s ...";
-    openStatus_ = status.str();
+    openStatus_ = openingProgress_->describe(openingFile_, seconds);
   }
 
   // Takes the scene a worker has loaded (`wait`: waits for it) and puts it in place of the shown
@@ -472,6 +471,7 @@ class Viewer {
   std::future<BakedScene> opening_;  // a file being opened
   fs::path openingFile_;
   Clock::time_point openingStart_;
+  std::shared_ptr<LoadProgress> openingProgress_;  // shared with the worker opening the file
   std::string openStatus_;
 };
 

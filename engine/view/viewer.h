@@ -11,6 +11,7 @@
 #include "bakefile/bake_folder.h"
 #include "engine/gl/renderer.h"
 #include "engine/view/environment_switcher.h"
+#include "engine/view/load_progress.h"
 #include "engine/view/reference_comparison.h"
 
 namespace iblkit {
@@ -19,9 +20,10 @@ namespace iblkit {
 // binds the baker library's bakeInMemory; the viewer itself depends on no baker). `current` is
 // null for the scene the viewer starts with; for a file opened from the window (dropped, or the
 // panel's "open") it is the environment shown, which a bare model (.gltf, .glb) is lit by. Runs
-// on a worker thread for an opened file.
-using SceneLoader =
-    std::function<BakedScene(const std::filesystem::path& folderOrScene, const EnvironmentStages* current)>;
+// on a worker thread for an opened file, and then reports how far it is to `progress` (null for
+// the scene the viewer starts with).
+using SceneLoader = std::function<BakedScene(const std::filesystem::path& folderOrScene,
+                                             const EnvironmentStages* current, LoadProgress* progress)>;
 
 struct ViewerOptions {
   std::filesystem::path input;  // bake folder, or a scene baked in memory
