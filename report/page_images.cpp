@@ -55,7 +55,7 @@ std::vector<std::uint8_t> zlibCompress(const std::vector<std::uint8_t>& bytes) {
   return compressed;
 }
 
-std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes) {
+std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes, std::size_t maxBytes) {
   z_stream stream{};
   if (inflateInit(&stream) != Z_OK) throw Error("zlib: cannot start inflate");
   std::vector<std::uint8_t> result;
@@ -68,6 +68,10 @@ std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes)
     stream.avail_out = sizeof(buffer);
     status = inflate(&stream, Z_NO_FLUSH);
     result.insert(result.end(), buffer, buffer + (sizeof(buffer) - stream.avail_out));
+    if (result.size() > maxBytes) {
+      inflateEnd(&stream);
+      throw Error("zlib: the data inflates to more than the " + std::to_string(maxBytes) + " bytes expected");
+    }
   }
   inflateEnd(&stream);
   if (status != Z_STREAM_END) throw Error("zlib: corrupt data");
@@ -118,10 +122,15 @@ CaseImagesScript readCaseImagesScript(const fs::path& file) {
   try {
     const nlohmann::ordered_json object = nlohmann::ordered_json::parse(script.substr(objectStart, objectEnd - objectStart + 1));
     const int width = object.at("width").get<int>(), height = object.at("height").get<int>();
-    if (width <= 0 || height <= 0) fail(file, "bad size " + std::to_string(width) + "x" + std::to_string(height));
+    constexpr int kMaxSide = 16384;  // the programs' largest image side
+    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
+      fail(file, "bad size " + std::to_string(width) + "x" + std::to_string(height) + " (each side 1.." +
+                     std::to_string(kMaxSide) + ")");
+    const std::size_t expected = std::size_t(width) * std::size_t(height) * 4;
     for (const auto& [name, data] : object.at("images").items()) {
-      const std::vector<std::uint8_t> rgbe = zlibDecompress(base64Decode(data.get<std::string>()));
-      if (rgbe.size() != std::size_t(width) * std::size_t(height) * 4)
+      // No more than the size asks for is inflated (a zlib bomb stops there).
+      const std::vector<std::uint8_t> rgbe = zlibDecompress(base64Decode(data.get<std::string>()), expected);
+      if (rgbe.size() != expected)
         fail(file, "image '" + name + "' has " + std::to_string(rgbe.size() / 4) + " pixels, not " +
                        std::to_string(width) + "x" + std::to_string(height));
       Image image(width, height);

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,7 +25,9 @@ glm::vec3 decodeRgbe(const std::uint8_t* rgbe);
 
 // zlib (RFC 1950) compression (the text is then core/base64.h).
 std::vector<std::uint8_t> zlibCompress(const std::vector<std::uint8_t>& bytes);
-std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes);
+// Throws Error("zlib: ...") for corrupt data, or data that inflates to more than `maxBytes`.
+std::vector<std::uint8_t> zlibDecompress(const std::vector<std::uint8_t>& bytes,
+                                         std::size_t maxBytes = std::numeric_limits<std::size_t>::max());
 
 // Writes `file` (atomically): the script above, `images` named as the page names them.
 void writeCaseImagesScript(const std::filesystem::path& file, const std::string& caseName,

@@ -104,6 +104,13 @@ TEST(PageImages, AScriptThatDoesNotReadIsNamed) {
   EXPECT_EQ(problem(dir / "short.js"), (dir / "short.js").string() + ": image 'reference' has 3 pixels, not 4x4");
   std::ofstream(dir / "corrupt.js") << "iblkitCaseImages(\"a-b\", {\"width\": 1, \"height\": 1, \"images\": {\"reference\": \"Zm9v\"}});\n";
   EXPECT_EQ(problem(dir / "corrupt.js"), (dir / "corrupt.js").string() + ": zlib: corrupt data");
+  // A bomb: 64 MiB of zeros in 64 KiB of text, for a 1 x 1 image; inflating stops at 4 bytes.
+  std::ofstream(dir / "bomb.js") << "iblkitCaseImages(\"a-b\", {\"width\": 1, \"height\": 1, \"images\": {\"reference\": \""
+                                 << base64(zlibCompress(std::vector<std::uint8_t>(std::size_t(64) << 20, 0))) << "\"}});\n";
+  EXPECT_EQ(problem(dir / "bomb.js"),
+            (dir / "bomb.js").string() + ": zlib: the data inflates to more than the 4 bytes expected");
+  std::ofstream(dir / "huge.js") << "iblkitCaseImages(\"a-b\", {\"width\": 100000, \"height\": 100000, \"images\": {}});\n";
+  EXPECT_EQ(problem(dir / "huge.js"), (dir / "huge.js").string() + ": bad size 100000x100000 (each side 1..16384)");
 }
 
 }  // namespace
