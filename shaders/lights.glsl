@@ -84,14 +84,31 @@ float uniformDiskIrradiance(float cosTheta, float angularRadius) {
 // and a mirror facing the disk head-on reflects F L cos^2(r) (D = 1 / (pi alpha'^2), V = 1/4,
 // E = pi sin^2(r) L, alpha' = tan(r) / 2), the exact answer F L to 0.3% at r = 3 degrees: the
 // factor 1/2 in alpha' is chosen for that. tests/gl/lights_test.cpp measures it against quadrature.
+//
+// Below the disk's own width (alpha < tan(r) / 2) the widened lobe's GGX tails, heavy (D falls
+// only as alpha'^2 / tan^4 of the half-vector angle), spread a bright sun over the whole lit half
+// of a near-mirror, up to its n.l = 0 terminator (mirror sphere under studio: FLIP 0.43 against
+// full's 0.027). There the disk is reflected as a disk: F(n.v) L times the part of the reflected
+// direction's neighbourhood inside it (an edge a fifth of the radius wide), blended towards the
+// widened lobe as alpha grows to tan(r) / 2. Above that, as before.
+vec3 mirroredDiskRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, float angularRadius) {
+  float NoV = dot(n, v);
+  vec3 r = reflect(-v, n);
+  float inside = smoothstep(cos(1.1 * angularRadius), cos(0.9 * angularRadius), dot(r, l));
+  return splitSumKaris(lobes.f0, lobes.f90, schlickWeights(NoV)) * radiance * inside;
+}
+
 vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, float angularRadius, vec2 cosSin) {
+  if (dot(n, v) <= 0.0) return vec3(0.0);
   float irradiance = uniformDiskIrradiance(dot(n, l), angularRadius);
-  if (irradiance <= 0.0 || dot(n, v) <= 0.0) return vec3(0.0);
-  vec3 result = brdfDiffuse(lobes, v, l);
+  vec3 result = irradiance > 0.0 ? brdfDiffuse(lobes, v, l) * radiance * irradiance : vec3(0.0);
   if (maxComponent(lobes.f90) > 0.0) {
     float spread = 0.5 * cosSin.y / max(cosSin.x, 1e-4);
     float widened = min(sqrt(lobes.alpha * lobes.alpha + spread * spread), 1.0);
-    result += brdfSpecular(lobes, n, v, l, widened);
+    vec3 lobe = irradiance > 0.0 ? brdfSpecular(lobes, n, v, l, widened) * radiance * irradiance : vec3(0.0);
+    float towardsLobe = clamp(lobes.alpha / max(spread, 1e-6), 0.0, 1.0);
+    result += towardsLobe >= 1.0 ? lobe
+                                 : mix(mirroredDiskRadiance(lobes, n, v, l, radiance, angularRadius), lobe, towardsLobe);
   }
-  return result * radiance * irradiance;
+  return result;
 }
