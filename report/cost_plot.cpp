@@ -7,6 +7,7 @@
 #include "report/html_text.h"
 #include "report/label_layout.h"
 #include "report/report_claims.h"
+#include "report/svg_plot.h"
 
 namespace iblkit {
 
@@ -66,6 +67,7 @@ std::string costSvg(const std::vector<CostPoint>& points) {
     return "<p class=small>Cost against error: fewer than two modes have both a frame time and a score "
            "(frame times come from <code>--bench</code>).</p>\n";
   constexpr double kWidth = 460, kHeight = 280, kLeft = 60, kRight = 16, kTop = 16, kBottom = 44, kFont = 11;
+  constexpr SvgPlotFrame kFrame{kWidth, kHeight, kLeft, kRight, kTop, kBottom, kFont};
   double fastest = points[shown[0]].milliseconds, slowest = fastest, worst = 0.0;
   for (const std::size_t i : shown) {
     fastest = std::min(fastest, points[i].milliseconds);
@@ -83,22 +85,14 @@ std::string costSvg(const std::vector<CostPoint>& points) {
   low -= pad;
   high += pad;
   const double top = worst > 0.0 ? worst * 1.15 : 1.0;
-  const double plotWidth = kWidth - kLeft - kRight, plotHeight = kHeight - kTop - kBottom;
+  const double plotWidth = kFrame.plotWidth(), plotHeight = kFrame.plotHeight();
   const auto x = [&](double ms) { return kLeft + plotWidth * (std::log10(ms) - low) / (high - low); };
-  const auto y = [&](double flip) { return kTop + plotHeight * (1.0 - flip / top); };
+  const auto y = [&](double flip) { return kFrame.y(flip, top); };
 
   std::ostringstream svg;
   svg.setf(std::ios::fixed);
   svg.precision(1);
-  svg << "<svg class=cost xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-      << "\" font-family=\"sans-serif\" font-size=\"" << kFont << "\">\n";
-  svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotWidth << "\" height=\"" << plotHeight
-      << "\" fill=\"none\" stroke=\"#999\"/>\n";
-  for (int tick = 0; tick <= 4; ++tick) {
-    const double value = top * tick / 4.0;
-    svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << y(value) + 4 << "\" text-anchor=\"end\">" << number(value, 3)
-        << "</text>\n";
-  }
+  beginSvgPlot(svg, "cost", kFrame, top);
   // Ticks at 1, 2 and 5 times the powers of ten inside the axis.
   for (int power = int(std::floor(low)); power <= int(std::ceil(high)); ++power)
     for (const double factor : {1.0, 2.0, 5.0}) {

@@ -15,6 +15,7 @@
 #include "report/cost_plot.h"
 #include "report/html_text.h"
 #include "report/label_layout.h"
+#include "report/svg_plot.h"
 
 namespace iblkit {
 
@@ -241,6 +242,7 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
 std::string ladderSvg(const std::vector<CaseResult>& cases, const std::string& scene,
                       const std::vector<std::string>& modes) {
   constexpr double kWidth = 560, kHeight = 300, kLeft = 60, kRight = 110, kTop = 16, kBottom = 84, kFont = 11;
+  constexpr SvgPlotFrame kFrame{kWidth, kHeight, kLeft, kRight, kTop, kBottom, kFont};
   double top = 0.0;
   std::vector<const CaseResult*> sceneCases;
   for (const CaseResult& result : cases) {
@@ -250,22 +252,14 @@ std::string ladderSvg(const std::vector<CaseResult>& cases, const std::string& s
       if (modeResult.failure.empty()) top = std::max(top, modeResult.scores.meanFlip);
   }
   top = top > 0.0 ? top * 1.1 : 1.0;
-  const double plotWidth = kWidth - kLeft - kRight, plotHeight = kHeight - kTop - kBottom;
+  const double plotWidth = kFrame.plotWidth(), plotHeight = kFrame.plotHeight();
   auto x = [&](std::size_t i) { return kLeft + (modes.size() > 1 ? plotWidth * double(i) / double(modes.size() - 1) : 0.0); };
-  auto y = [&](double value) { return kTop + plotHeight * (1.0 - value / top); };
+  auto y = [&](double value) { return kFrame.y(value, top); };
 
   std::ostringstream svg;
   svg.setf(std::ios::fixed);
   svg.precision(1);
-  svg << "<svg class=ladder xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-      << "\" font-family=\"sans-serif\" font-size=\"" << kFont << "\">\n";
-  svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotWidth << "\" height=\"" << plotHeight
-      << "\" fill=\"none\" stroke=\"#999\"/>\n";
-  for (int tick = 0; tick <= 4; ++tick) {
-    const double value = top * tick / 4.0;
-    svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << y(value) + 4 << "\" text-anchor=\"end\">"
-        << fixed(value, 3) << "</text>\n";
-  }
+  beginSvgPlot(svg, "ladder", kFrame, top);
   svg << "<text x=\"14\" y=\"" << kTop + plotHeight / 2 << "\" transform=\"rotate(-90 14 " << kTop + plotHeight / 2
       << ")\" text-anchor=\"middle\">mean FLIP</text>\n";
   // The modes' names turned by 40 degrees: neighbours at least plotWidth / 9 apart then clear
