@@ -9,6 +9,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
+#include <sstream>
 
 #include "cli/program.h"
 #include "core/error.h"
@@ -19,6 +21,9 @@
 #include "report/map_kind.h"
 #include "report/report_claims.h"
 #include "report/report_writer.h"
+#include "report/pending_stages.h"
+#include "report/slurm_scheduler.h"
+#include "report/stage_plan.h"
 
 namespace iblkit {
 namespace {
@@ -37,6 +42,20 @@ struct Options {
   std::string environmentFolder = "assets/hdri", output = "out/demo", cacheFolder, binFolder;
   ReportSettings settings;
   bool strict = false, force = false;
+  std::string scheduler = "local";  // or "slurm" (slurm_scheduler.h)
+  SlurmOptions slurm;
+  std::string sbatchArguments, viewSbatchArguments;  // split at white space into slurm's
+  // The hidden task mode a Slurm array runs: --stage-task PLAN --task-index I (stage_plan.h).
+  std::string stageTask;
+  int taskIndex = -1;
+};
+
+// One case of the report: a scene under a map, and its result once every stage it needs exists.
+struct ReportCase {
+  std::string scene;
+  fs::path environment;
+  std::optional<CaseResult> result;
+  int stages = 0;  // the stages its finished pass found (cached or run)
 };
 
 // The report folder's kind: the marker the report writes first (so that a rerun after an
@@ -56,6 +75,41 @@ fs::path programFolder() {
   return error ? fs::path("build/bin") : self.parent_path();
 }
 
+std::vector<std::string> splitAtSpaces(const std::string& text) {
+  std::vector<std::string> words;
+  std::istringstream stream(text);
+  for (std::string word; stream >> word;) words.push_back(word);
+  return words;
+}
+
+// Runs each case that is not finished yet, in order, through `cache`. When the cache collects
+// missing stages, a case that needs one stays unfinished and its stages are in `pending`.
+void runCases(const ReportSettings& settings, const StageCache& cache, PendingStages* pending,
+              std::vector<ReportCase>& cases, std::map<fs::path, MapConcentration>& concentrations) {
+  for (ReportCase& reportCase : cases) {
+    if (reportCase.result) continue;
+    const std::string caseName =
+        fs::path(reportCase.scene).stem().string() + "-" + reportCase.environment.stem().string();
+    if (pending) pending->setCase(caseName);
+    const int hits = cache.hits(), misses = cache.misses();
+    CaseResult result = runCase(settings, cache, reportCase.scene, reportCase.environment);
+    if (result.pending) continue;
+    reportCase.stages = cache.hits() - hits + cache.misses() - misses;
+    const fs::path& environment = reportCase.environment;
+    if (!concentrations.contains(environment))
+      concentrations[environment] = mapConcentration(loadEnvironmentMap(environment));
+    result.concentration = concentrations[environment];
+    result.mapKind = classifyMap(result.concentration);
+    const bool cached = pending ? !pending->hasCase(caseName) : cache.misses() == misses;
+    std::fprintf(
+        stderr, "iblkit-report: %s under %s: reference %d spp (relMSE %.2g, halves' FLIP %.3f, %s)%s\n",
+        result.scene.c_str(), result.environment.c_str(), result.referenceSpp, result.referenceRelMse,
+        result.referenceHalvesFlip, result.referenceConverged ? "converged" : "not converged",
+        cached ? ", cached" : "");
+    reportCase.result = std::move(result);
+  }
+}
+
 // Runs every case, writes the report and prints the claims.
 int report(Options& options) {
   ReportSettings& settings = options.settings;
@@ -73,35 +127,50 @@ int report(Options& options) {
   if (error) fail(settings.outDir, "cannot create folder: " + error.message());
   writeAtomically(settings.outDir / kReportFolder.markers.front(),
                   [](const fs::path& temporary) { std::ofstream(temporary) << "iblkit-report\n"; });
-  const StageCache cache(options.cacheFolder.empty() ? settings.outDir / "cache"
+  StageCache cache(options.cacheFolder.empty() ? settings.outDir / "cache"
                                                      : fs::path(options.cacheFolder));
 
-  ReportSummary summary;
-  summary.modes = settings.modes;
-  std::map<fs::path, MapConcentration> concentrations;  // each map read once, for its kind
+  std::vector<ReportCase> cases;
   for (const std::string& scene : options.scenes) {
     if (!fs::is_regular_file(scene)) fail(scene, "scene file does not exist");
     for (const std::string& name : options.environments) {
       const fs::path environment = environmentFile(options, name);
       if (!fs::is_regular_file(environment)) fail(environment, "environment map does not exist");
-      const int before = cache.misses();
-      CaseResult result = runCase(settings, cache, scene, environment);
-      if (!concentrations.contains(environment))
-        concentrations[environment] = mapConcentration(loadEnvironmentMap(environment));
-      result.concentration = concentrations[environment];
-      result.mapKind = classifyMap(result.concentration);
-      std::fprintf(
-          stderr, "iblkit-report: %s under %s: reference %d spp (relMSE %.2g, halves' FLIP %.3f, %s)%s\n",
-          result.scene.c_str(), result.environment.c_str(), result.referenceSpp, result.referenceRelMse,
-          result.referenceHalvesFlip, result.referenceConverged ? "converged" : "not converged",
-          cache.misses() == before ? ", cached" : "");
-      summary.cases.push_back(std::move(result));
+      cases.push_back({scene, environment, std::nullopt, 0});
     }
   }
+  std::map<fs::path, MapConcentration> concentrations;  // each map read once, for its kind
+  ReportSummary summary;
+  summary.modes = settings.modes;
+  if (options.scheduler == "slurm") {
+    // Waves: a pass collects what is missing, Slurm runs it, and the next pass goes on from there
+    // with the same code as a local run, until a pass finds every stage (docs/cluster.md).
+    options.slurm.reportProgram = programFolder() / kProgram;
+    options.slurm.sbatchArguments = splitAtSpaces(options.sbatchArguments);
+    options.slurm.viewSbatchArguments = splitAtSpaces(options.viewSbatchArguments);
+    SlurmScheduler scheduler(options.slurm, cache.root());
+    for (;;) {
+      PendingStages pending;
+      cache.collectInto(&pending);
+      runCases(settings, cache, &pending, cases, concentrations);
+      cache.collectInto(nullptr);
+      if (pending.empty()) break;
+      scheduler.runWave(pending);
+    }
+    int stages = 0;
+    for (const ReportCase& reportCase : cases) stages += reportCase.stages;
+    summary.runStages = scheduler.stagesRun();
+    summary.cachedStages = stages - summary.runStages;
+    std::fprintf(stderr, "iblkit-report: slurm: %d stages run in %d waves (%d tasks submitted)\n",
+                 scheduler.stagesRun(), scheduler.waves(), scheduler.tasksSubmitted());
+  } else {
+    runCases(settings, cache, nullptr, cases, concentrations);
+    summary.cachedStages = cache.hits();
+    summary.runStages = cache.misses();
+  }
+  for (ReportCase& reportCase : cases) summary.cases.push_back(std::move(*reportCase.result));
   summary.claims = evaluateClaims(summary.cases);
   summary.settings = settings;
-  summary.cachedStages = cache.hits();
-  summary.runStages = cache.misses();
   summary.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeReportJson(settings.outDir / "report.json", summary);
   writeReportHtml(settings.outDir / "report.html", summary);
@@ -172,5 +241,25 @@ int main(int argc, char** argv) {
                  "the reference's iblkit-trace integrator: path (default) or direct (no interreflection)")
       ->check(nameChoice(std::vector<std::string>{"path", "direct"}, "integrator"));
   app.add_flag("--strict", options.strict, "exit with status 3 when a claim does not hold");
-  return runProgram(app, argc, argv, [&] { return report(options); });
+  app.add_option("--scheduler", options.scheduler,
+                 "where missing stages run: local (here, the default) or slurm (job arrays; docs/cluster.md)")
+      ->check(nameChoice(std::vector<std::string>{"local", "slurm"}, "scheduler"));
+  app.add_option("--partition", options.slurm.partition, "with --scheduler slurm: sbatch --partition");
+  app.add_option("--sbatch-args", options.sbatchArguments,
+                 "with --scheduler slurm: more sbatch arguments for every array, one string (--sbatch-args='--time=30')");
+  app.add_option("--view-sbatch-args", options.viewSbatchArguments,
+                 "with --scheduler slurm: more sbatch arguments for the engine frames (--view-sbatch-args='--gres=gpu:1')");
+  // A Slurm task's hidden mode (stage_plan.h).
+  app.add_option("--stage-task", options.stageTask)->group("");
+  app.add_option("--task-index", options.taskIndex)->group("");
+  return runProgram(app, argc, argv, [&]() -> int {
+    if (!options.stageTask.empty()) {
+      runStageTask(options.stageTask, options.taskIndex);
+      return kExitSuccess;
+    }
+    if (options.scheduler != "slurm" &&
+        (!options.slurm.partition.empty() || !options.sbatchArguments.empty() || !options.viewSbatchArguments.empty()))
+      throw UsageError("--partition, --sbatch-args and --view-sbatch-args are for --scheduler slurm");
+    return report(options);
+  });
 }

@@ -24,6 +24,12 @@ std::vector<Image> renderEngineFrames(const ReportSettings& settings, const Stag
       const StageRun rendered =
           runStage(cache, "view-" + caseName + "-" + mode, viewCommand(settings, bake, mode));
       result.commands.push_back(rendered.command);
+      if (rendered.pending) {
+        result.pending = true;
+        frames.emplace_back();
+        result.modes.push_back(modeResult);
+        continue;
+      }
       std::ifstream log(rendered.folder / "log.txt");
       modeResult.frameMilliseconds = parseMedianMilliseconds(
           std::string(std::istreambuf_iterator<char>(log), std::istreambuf_iterator<char>()));

@@ -32,6 +32,11 @@ void tracePass(const ReportSettings& settings, const StageCache& cache, const st
                CaseResult& result) {
   const StageRun pass =
       runStage(cache, "trace-" + caseName + "-" + std::to_string(seed), traceCommand(settings, inputs, seed));
+  if (pass.pending) {
+    result.pending = true;
+    passes.emplace_back();
+    return;
+  }
   if (seed == 0) {
     result.commands.push_back(pass.command + "   (one pass of " + std::to_string(settings.maxPasses) +
                               " at most)");
@@ -86,6 +91,8 @@ Reference traceReference(const ReportSettings& settings, const StageCache& cache
   for (int count = settings.minPasses;;) {
     while (int(passes.size()) < count)
       tracePass(settings, cache, caseName, inputs, int(passes.size()), passes, reference, result);
+    // Collected passes or frames (StageCache::collectInto): the next wave is decided once they exist.
+    if (result.pending) return reference;
     std::vector<Image> halfA, halfB;
     for (std::size_t i = 0; i < passes.size(); ++i) (i % 2 == 0 ? halfA : halfB).push_back(passes[i]);
     a = meanOf(halfA);

@@ -33,7 +33,10 @@ int referencePassesFor(const ReportSettings& settings, int passes, double relMse
 // relMSE estimate (core/halves_noise.h) is at most referenceTargetRelMse of the best of `frames`,
 // or settings.maxPasses are traced. Sets result's reference fields (spp, relMSE, convergence, the
 // halves' FLIP, trace seconds, scored pixels, FLIP bracket), adds pass 0's command, and marks the
-// modes whose frame has the wrong size as failed.
+// modes whose frame has the wrong size as failed. When a pass or a frame is not in the cache and the
+// cache collects missing stages (StageCache::collectInto), it stops after collecting the passes
+// of the current wave (the first minPasses, or the aimed count), with result.pending set: the
+// same waves as a local run, each decided once the previous one exists.
 Reference traceReference(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
                          const CaseInputs& inputs, const std::vector<Image>& frames, CaseResult& result);
 

@@ -48,6 +48,8 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
   result.commands.push_back(baked.command);
   const std::vector<Image> frames = renderEngineFrames(caseSettings, cache, caseName, baked.folder, result);
   const Reference reference = traceReference(caseSettings, cache, caseName, inputs, frames, result);
+  result.pending = result.pending || baked.pending;
+  if (result.pending) return result;  // a scheduler runs the missing stages first
   const std::vector<FlipErrorMap> flipMaps = scoreModes(reference, frames, result);
   writeCasePictures(caseSettings.outDir, caseName, reference, frames, flipMaps, result);
   const Sh9Truncation truncation =

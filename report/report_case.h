@@ -55,8 +55,13 @@ struct CaseResult {
   std::vector<std::string> commands;  // the command lines of the stages, for the report
   // The requested modes the case does not score, and why (case_modes.h: modeNotApplicable).
   std::vector<std::pair<std::string, std::string>> notApplicable;
+  // Some stage this case needs is not in the cache yet, and the cache collects missing stages
+  // rather than running them (StageCache::collectInto): the case is not scored, and only its
+  // names, modes and commands are set. A scheduler runs the stages and the case is run again.
+  bool pending = false;
 };
 
+// Runs the case's stages (or collects the missing ones, then `pending` says so) and scores it.
 CaseResult runCase(const ReportSettings& settings, const StageCache& cache,
                    const std::filesystem::path& sceneFile, const std::filesystem::path& environmentFile);
 

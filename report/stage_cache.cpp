@@ -15,7 +15,7 @@ StageCache::StageCache(fs::path root) : root_(std::move(root)) {
 
 fs::path StageCache::stage(const std::string& name, const std::string& key,
                            const std::function<void(const fs::path&)>& produce, bool* hit) const {
-  const fs::path folder = root_ / (name + "-" + key);
+  const fs::path folder = this->folder(name, key);
   std::error_code error;
   if (fs::is_directory(folder, error)) {
     if (hit) *hit = true;

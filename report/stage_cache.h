@@ -10,6 +10,8 @@
 
 namespace iblkit {
 
+class PendingStages;
+
 class StageCache {
  public:
   explicit StageCache(std::filesystem::path root);
@@ -22,6 +24,16 @@ class StageCache {
                               const std::function<void(const std::filesystem::path&)>& produce,
                               bool* hit = nullptr) const;
 
+  // The folder stage `name` with `key` has in the cache, whether or not it exists yet.
+  std::filesystem::path folder(const std::string& name, const std::string& key) const {
+    return root_ / (name + "-" + key);
+  }
+
+  // From now on runStage (stage_run.h) adds each stage it does not find to `pending` instead of
+  // running it (nullptr: runs them again), for a scheduler to run elsewhere (pending_stages.h).
+  void collectInto(PendingStages* pending) { pending_ = pending; }
+  PendingStages* collecting() const { return pending_; }
+
   const std::filesystem::path& root() const { return root_; }
   int hits() const { return hits_; }      // stages found in the cache so far
   int misses() const { return misses_; }  // stages produced so far
@@ -29,6 +41,7 @@ class StageCache {
  private:
   std::filesystem::path root_;
   mutable int hits_ = 0, misses_ = 0;
+  PendingStages* pending_ = nullptr;
 };
 
 }  // namespace iblkit

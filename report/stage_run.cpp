@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "report/pending_stages.h"
 #include "report/program_runner.h"
 
 namespace iblkit {
@@ -14,7 +15,21 @@ using nlohmann::json;
 
 StageRun runStage(const StageCache& cache, const std::string& name, const StageCommand& command) {
   StageRun run;
-  run.folder = cache.stage(name, stageKey(command), [&](const fs::path& folder) {
+  const std::string key = stageKey(command);
+  if (PendingStages* pending = cache.collecting()) {
+    std::error_code error;
+    if (!fs::is_directory(cache.folder(name, key), error)) {
+      PendingStage stage{name, key, {}, command, {}};
+      for (const std::string& folder : stageFoldersRead(command))
+        if (!fs::is_directory(cache.root() / folder, error)) stage.needs.push_back(folder);
+      pending->add(std::move(stage));
+      run.folder = cache.folder(name, key);
+      run.command = commandLine(stageArgv(command, cache.root(), run.folder));
+      run.pending = true;
+      return run;
+    }
+  }
+  run.folder = cache.stage(name, key, [&](const fs::path& folder) {
     const std::vector<std::string> argv = stageArgv(command, cache.root(), folder);
     const auto start = std::chrono::steady_clock::now();
     runProgram(argv, folder / "log.txt");
