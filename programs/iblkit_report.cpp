@@ -10,6 +10,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "cli/program.h"
@@ -84,8 +85,10 @@ std::vector<std::string> splitAtSpaces(const std::string& text) {
 
 // Runs each case that is not finished yet, in order, through `cache`. When the cache collects
 // missing stages, a case that needs one stays unfinished and its stages are in `pending`.
+// `submitted` names the cases that had stages run by a scheduler in earlier passes (not cached).
 void runCases(const ReportSettings& settings, const StageCache& cache, PendingStages* pending,
-              std::vector<ReportCase>& cases, std::map<fs::path, MapConcentration>& concentrations) {
+              const std::set<std::string>& submitted, std::vector<ReportCase>& cases,
+              std::map<fs::path, MapConcentration>& concentrations) {
   for (ReportCase& reportCase : cases) {
     if (reportCase.result) continue;
     const std::string caseName =
@@ -100,7 +103,7 @@ void runCases(const ReportSettings& settings, const StageCache& cache, PendingSt
       concentrations[environment] = mapConcentration(loadEnvironmentMap(environment));
     result.concentration = concentrations[environment];
     result.mapKind = classifyMap(result.concentration);
-    const bool cached = pending ? !pending->hasCase(caseName) : cache.misses() == misses;
+    const bool cached = pending ? !submitted.contains(caseName) : cache.misses() == misses;
     std::fprintf(
         stderr, "iblkit-report: %s under %s: reference %d spp (relMSE %.2g, halves' FLIP %.3f, %s)%s\n",
         result.scene.c_str(), result.environment.c_str(), result.referenceSpp, result.referenceRelMse,
@@ -149,12 +152,14 @@ int report(Options& options) {
     options.slurm.sbatchArguments = splitAtSpaces(options.sbatchArguments);
     options.slurm.viewSbatchArguments = splitAtSpaces(options.viewSbatchArguments);
     SlurmScheduler scheduler(options.slurm, cache.root());
+    std::set<std::string> submitted;
     for (;;) {
       PendingStages pending;
       cache.collectInto(&pending);
-      runCases(settings, cache, &pending, cases, concentrations);
+      runCases(settings, cache, &pending, submitted, cases, concentrations);
       cache.collectInto(nullptr);
       if (pending.empty()) break;
+      for (const PendingStage& stage : pending.stages()) submitted.insert(stage.caseName);
       scheduler.runWave(pending);
     }
     int stages = 0;
@@ -164,7 +169,7 @@ int report(Options& options) {
     std::fprintf(stderr, "iblkit-report: slurm: %d stages run in %d waves (%d tasks submitted)\n",
                  scheduler.stagesRun(), scheduler.waves(), scheduler.tasksSubmitted());
   } else {
-    runCases(settings, cache, nullptr, cases, concentrations);
+    runCases(settings, cache, nullptr, {}, cases, concentrations);
     summary.cachedStages = cache.hits();
     summary.runStages = cache.misses();
   }

@@ -4,7 +4,6 @@ namespace iblkit {
 
 void PendingStages::add(PendingStage stage) {
   stage.caseName = case_;
-  cases_.insert(case_);
   if (!folders_.insert(stage.folderName()).second) return;
   stages_.push_back(std::move(stage));
 }

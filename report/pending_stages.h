@@ -30,13 +30,11 @@ class PendingStages {
   void add(PendingStage stage);
   const std::vector<PendingStage>& stages() const { return stages_; }
   bool empty() const { return stages_.empty(); }
-  // Whether the named case collected a stage.
-  bool hasCase(const std::string& caseName) const { return cases_.contains(caseName); }
 
  private:
   std::string case_;
   std::vector<PendingStage> stages_;
-  std::set<std::string> folders_, cases_;
+  std::set<std::string> folders_;
 };
 
 // The folders (NAME-KEY) of the other stages that `command` reads: its arguments that start with
