@@ -23,25 +23,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/one_node_slurm.sh"
 
 # --- the cases: a glossy sphere on a ground under two generated maps, one with a sun ---------------
 mkdir -p "$D/scene"
-python3 - "$D/scene" <<'PY'
-import json, math, os, sys
-folder = sys.argv[1]
-def rgbe(r, g, b):
-    m = max(r, g, b)
-    mant, e = math.frexp(m)
-    s = mant * 256.0 / m
-    return bytes([int(r * s), int(g * s), int(b * s), e + 128])
-w, h = 32, 16
-for name, sun in (("sun", 400.0), ("soft", 4.0)):
-    pixels = b"".join(rgbe(sun, 0.95 * sun, 0.75 * sun) if (x, y) == (8, 3) else
-                      rgbe(0.6, 0.8, 1.0) if y < h // 2 else rgbe(0.2, 0.2, 0.25)
-                      for y in range(h) for x in range(w))
-    with open(os.path.join(folder, name + ".hdr"), "wb") as f:
-        f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (h, w) + pixels)
-json.dump({"models": [{"shape": "sphere", "material": {"baseColor": [0.8, 0.5, 0.3], "metallic": 0.0, "roughness": 0.4}}],
-           "ground": {}, "camera": {"position": [0, 0.6, 3.2], "target": [0, 0, 0], "yfov": 45}},
-          open(os.path.join(folder, "scene.json"), "w"))
-PY
+python3 "$SOURCE/tests/programs/glossy_sphere_scene.py" "$D/scene" sun=400 soft=4
 # Small, with reference waves: 2 passes first, then up to 6 (neither map converges at 1e-3).
 report() {  # OUT CACHE BIN [options]
   local out=$1 cache=$2 bin=$3

@@ -22,24 +22,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/one_node_slurm.sh"
 
 # --- the scene: a glossy sphere on a ground under a generated map with a hot spot -------------------
 mkdir -p "$D/scene"
-python3 - "$D/scene" <<'PY'
-import json, math, os, sys
-folder = sys.argv[1]
-def rgbe(r, g, b):
-    m = max(r, g, b)
-    mant, e = math.frexp(m)
-    s = mant * 256.0 / m
-    return bytes([int(r * s), int(g * s), int(b * s), e + 128])
-w, h = 32, 16
-pixels = b"".join(rgbe(400, 380, 300) if (x, y) == (8, 3) else rgbe(0.6, 0.8, 1.0) if y < h // 2 else rgbe(0.2, 0.2, 0.25)
-                  for y in range(h) for x in range(w))
-with open(os.path.join(folder, "sky.hdr"), "wb") as f:
-    f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (h, w) + pixels)
-json.dump({"models": [{"shape": "sphere", "material": {"baseColor": [0.8, 0.5, 0.3], "metallic": 0.0, "roughness": 0.4}}],
-           "ground": {}, "environment": {"file": "sky.hdr"},
-           "camera": {"position": [0, 0.6, 3.2], "target": [0, 0, 0], "yfov": 45}},
-          open(os.path.join(folder, "scene.json"), "w"))
-PY
+python3 "$SOURCE/tests/programs/glossy_sphere_scene.py" "$D/scene" sky=400
 TRACE_ARGS=("$D/scene/scene.json" --spp 12 --width 64 --height 36 --threads 1)
 PASSES=4
 "$BIN/iblkit-trace" "${TRACE_ARGS[@]}" -o "$D/single.exr" >/dev/null
