@@ -6,8 +6,8 @@
 namespace iblkit {
 
 void addSceneArguments(CLI::App& app, SceneArguments& arguments, const std::string& name,
-                       const std::string& description) {
-  app.add_option(name, arguments.input, description)->required();
+                       const std::string& description, bool required) {
+  app.add_option(name, arguments.input, description)->required(required);
   addEnvironmentOptions(app, arguments.environment);
 }
 

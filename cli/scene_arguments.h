@@ -18,10 +18,11 @@ struct SceneArguments {
   EnvironmentOverride environment;  // --env, --env-rotation, --env-intensity
 };
 
-// Adds the positional `name` (required; its help is `description`) and the environment options
+// Adds the positional `name` (its help is `description`; required unless `required` is false,
+// for a program that can take the scene from elsewhere) and the environment options
 // (addEnvironmentOptions, cli/program.h) to `app`.
 void addSceneArguments(CLI::App& app, SceneArguments& arguments, const std::string& name,
-                       const std::string& description);
+                       const std::string& description, bool required = true);
 
 // checkEnvironmentOverride (a UsageError for a rotation or intensity no map can take), then a
 // missing --env file as Error("MAP: cannot open: No such file or directory"), the loader's words: both before a scene is read or baked.

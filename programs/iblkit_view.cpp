@@ -11,6 +11,7 @@
 // Without --headless the window viewer runs (engine/view/viewer.h, docs/viewer.md):
 //
 //   iblkit-view OUTDIR|SCENE [--env ENV] [--env-dir DIR] [--reference REF.exr | --reference REPORT [--case CASE]]
+//   iblkit-view --reference REPORT [--case CASE]   (the case's own scene under its map)
 //               [--show IMAGE] [--compare VIEW] [--frames N] [--screenshot FILE] [--no-panel] [--width W] [--height H]
 //               [--mode M] [--exposure E] ...
 
@@ -276,6 +277,15 @@ fs::path defaultEnvironmentFolder() {
   return (assets && *assets ? fs::path(assets) : fs::path("assets")) / "hdri";
 }
 
+// A report case's images for the comparison, and their source's name.
+std::vector<ComparisonImage> caseImages(ReportCase& report, std::string* source) {
+  *source = report.reportJson.string() + ", case " + report.caseName;
+  std::vector<ComparisonImage> images;
+  for (ReportCaseImage& image : report.images)
+    images.push_back({std::move(image.name), std::move(image.detail), std::move(image.image)});
+  return images;
+}
+
 // --reference: one image (OpenEXR), or a report (its output folder or report.json) whose case
 // --case names: the case's reference and each mode's frame (report/report_case_images.h).
 std::vector<ComparisonImage> readReferences(const Options& options, std::string* source) {
@@ -290,14 +300,26 @@ std::vector<ComparisonImage> readReferences(const Options& options, std::string*
     return {{"reference", "", readExr(options.reference)}};
   }
   ReportCase report = readReportCase(options.reference, options.caseName);
-  *source = report.reportJson.string() + ", case " + report.caseName;
-  std::vector<ComparisonImage> images;
-  for (ReportCaseImage& image : report.images)
-    images.push_back({std::move(image.name), std::move(image.detail), std::move(image.image)});
-  return images;
+  return caseImages(report, source);
 }
 
-int runWindow(const Options& options) {
+int runWindow(Options options) {
+  // Without a MODEL, a report case opens its own scene under its own map (unless --env names one).
+  std::vector<ComparisonImage> references;
+  std::string referenceSource;
+  if (options.scene.input.empty()) {
+    ReportCase report = readReportCase(options.reference, options.caseName);
+    if (report.sceneFile.empty()) fail(report.reportJson, "case '" + report.caseName + "' names no scene file");
+    if (!fs::is_regular_file(report.sceneFile))
+      fail(report.sceneFile, "the scene of case '" + report.caseName + "' in " + report.reportJson.string() +
+                                 " does not exist (relative paths are from the folder the report ran in)");
+    options.scene.input = report.sceneFile;
+    if (options.scene.environment.file.empty()) options.scene.environment.file = report.environmentFile;
+    checkSceneArguments(options.scene);
+    references = caseImages(report, &referenceSource);
+  } else {
+    references = readReferences(options, &referenceSource);
+  }
   if (!options.output.empty())
     failUsage("-o", "only with --headless (the window saves screenshots: --screenshot)");
   if (options.bench > 0)
@@ -348,7 +370,8 @@ int runWindow(const Options& options) {
     return computeEnvironmentStages(map, kViewerEnvironmentStages);
   };
   viewer.envDir = options.envDir.empty() ? defaultEnvironmentFolder() : options.envDir;
-  viewer.references = readReferences(options, &viewer.referenceSource);
+  viewer.references = std::move(references);
+  viewer.referenceSource = referenceSource;
   viewer.show = options.show;
   viewer.compare = options.compare;
   viewer.frames = options.frames;
@@ -374,7 +397,9 @@ int main(int argc, char** argv) {
   Options options;
   CLI::App app{"Renders a baked scene in real time (OpenGL 4.5), in a window or headless.", kProgram};
   addSceneArguments(app, options.scene, "input",
-                    "iblkit-bake output folder, a .json scene, or a .gltf/.glb model lit by --env");
+                    "iblkit-bake output folder, a .json scene, or a .gltf/.glb model lit by --env (window: "
+                    "optional with --reference REPORT, which opens the case's own scene)",
+                    /*required=*/false);
   app.add_flag("--headless", options.headless, "render offscreen through EGL and write -o");
   app.add_option("-o,--output", options.output,
                  "output image: .exr (linear float RGBA) or .png (tone-mapped)");
@@ -449,6 +474,8 @@ int main(int argc, char** argv) {
     } catch (const Error& e) {
       throw UsageError(e.what());  // a bad command line: status 2, like --mode's names
     }
+    if (options.scene.input.empty() && (options.headless || !isReportPath(options.reference)))
+      throw UsageError("input is required");  // the window takes a report case's scene instead
     checkSceneArguments(options.scene);
     options.exposureGiven = app.count("--exposure") > 0;
     return options.headless ? runHeadless(options) : runWindow(options);

@@ -67,6 +67,10 @@ ReportCase readReportCase(const fs::path& report, const std::string& caseName) {
   }
   if (!chosen) fail(file, "no case '" + caseName + "' (cases: " + names + ")");
   result.caseName = caseNameOf(*chosen);
+  if (chosen->contains("sceneFile") && chosen->at("sceneFile").is_string())
+    result.sceneFile = chosen->at("sceneFile").get<std::string>();
+  if (chosen->contains("environmentFile") && chosen->at("environmentFile").is_string())
+    result.environmentFile = chosen->at("environmentFile").get<std::string>();
   if (!chosen->contains("linearImages"))
     fail(file, "case '" + result.caseName +
                    "' has no linear images (written before iblkit-report wrote them: run it again)");

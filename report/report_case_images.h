@@ -21,6 +21,10 @@ struct ReportCaseImage {
 struct ReportCase {
   std::filesystem::path reportJson;
   std::string caseName;                 // SCENE-ENVIRONMENT, as the page's case ids
+  // The case's scene and map as the report was given them (report.json's sceneFile and
+  // environmentFile; relative paths are relative to the folder the report ran in); empty when the
+  // report does not say.
+  std::filesystem::path sceneFile, environmentFile;
   std::vector<ReportCaseImage> images;  // the reference first, then the modes in the report's order
 };
 

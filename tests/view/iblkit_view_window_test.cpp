@@ -508,6 +508,35 @@ TEST_F(IblkitViewWindow, ARealReportCaseLinesUpWithTheLiveFrame) {
     for (const glm::vec4& p : difference.pixels()) dark += maxComponent(p) < 0.1f;
     EXPECT_GT(dark, int(difference.pixelCount()) * 95 / 100) << shown;  // measured: 98.8%
   }
+  // Without a MODEL the case opens its own scene (mirror_sphere.json, baked in memory) under its
+  // own map (sky), so the live frame lines up with the reference just the same.
+  const fs::path own = dir_ / "own-scene.png";
+  r = run(inWindow("--env-dir " + shellQuoted(dir_ / "no-maps") + " --reference " + shellQuoted(report) +
+                   " --case mirror_sphere-sky --compare difference --show reference --frames 2 --screenshot " +
+                   shellQuoted(own)));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("2 frames, 160x90"), std::string::npos) << r.output;
+  const Image difference = readPng(own);
+  int dark = 0;
+  for (const glm::vec4& p : difference.pixels()) dark += maxComponent(p) < 0.1f;
+  EXPECT_GT(dark, int(difference.pixelCount()) * 95 / 100);
+  // Under another map (--env) the same case's reference no longer lines up.
+  const fs::path other = dir_ / "own-scene-studio.png";
+  r = run(inWindow("--env " + shellQuoted(test::assetsDir() / "hdri" / "studio.exr") + " --env-dir " +
+                   shellQuoted(dir_ / "no-maps") + " --reference " + shellQuoted(report) +
+                   " --compare difference --show reference --frames 2 --screenshot " + shellQuoted(other)));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image otherDifference = readPng(other);
+  int otherDark = 0;
+  for (const glm::vec4& p : otherDifference.pixels()) otherDark += maxComponent(p) < 0.1f;
+  EXPECT_LT(otherDark, int(otherDifference.pixelCount()) * 90 / 100);
+  // Headless, or with no report, a MODEL is still required.
+  r = run(program("iblkit-view") + " --headless -o " + shellQuoted(dir_ / "x.exr"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "iblkit-view: input is required\n");
+  r = run(program("iblkit-view") + " --reference " + shellQuoted(dir_ / "x.exr"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "iblkit-view: input is required\n");
 }
 
 // A report case: the reference and each mode's frame, written by the report's writers.
