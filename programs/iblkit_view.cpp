@@ -11,9 +11,9 @@
 // Without --headless the window viewer runs (engine/view/viewer.h, docs/viewer.md):
 //
 //   iblkit-view OUTDIR|SCENE [--env ENV] [--env-dir DIR] [--reference REF.exr | --reference REPORT [--case CASE]]
-//   iblkit-view --reference REPORT [--case CASE]   (the case's own scene under its map)
 //               [--show IMAGE] [--compare VIEW] [--frames N] [--screenshot FILE] [--no-panel] [--width W] [--height H]
 //               [--mode M] [--exposure E] ...
+//   iblkit-view --reference REPORT [--case CASE]   (the case's own scene under its map)
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
