@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libbenchmark-dev libcli11-dev libimgui-dev
   clang libclang-rt-dev  # make fuzz: clang and its libFuzzer runtime (libclang_rt.fuzzer)
   xvfb xauth xdotool  # the window tests: a virtual X server, and real input events (tests/view)
+  x11-xserver-utils  # xrdb: a high-DPI X screen (Xft.dpi) for the window tests
   chromium chromium-driver  # the report page's browser test (tests/programs/report_page_browser_test.py)
   slurm-wlm munge  # the one-node Slurm cluster of tests/programs/cluster_slurm_trace_test.sh (docs/cluster.md)
 )

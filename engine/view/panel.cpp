@@ -6,6 +6,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "engine/gl/drawn_lights.h"
@@ -46,20 +48,33 @@ Panel::Panel(GLFWwindow* window) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui::StyleColorsDark();
+  window_ = window;
+  applyScale();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+void Panel::applyScale() {
   // High-DPI (panel.h, panelScale): where the framebuffer has as many pixels as the window
   // (X11, Windows), ImGui's window coordinates are pixels and the panel is scaled up by the
   // monitor's content scale; where it has more (macOS, Wayland), the backend's framebuffer
   // scale already draws the panel at its size in points.
   float contentX = 1.0f, contentY = 1.0f;
-  glfwGetWindowContentScale(window, &contentX, &contentY);
+  glfwGetWindowContentScale(window_, &contentX, &contentY);
   int windowWidth = 0, windowHeight = 0, framebufferWidth = 0, framebufferHeight = 0;
-  glfwGetWindowSize(window, &windowWidth, &windowHeight);
-  glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
+  glfwGetWindowSize(window_, &windowWidth, &windowHeight);
+  glfwGetFramebufferSize(window_, &framebufferWidth, &framebufferHeight);
+  if (windowWidth <= 0 || framebufferWidth <= 0) return;  // minimised: keep the scale
   const float scale = panelScale(contentX, windowWidth, framebufferWidth);
-  ImGui::GetStyle().ScaleAllSizes(scale);
+  if (std::abs(scale - scale_) < 1e-3f) return;
+  ImGuiStyle style;  // the unscaled sizes, scaled afresh (ScaleAllSizes multiplies what is there)
+  ImGui::StyleColorsDark(&style);
+  style.ScaleAllSizes(scale);
+  ImGui::GetStyle() = style;
   ImGui::GetIO().FontGlobalScale = scale;
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 450 core");
+  scale_ = scale;
+  std::fprintf(stderr, "iblkit-view: panel scaled %gx (content scale %g, window %d px wide, framebuffer %d)\n",
+               double(scale), double(contentX), windowWidth, framebufferWidth);
 }
 
 Panel::~Panel() {
@@ -197,6 +212,7 @@ void comparisonSection(ReferenceComparison& comparison, bool cameraMoved) {
 }  // namespace
 
 PanelActions Panel::build(PanelContext& context) {
+  applyScale();  // between frames: a window moved to a screen of another scale
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();

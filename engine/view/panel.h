@@ -57,6 +57,13 @@ class Panel {
   bool wantsKeyboard() const;
 
  private:
+  // Scales the panel by panelScale of the window's content scale and sizes now, when that
+  // changed (at start-up, and when the window moves to a screen of another scale); prints the
+  // scale on stderr when it is not 1.
+  void applyScale();
+
+  GLFWwindow* window_ = nullptr;
+  float scale_ = 1.0f;        // the scale applied
   int selectedMaterial_ = 0;  // the material the overrides edit
   char openPath_[1024] = {};  // the "open" field
 };

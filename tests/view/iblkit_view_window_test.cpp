@@ -539,6 +539,29 @@ TEST_F(IblkitViewWindow, ARealReportCaseLinesUpWithTheLiveFrame) {
   EXPECT_EQ(r.output, "iblkit-view: input is required\n");
 }
 
+// A high-DPI X screen, as a desktop sets one: Xft.dpi 192 in the server's resources (xrdb), which
+// GLFW reads as a content scale of 2. The framebuffer stays the window's size on X11, so the panel
+// is scaled 2x (panelScale); at the default 96 dpi it is not scaled. The frame is the window's size.
+TEST_F(IblkitViewWindow, AHighDpiScreenScalesThePanelAndNotTheFrame) {
+  ASSERT_EQ(run("command -v xrdb >/dev/null").status, 0) << "xrdb is missing: install x11-xserver-utils (scripts/setup.sh)";
+  const fs::path shot = dir_ / "high-dpi.png";
+  // The inner command in double quotes: its paths are single-quoted (shellQuoted). -noreset: Xvfb
+  // would otherwise reset, and forget the resources, when xrdb disconnects as its last client.
+  ProgramRun r = run("xvfb-run -a -s '-screen 0 640x480x24 -noreset' sh -c \"echo 'Xft.dpi: 192' | xrdb -nocpp -merge && exec " +
+                     program("iblkit-view") + " " + windowArguments("--frames 2 --screenshot " + shellQuoted(shot)) + "\"");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("iblkit-view: panel scaled 2x (content scale 2, window " + std::to_string(kWidth) +
+                          " px wide, framebuffer " + std::to_string(kWidth) + ")"),
+            std::string::npos)
+      << r.output;
+  const Image frame = readPng(shot);
+  EXPECT_EQ(frame.width(), kWidth);
+  EXPECT_EQ(frame.height(), kHeight);
+  r = run(inWindow(windowArguments("--frames 2")));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("panel scaled"), std::string::npos) << r.output;
+}
+
 // A report case: the reference and each mode's frame, written by the report's writers.
 class IblkitViewReportCase : public IblkitViewWindow {
  protected:
