@@ -66,11 +66,13 @@ std::string stbReason() {
 void requirePngChunksInside(std::span<const std::uint8_t> bytes, const std::filesystem::path& file,
                             const std::string& what) {
   std::size_t at = sizeof(kPngSignature);
-  while (at + 12 <= bytes.size()) {
+  // Every chunk whose length and type are there, the last one too when its data or CRC is cut
+  // off: stb_image reads a length and type 8 bytes from the end just the same.
+  while (at + 8 <= bytes.size()) {
     const std::uint64_t length = bigEndian32(bytes.data() + at);
     const std::string type(reinterpret_cast<const char*>(bytes.data() + at + 4), 4);
-    const std::uint64_t remaining = bytes.size() - at - 12;
-    if (length > remaining)
+    const std::uint64_t remaining = bytes.size() - at - 8 >= 4 ? bytes.size() - at - 12 : 0;  // less the CRC
+    if (length > remaining || at + 12 > bytes.size())
       fail(file, what + ": PNG chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) +
                      " bytes of data, but only " + std::to_string(remaining) + " follow (corrupt or truncated)");
     if (type == "IEND") return;

@@ -164,5 +164,26 @@ TEST(TextureImage, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
                                   " follow (corrupt or truncated)");
 }
 
+// The fuzz finding fuzz/corpus/texture/finding_png_cut_chunk_claims_1gib.png: a 3 x 2 PNG whose
+// last chunk is cut off inside its header's CRC-less tail (length, "IDAT" and 3 bytes): the chunk
+// walk used to stop where fewer than 12 bytes were left, and stb_image grew its IDAT buffer to the
+// stated 0x56503858 bytes (2 GiB after doubling) before finding nothing to read.
+TEST(TextureImage, APngChunkCutOffInsideItsHeaderIsRefusedBeforeDecoding) {
+  std::vector<std::uint8_t> png = test::encodePng(3, 2, std::vector<std::uint8_t>(3 * 2 * 4, 7));
+  const std::size_t iend = png.size() - 12;
+  png.resize(iend);  // no IEND
+  const std::uint8_t cut[] = {0x56, 0x50, 0x38, 0x58, 'I', 'D', 'A', 'T', 0x26, 0x60, 0x82};
+  png.insert(png.end(), std::begin(cut), std::end(cut));
+  EXPECT_EQ(decodeError(png), "PNG chunk at byte " + std::to_string(iend) + " claims " + std::to_string(0x56503858) +
+                                  " bytes of data, but only 0 follow (corrupt or truncated)");
+  // A chunk of length 0 cut off in its CRC is refused too; 7 bytes or fewer after the last chunk
+  // hold no length and type, which stb_image reads as the end.
+  png.resize(iend);
+  const std::uint8_t empty[] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae};
+  png.insert(png.end(), std::begin(empty), std::end(empty));
+  EXPECT_EQ(decodeError(png), "PNG chunk at byte " + std::to_string(iend) +
+                                  " claims 0 bytes of data, but only 0 follow (corrupt or truncated)");
+}
+
 }  // namespace
 }  // namespace iblkit
