@@ -71,8 +71,9 @@ void requirePngChunksInside(std::span<const std::uint8_t> bytes, const std::file
   while (at + 8 <= bytes.size()) {
     const std::uint64_t length = bigEndian32(bytes.data() + at);
     const std::string type(reinterpret_cast<const char*>(bytes.data() + at + 4), 4);
-    const std::uint64_t remaining = bytes.size() - at - 8 >= 4 ? bytes.size() - at - 12 : 0;  // less the CRC
-    if (length > remaining || at + 12 > bytes.size())
+    const std::uint64_t afterType = bytes.size() - at - 8;  // the data and the 4-byte CRC
+    const std::uint64_t remaining = afterType >= 4 ? afterType - 4 : 0;
+    if (afterType < 4 || length > remaining)
       fail(file, what + ": PNG chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) +
                      " bytes of data, but only " + std::to_string(remaining) + " follow (corrupt or truncated)");
     if (type == "IEND") return;

@@ -52,7 +52,7 @@ struct Options {
 };
 
 // One case of the report: a scene under a map, and its result once every stage it needs exists.
-struct ReportCase {
+struct PlannedCase {
   std::string scene;
   fs::path environment;
   std::optional<CaseResult> result;
@@ -87,9 +87,9 @@ std::vector<std::string> splitAtSpaces(const std::string& text) {
 // missing stages, a case that needs one stays unfinished and its stages are in `pending`.
 // `submitted` names the cases that had stages run by a scheduler in earlier passes (not cached).
 void runCases(const ReportSettings& settings, const StageCache& cache, PendingStages* pending,
-              const std::set<std::string>& submitted, std::vector<ReportCase>& cases,
+              const std::set<std::string>& submitted, std::vector<PlannedCase>& cases,
               std::map<fs::path, MapConcentration>& concentrations) {
-  for (ReportCase& reportCase : cases) {
+  for (PlannedCase& reportCase : cases) {
     if (reportCase.result) continue;
     const std::string caseName =
         fs::path(reportCase.scene).stem().string() + "-" + reportCase.environment.stem().string();
@@ -133,7 +133,7 @@ int report(Options& options) {
   StageCache cache(options.cacheFolder.empty() ? settings.outDir / "cache"
                                                      : fs::path(options.cacheFolder));
 
-  std::vector<ReportCase> cases;
+  std::vector<PlannedCase> cases;
   for (const std::string& scene : options.scenes) {
     if (!fs::is_regular_file(scene)) fail(scene, "scene file does not exist");
     for (const std::string& name : options.environments) {
@@ -163,7 +163,7 @@ int report(Options& options) {
       scheduler.runWave(pending);
     }
     int stages = 0;
-    for (const ReportCase& reportCase : cases) stages += reportCase.stages;
+    for (const PlannedCase& reportCase : cases) stages += reportCase.stages;
     summary.runStages = scheduler.stagesRun();
     summary.cachedStages = stages - summary.runStages;
     std::fprintf(stderr, "iblkit-report: slurm: %d stages run in %d waves (%d tasks submitted)\n",
@@ -173,7 +173,7 @@ int report(Options& options) {
     summary.cachedStages = cache.hits();
     summary.runStages = cache.misses();
   }
-  for (ReportCase& reportCase : cases) summary.cases.push_back(std::move(*reportCase.result));
+  for (PlannedCase& reportCase : cases) summary.cases.push_back(std::move(*reportCase.result));
   summary.claims = evaluateClaims(summary.cases);
   summary.settings = settings;
   summary.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

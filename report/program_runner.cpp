@@ -25,9 +25,15 @@ std::string commandLine(const std::vector<std::string>& argv) {
   for (const std::string& argument : argv) {
     if (!line.empty()) line += ' ';
     const bool quote = argument.empty() || argument.find_first_of(" \t'\"$") != std::string::npos;
-    line += quote ? "'" + argument + "'" : argument;
+    line += quote ? shellQuoted(argument) : argument;
   }
   return line;
+}
+
+std::string shellQuoted(const std::string& text) {
+  std::string quoted = "'";
+  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
 }
 
 std::string runProgram(const std::vector<std::string>& argv, const fs::path& log) {

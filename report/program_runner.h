@@ -14,7 +14,11 @@ namespace iblkit {
 // started or exits with a non-zero status; the message ends with the last line it printed.
 std::string runProgram(const std::vector<std::string>& argv, const std::filesystem::path& log);
 
-// The command line as a shell would show it (arguments with spaces quoted), for logs and reports.
+// The command line as a shell would show it (arguments with spaces or quotes quoted by
+// shellQuoted), for logs and reports.
 std::string commandLine(const std::vector<std::string>& argv);
+
+// `text` as one word of a POSIX shell: in single quotes, each ' inside written '\''.
+std::string shellQuoted(const std::string& text);
 
 }  // namespace iblkit

@@ -48,20 +48,8 @@ std::string fileNamePart(const std::string& name) {
   return part;
 }
 
-std::string shellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
 // The stage's kind: "bake", "view", "trace" (the name's first part).
 std::string stageKind(const PendingStage& stage) { return stage.name.substr(0, stage.name.find('-')); }
-
-bool isActive(const std::string& state) {
-  // squeue lists pending, running and completing tasks by default; a listed task is still in the
-  // queue, whatever its state.
-  return !state.empty();
-}
 
 }  // namespace
 
@@ -196,7 +184,9 @@ void SlurmScheduler::waitFor(const std::vector<Task>& tasks) {
     for (const Task& task : tasks) {
       const auto found = states.find(task.jobId + "_" + std::to_string(task.index));
       const std::string state = found == states.end() ? "" : found->second;
-      if (isActive(state))
+      // squeue lists pending, running and completing tasks by default: a listed task is still in
+      // the queue, whatever its state; one that left it is judged by its stage folder.
+      if (!state.empty())
         ++(state == "PENDING" ? pending : running);
       else
         ++(fs::is_directory(cacheRoot_ / task.stage->folderName()) ? done : failed);
@@ -227,6 +217,8 @@ void SlurmScheduler::runWave(const PendingStages& pending) {
     if (found == groups.end()) found = groups.insert(groups.end(), {group, {}});
     found->second.push_back(&stage);
   }
+  std::set<std::string> inWave;  // the folders of the stages collected
+  for (const PendingStage& stage : pending.stages()) inWave.insert(stage.folderName());
   // Submitted in dependency order: a group waits (afterok) for the arrays of the stages it reads.
   std::map<std::string, std::vector<std::string>> jobsOfFolder;  // a submitted stage's array job ids
   std::vector<Task> tasks;
@@ -239,9 +231,7 @@ void SlurmScheduler::runWave(const PendingStages& pending) {
       bool ready = true;
       for (const PendingStage* stage : stages)
         for (const std::string& folder : stage->needs) {
-          const bool inWave = std::any_of(pending.stages().begin(), pending.stages().end(),
-                                          [&](const PendingStage& s) { return s.folderName() == folder; });
-          if (!inWave) continue;  // not collected: the task fails on its missing input, reported below
+          if (!inWave.contains(folder)) continue;  // not collected: the task fails on its missing input, reported below
           if (!jobsOfFolder.contains(folder)) ready = false;
           else after.insert(jobsOfFolder[folder].begin(), jobsOfFolder[folder].end());
         }

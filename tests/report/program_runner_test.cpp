@@ -40,6 +40,9 @@ TEST(ProgramRunner, FailureNamesTheProgramStatusAndLastLine) {
 
 TEST(ProgramRunner, CommandLineQuotesWhatAShellWouldSplit) {
   EXPECT_EQ(commandLine({"iblkit-trace", "a b.json", "--spp", "16", ""}), "iblkit-trace 'a b.json' --spp 16 ''");
+  // A quote inside is closed, escaped and reopened, so the line still pastes into a shell.
+  EXPECT_EQ(commandLine({"iblkit-trace", "it's.json"}), "iblkit-trace 'it'\\''s.json'");
+  EXPECT_EQ(shellQuoted("/a b/x"), "'/a b/x'");
 }
 
 }  // namespace
