@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/input_file.h"
 #include "report/stage_cache.h"
 #include "report/stage_run.h"
 
@@ -38,9 +39,8 @@ void writeStagePlan(const fs::path& file, const fs::path& cacheRoot, const std::
 }
 
 StagePlan readStagePlan(const fs::path& file) {
-  std::ifstream stream(file);
-  if (!stream) fail(file, "cannot open the stage plan");
-  const json plan = json::parse(stream, nullptr, false);
+  // A regular file of bounded size and nesting (core/input_file.h): not a FIFO or a device.
+  const json plan = json::parse(readJsonText(file), nullptr, false);
   StagePlan result;
   try {
     if (plan.is_discarded()) fail(file, "the stage plan is not JSON");

@@ -92,6 +92,8 @@ TEST(StagePlan, AMalformedPlanIsAnErrorNamingIt) {
   std::ofstream(dir / "plan.json") << "not json";
   EXPECT_THROW(readStagePlan(dir / "plan.json"), Error);
   EXPECT_THROW(readStagePlan(dir / "missing.json"), Error);
+  EXPECT_THROW(readStagePlan(dir), Error);                // a folder
+  EXPECT_THROW(readStagePlan("/dev/zero"), Error);        // a device: refused unread
 }
 
 }  // namespace
