@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/png_chunks.h"
 #include "core/file_io.h"
 #include "core/image_io.h"
 
@@ -59,6 +60,13 @@ Image readPng(const std::filesystem::path& file, PixelRepair repair) {
   if (bytes.size() < sizeof(kSignature) || std::memcmp(bytes.data(), kSignature, sizeof(kSignature)) != 0)
     fail(file, "not a PNG file (bad signature)");
   if (bytes.size() > static_cast<std::size_t>(INT_MAX)) fail(file, "file too large for the PNG decoder");
+  // A chunk running past the end, refused before stb_image allocates its stated length, in the
+  // words every image reader uses for a truncated file.
+  try {
+    requirePngChunksInside({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, file, "");
+  } catch (const Error&) {
+    fail(file, "truncated file (unexpected end of data)");
+  }
   // stb_image reduces 16-bit PNGs to 8 bits and expands grey and palette images to RGBA.
   int width = 0, height = 0, channelsInFile = 0;
   const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(

@@ -1,5 +1,7 @@
 #include "core/texture_image.h"
 
+#include "core/png_chunks.h"
+
 // Debian's libstb exports stb_image's implementation (png_io.cpp uses it too), so only the header.
 #include <stb/stb_image.h>
 #include <webp/decode.h>
@@ -57,28 +59,6 @@ std::string webpStatusText(VP8StatusCode status) {
 std::string stbReason() {
   const char* reason = stbi_failure_reason();
   return reason ? printableExcerpt(reason, 80) : "unknown reason";
-}
-
-// Every chunk up to IEND (PNG specification section 5.3: a 4-byte length, the type, the data and
-// a CRC) lies inside the data. stb_image trusts a chunk's length and grows its IDAT buffer to it
-// before reading: a 3 x 2 PNG whose second IDAT claimed 0x71717171 bytes asked for 2 GiB (a fuzz
-// finding, fuzz/corpus/texture/).
-void requirePngChunksInside(std::span<const std::uint8_t> bytes, const std::filesystem::path& file,
-                            const std::string& what) {
-  std::size_t at = sizeof(kPngSignature);
-  // Every chunk whose length and type are there, the last one too when its data or CRC is cut
-  // off: stb_image reads a length and type 8 bytes from the end just the same.
-  while (at + 8 <= bytes.size()) {
-    const std::uint64_t length = bigEndian32(bytes.data() + at);
-    const std::string type(reinterpret_cast<const char*>(bytes.data() + at + 4), 4);
-    const std::uint64_t afterType = bytes.size() - at - 8;  // the data and the 4-byte CRC
-    const std::uint64_t remaining = afterType >= 4 ? afterType - 4 : 0;
-    if (afterType < 4 || length > remaining)
-      fail(file, what + ": PNG chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) +
-                     " bytes of data, but only " + std::to_string(remaining) + " follow (corrupt or truncated)");
-    if (type == "IEND") return;
-    at += 12 + std::size_t(length);
-  }
 }
 
 // PNG and JPEG through stb_image. The PNG size comes from IHDR (PNG specification section 11.2.2,
