@@ -28,8 +28,9 @@ using Lobes = BrdfLobes;
 
 }  // namespace
 
-BrdfLobes brdfLobes(const Material& material) {
-  const GltfRangeFactors m = clampedFactors(material);
+BrdfLobes brdfLobes(const Material& material) { return brdfLobes(clampedFactors(material)); }
+
+BrdfLobes brdfLobes(const GltfRangeFactors& m) {
   BrdfLobes l;
   l.baseColor = m.baseColor;
   l.metallic = m.metallic;

@@ -71,6 +71,10 @@ struct BrdfLobes {
 };
 // The lobes of `material` (its factors clamped by clampedToGltfRanges, clampedFactors).
 BrdfLobes brdfLobes(const Material& material);
+// The lobes of factors already clamped to the glTF ranges (clampedFactors, clampedToGltfRanges):
+// brdfLobes(material) is brdfLobes(clampedFactors(material)). A textured hit's factors go here
+// without a Material (its name and texture refs) built per hit.
+BrdfLobes brdfLobes(const GltfRangeFactors& clamped);
 // The specular layer's Fresnel tint F(v.h) = Schlick(f0, f90) at cosThetaD = v.h.
 glm::vec3 specularFresnel(const BrdfLobes& lobes, float cosThetaD);
 // The diffuse base's weight, (1 - metallic)(1 - specular max_rgb(Fd(v.h))) with

@@ -5,9 +5,8 @@
 namespace iblkit {
 
 GltfRangeFactors clampedFactors(const Material& material) {
-  return {glm::clamp(material.baseColor, 0.0f, 1.0f), std::clamp(material.metallic, 0.0f, 1.0f),
-          std::clamp(material.roughness, 0.0f, 1.0f), std::clamp(material.specular, 0.0f, 1.0f),
-          glm::max(material.specularColor, 0.0f)};
+  return clampedToGltfRanges(GltfRangeFactors{material.baseColor, material.metallic, material.roughness,
+                                              material.specular, material.specularColor});
 }
 
 Material clampedToGltfRanges(const Material& material) {

@@ -57,5 +57,11 @@ struct GltfRangeFactors {
   glm::vec3 specularColor;
 };
 GltfRangeFactors clampedFactors(const Material& material);
+// The same clamp of factors given on their own (a textured hit's, SurfaceMaterial's).
+inline GltfRangeFactors clampedToGltfRanges(const GltfRangeFactors& f) {
+  return {glm::clamp(f.baseColor, 0.0f, 1.0f), glm::clamp(f.metallic, 0.0f, 1.0f),
+          glm::clamp(f.roughness, 0.0f, 1.0f), glm::clamp(f.specular, 0.0f, 1.0f),
+          glm::max(f.specularColor, 0.0f)};
+}
 
 }  // namespace iblkit

@@ -24,6 +24,23 @@ struct SlotLookups {
   }
 };
 
+// perturbNormal, inlined into PreparedSurfaceMaterial::evaluate (one call per textured hit).
+[[gnu::always_inline]] inline glm::vec3 perturbedNormal(const glm::vec3& n, const glm::vec4& tangent, const glm::vec3& texel, float scale) {
+  // glTF 2.0 section 3.9.3 (normalTexture): scaledNormal = normalize((2 texel - 1) * (scale, scale, 1)),
+  // in the tangent frame (t, b, n), b = w cross(n, t) (section 3.7.2.1).
+  // The interpolated frame is used as it is, not re-orthogonalised: the notes of Mikkelsen's
+  // reference implementation (mikktspace.h, on the pixel shader) ask for exactly this, so that the
+  // frame is the one the map was baked against; shaders/material.glsl does the same.
+  const glm::vec3 t(tangent);
+  if (t == glm::vec3(0.0f)) return n;
+  const glm::vec3 b = (tangent.w < 0.0f ? -1.0f : 1.0f) * glm::cross(n, t);
+  const glm::vec3 m = 2.0f * texel - 1.0f;
+  const glm::vec3 world = t * (m.x * scale) + b * (m.y * scale) + n * m.z;
+  const float length = glm::length(world);
+  if (!(length > 0.0f) || !std::isfinite(length)) return n;
+  return world / length;
+}
+
 }  // namespace
 
 PreparedSurfaceMaterial::PreparedSurfaceMaterial(const Material& material, const SceneTextures& textures,
@@ -74,24 +91,13 @@ SurfaceMaterial PreparedSurfaceMaterial::evaluate(const SurfaceInputs& inputs) c
   if (occlusion_ >= 0) out.occlusion = 1.0f + occlusionStrength_ * (values[occlusion_].r - 1.0f);
   // Section 3.9.3: emissive = factor times the sRGB-decoded texel.
   if (emissive_ >= 0) out.emissive *= glm::vec3(values[emissive_]);
-  if (normal >= 0) out.normal = perturbNormal(inputs.normal, inputs.tangent, glm::vec3(values[normal]), normalScale_);
+  if (normal >= 0) out.normal = perturbedNormal(inputs.normal, inputs.tangent, glm::vec3(values[normal]), normalScale_);
   return out;
 }
 
 SurfaceMaterial evaluateSurfaceMaterial(const Material& material, const SceneTextures& textures,
                                         const SurfaceInputs& inputs) {
   return PreparedSurfaceMaterial(material, textures, inputs.slots).evaluate(inputs);
-}
-
-BrdfLobes brdfLobes(const SurfaceMaterial& surface) {
-  // brdfLobes(Material) reads (and clamps) just these factors.
-  Material factors;
-  factors.baseColor = surface.baseColor;
-  factors.metallic = surface.metallic;
-  factors.roughness = surface.roughness;
-  factors.specular = surface.specular;
-  factors.specularColor = surface.specularColor;
-  return brdfLobes(factors);
 }
 
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs) {
@@ -116,19 +122,7 @@ bool surfacePresent(const Material& material, float alpha, float u) {
 }
 
 glm::vec3 perturbNormal(const glm::vec3& n, const glm::vec4& tangent, const glm::vec3& texel, float scale) {
-  // glTF 2.0 section 3.9.3 (normalTexture): scaledNormal = normalize((2 texel - 1) * (scale, scale, 1)),
-  // in the tangent frame (t, b, n), b = w cross(n, t) (section 3.7.2.1).
-  // The interpolated frame is used as it is, not re-orthogonalised: the notes of Mikkelsen's
-  // reference implementation (mikktspace.h, on the pixel shader) ask for exactly this, so that the
-  // frame is the one the map was baked against; shaders/material.glsl does the same.
-  const glm::vec3 t(tangent);
-  if (t == glm::vec3(0.0f)) return n;
-  const glm::vec3 b = (tangent.w < 0.0f ? -1.0f : 1.0f) * glm::cross(n, t);
-  const glm::vec3 m = 2.0f * texel - 1.0f;
-  const glm::vec3 world = t * (m.x * scale) + b * (m.y * scale) + n * m.z;
-  const float length = glm::length(world);
-  if (!(length > 0.0f) || !std::isfinite(length)) return n;
-  return world / length;
+  return perturbedNormal(n, tangent, texel, scale);
 }
 
 glm::vec3 shadingNormalFacingViewer(const glm::vec3& n, const glm::vec3& wo, const glm::vec3& geometric) {

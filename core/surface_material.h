@@ -67,7 +67,11 @@ class PreparedSurfaceMaterial {
 
 // The BRDF lobes at a point (brdfLobes of its textured factors, clamped to the glTF ranges as
 // brdfLobes(Material) clamps a material's).
-BrdfLobes brdfLobes(const SurfaceMaterial& surface);
+inline BrdfLobes brdfLobes(const SurfaceMaterial& surface) {
+  // brdfLobes(Material) clamps and reads just these factors.
+  return brdfLobes(clampedToGltfRanges(GltfRangeFactors{surface.baseColor, surface.metallic, surface.roughness,
+                                                        surface.specular, surface.specularColor}));
+}
 
 // The base colour alpha only (factor times texture alpha), for alpha tests in ray filters.
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs);

@@ -211,7 +211,9 @@ glm::vec4 sampleLevel(const MipLevel& level, const float* rgbTable, const Textur
 // mask, no switch) and the coordinate well inside int range. The same texels and weights as
 // sampleLevel, and blendTaps the same arithmetic order, so the same result.
 struct BilinearTaps {
-  std::size_t texel[4];  // y * width + x of (i0, j0), (i1, j0), (i0, j1), (i1, j1)
+  // 4 (y * width + x) of (i0, j0), (i1, j0), (i0, j1), (i1, j1): the texel's first element in
+  // both rgba (bytes) and decoded (floats), so that a load's address is one addressing mode.
+  std::size_t texel[4];
   float fx, fy;
   Lanes4 wx0, wx1, wy0, wy1;  // 1 - fx, fx, 1 - fy, fy in every lane (decoded levels' blend)
 };
@@ -243,10 +245,10 @@ bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
                     i1 = static_cast<std::size_t>((i + 1) & (w - 1));
   const std::size_t row0 = static_cast<std::size_t>(j & (h - 1)) * static_cast<std::size_t>(w);
   const std::size_t row1 = static_cast<std::size_t>((j + 1) & (h - 1)) * static_cast<std::size_t>(w);
-  taps.texel[0] = row0 + i0;
-  taps.texel[1] = row0 + i1;
-  taps.texel[2] = row1 + i0;
-  taps.texel[3] = row1 + i1;
+  taps.texel[0] = 4 * (row0 + i0);
+  taps.texel[1] = 4 * (row0 + i1);
+  taps.texel[2] = 4 * (row1 + i0);
+  taps.texel[3] = 4 * (row1 + i1);
   return true;
 }
 
@@ -258,10 +260,9 @@ bool repeatLinear(const TextureSampler& sampler, TextureFilter filter) {
 // decoded through the tables and the other channels' texels are not loaded.
 [[gnu::always_inline]] inline Lanes4 blendDecoded(const MipLevel& level, const BilinearTaps& taps) {
   const float* texels = level.decoded.data();
-  const Lanes4 top = Lanes4::load(texels + 4 * taps.texel[0]) * taps.wx0 +
-                     Lanes4::load(texels + 4 * taps.texel[1]) * taps.wx1;
-  const Lanes4 bottom = Lanes4::load(texels + 4 * taps.texel[2]) * taps.wx0 +
-                        Lanes4::load(texels + 4 * taps.texel[3]) * taps.wx1;
+  const Lanes4 top = Lanes4::load(texels + taps.texel[0]) * taps.wx0 + Lanes4::load(texels + taps.texel[1]) * taps.wx1;
+  const Lanes4 bottom =
+      Lanes4::load(texels + taps.texel[2]) * taps.wx0 + Lanes4::load(texels + taps.texel[3]) * taps.wx1;
   return top * taps.wy0 + bottom * taps.wy1;
 }
 
@@ -271,8 +272,8 @@ template <unsigned kChannels = 0xF>
   if (!level.decoded.empty()) return blendDecoded(level, taps).masked<kChannels>();
   const float fx = taps.fx, fy = taps.fy, gx = 1.0f - fx, gy = 1.0f - fy;
   const std::uint8_t* texels = level.rgba.data();
-  const std::uint8_t *a = texels + 4 * taps.texel[0], *b = texels + 4 * taps.texel[1],
-                     *c = texels + 4 * taps.texel[2], *d = texels + 4 * taps.texel[3];
+  const std::uint8_t *a = texels + taps.texel[0], *b = texels + taps.texel[1], *c = texels + taps.texel[2],
+                     *d = texels + taps.texel[3];
   float result[4];
   for (int k = 0; k < 3; ++k) {
     if (!((kChannels >> k) & 1u)) {
@@ -317,7 +318,9 @@ struct LevelChoice {
     return {d, 0.0f, sampler.minFilter};
   }
   if (lod >= static_cast<float>(q)) return {q, 0.0f, sampler.minFilter};
-  const int d1 = static_cast<int>(std::floor(lod));
+  // floor(lod) for 0 < lod < q: truncation (std::floor is a libm call or a long SSE2 sequence
+  // without SSE4.1).
+  const int d1 = static_cast<int>(lod);
   return {d1, lod - static_cast<float>(d1), sampler.minFilter};
 }
 
@@ -392,7 +395,8 @@ template <unsigned kChannels = 0xF>
                                                      const LookupPlan& plan, glm::vec4& out) {
   const int d = plan.choice.level;
   const bool single = plan.choice.fraction == 0.0f;
-  if (plan.fast && !chain.levels[d].decoded.empty() && (single || !chain.levels[d + 1].decoded.empty())) {
+  // Level d decoded means d + 1 is too (MipChain::decodedFrom).
+  if (plan.fast && d >= chain.decodedFrom) {
     const Lanes4 a = blendDecoded(chain.levels[d], plan.taps[0]);
     (single ? a : a * plan.w0 + blendDecoded(chain.levels[d + 1], plan.taps[1]) * plan.w1)
         .maskedBy(channels)
@@ -482,8 +486,10 @@ void decodeSmallLevels(MipChain& chain) {
   const float* rgbTable =
       chain.colorSpace == ColorSpace::Srgb ? tables().srgb.data() : tables().linear.data();
   const float* alphaTable = tables().linear.data();
-  for (MipLevel& level : chain.levels) {
+  for (std::size_t l = 0; l < chain.levels.size(); ++l) {
+    MipLevel& level = chain.levels[l];
     if (static_cast<long long>(level.width) * level.height > kDecodedLevelTexels) continue;
+    chain.decodedFrom = std::min(chain.decodedFrom, static_cast<int>(l));
     level.decoded.resize(level.rgba.size());
     for (std::size_t i = 0; i + 3 < level.rgba.size(); i += 4) {
       for (std::size_t c = 0; c < 3; ++c) level.decoded[i + c] = rgbTable[level.rgba[i + c]];
@@ -683,6 +689,22 @@ void SceneTextures::SlotSet::sample(const glm::vec2 texcoords[2], const float fo
     const float lod = lodFromTerms(log2Footprints[set], group.log2Size, group.scaled, group.log2Scale);
     const glm::vec2 uv = applyTransform(group.transform, texcoords[set]);
     const LookupPlan plan = planLookup(*group.sizes, group.sampler, uv, lod);
+    // runLookupChannels' decoded fast path, decided once for the group: its chains have the same
+    // level sizes, so the same decoded levels (MipChain::decodedFrom).
+    const int d = plan.choice.level;
+    if (plan.fast && d >= group.sizes->decodedFrom) {
+      const bool single = plan.choice.fraction == 0.0f;
+      for (int s = group.first; s < group.first + group.count; ++s) {
+        const Slot& slot = slots_[s];
+        if (!((active >> slot.lookup) & 1u)) continue;
+        const MipLevel* levels = slot.chain->levels.data();
+        const Lanes4 a = blendDecoded(levels[d], plan.taps[0]);
+        (single ? a : a * plan.w0 + blendDecoded(levels[d + 1], plan.taps[1]) * plan.w1)
+            .maskedBy(slot.channels)
+            .store(values[slot.lookup]);
+      }
+      continue;
+    }
     for (int s = group.first; s < group.first + group.count; ++s) {
       const Slot& slot = slots_[s];
       if (!((active >> slot.lookup) & 1u)) continue;

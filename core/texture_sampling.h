@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <limits>
 #include <vector>
 
 #include "core/material.h"
@@ -44,6 +45,9 @@ struct MipChain {
   // alpha is exactly 1: the weights of a lookup sum to exactly 1 in float (1 - f + f rounds to 1
   // for every float f in [0, 1]). A ray's alpha test can then be decided without a lookup.
   bool alphaAllOne = false;
+  // The first level with decoded texels (decodeSmallLevels; levels only shrink, so every later
+  // level has them too); levels.size() or more when none has.
+  int decodedFrom = std::numeric_limits<int>::max();
   int width() const { return levels.empty() ? 0 : levels[0].width; }
   int height() const { return levels.empty() ? 0 : levels[0].height; }
 };

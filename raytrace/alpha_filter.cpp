@@ -54,11 +54,14 @@ float textureFootprintFromDifferentials(const PixelDifferentials& pixel, const g
                                         const glm::vec3& geometricNormal, const UvGradient& gradient) {
   const float scale = t * glm::dot(direction, pixel.forward);
   const float dn = glm::dot(direction, geometricNormal);
-  const auto uvStep = [&](const glm::vec3& dd) {
+  // The squared uv step; one sqrt of the larger (sqrt is monotone and correctly rounded, so
+  // this is max(|step x|, |step y|) exactly).
+  const auto uvStepSquared = [&](const glm::vec3& dd) {
     const glm::vec3 dp = scale * (dd - (glm::dot(dd, geometricNormal) / dn) * direction);
-    return glm::length(glm::vec2(glm::dot(gradient.du, dp), glm::dot(gradient.dv, dp)));
+    const glm::vec2 step(glm::dot(gradient.du, dp), glm::dot(gradient.dv, dp));
+    return glm::dot(step, step);
   };
-  const float footprint = std::max(uvStep(pixel.dx), uvStep(pixel.dy));
+  const float footprint = std::sqrt(std::max(uvStepSquared(pixel.dx), uvStepSquared(pixel.dy)));
   if (std::isfinite(footprint)) return footprint;
   return gradient.du == glm::vec3(0.0f) && gradient.dv == glm::vec3(0.0f) ? 0.0f
                                                                           : std::numeric_limits<float>::max();

@@ -421,6 +421,7 @@ TEST(DecodeSmallLevels, DecodesOnlyTheSmallLevels) {
   decodeSmallLevels(chain);
   ASSERT_EQ(chain.levels.size(), 10u);
   EXPECT_TRUE(chain.levels[0].decoded.empty()) << "512 x 256 is 131072 texels";
+  EXPECT_EQ(chain.decodedFrom, 1) << "the lookups' test for decoded texels";
   for (std::size_t i = 1; i < chain.levels.size(); ++i)
     EXPECT_EQ(chain.levels[i].decoded.size(), chain.levels[i].rgba.size());
   Material material;
@@ -429,6 +430,8 @@ TEST(DecodeSmallLevels, DecodesOnlyTheSmallLevels) {
   texture.image = 0;
   const SceneTextures textures({texture}, {quadrants()}, {material});
   EXPECT_EQ(textures.chain(0, ColorSpace::Srgb)->levels[0].decoded.size(), 16u);
+  EXPECT_EQ(textures.chain(0, ColorSpace::Srgb)->decodedFrom, 0);
+  EXPECT_GT(buildMipChain(quadrants(), ColorSpace::Linear).decodedFrom, 100) << "not decoded: none";
 }
 
 // The reason alphaAllOne means alpha 1: a lookup's weights 1 - f and f sum to exactly 1 in float,
