@@ -14,8 +14,12 @@
 const int lightCount = LIGHT_COUNT;
 uniform vec3 lightDirection[kMaxEngineLights];
 uniform vec3 lightRadiance[kMaxEngineLights];
-uniform float lightAngularRadius[kMaxEngineLights];
 uniform vec2 lightCosSin[kMaxEngineLights];
+// cos(1.1 r), cos(0.9 r): the edge of a mirror's reflected disk (mirroredDiskRadiance).
+uniform vec2 lightMirrorEdgeCos[kMaxEngineLights];
+// The light's irradiance on an upward normal, lightRadiance uniformDiskIrradiance(l.y, r) (the
+// core's, computed once a frame): what groundBounceIrradiance's ground receives.
+uniform vec3 lightIrradianceUp[kMaxEngineLights];
 uniform vec3 residualShRadiance[9];
 layout(binding = kTextureUnitResidualSpecular) uniform samplerCube residualSpecularCube;
 
@@ -46,17 +50,20 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 posit
   vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, residualShRadiance);
   vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, visibilityConeAxis(n, ao), irradiance);
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, specularWeight, specularColor);
+  vec3 irradianceUp = vec3(0.0);
   for (int i = 0; i < lightCount; ++i) {
     vec3 l = lightDirection[i];
-    vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightAngularRadius[i], lightCosSin[i]);
+    vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightCosSin[i], lightMirrorEdgeCos[i]);
     if (shadowed && maxComponent(lit) > 0.0) {
       vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
       lit *= shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
     }
     radiance += lit;
-    // The light's bounce off what occludes the vertex below its horizon (groundBounceIrradiance).
-    radiance += diffuseWeight(lobes, schlickWeights(clamp(dot(n, v), 0.0, 1.0))) * m.baseColor / kPi *
-                groundBounceIrradiance(m.baseColor, lightRadiance[i] * uniformDiskIrradiance(l.y, lightAngularRadius[i]));
+    irradianceUp += lightIrradianceUp[i];
   }
+  // The lights' bounce off what occludes the vertex below its horizon (groundBounceIrradiance,
+  // linear in the irradiance: the lights' sum at once).
+  radiance += diffuseWeight(lobes, schlickWeights(clamp(dot(n, v), 0.0, 1.0))) * m.baseColor / kPi *
+              groundBounceIrradiance(m.baseColor, irradianceUp);
   return radiance;
 }

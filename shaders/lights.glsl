@@ -57,19 +57,25 @@ vec3 evalBrdf(BrdfLobes lobes, vec3 n, vec3 v, vec3 l) {
 //   cos^2 theta > sin^2 r:  pi sin^2 r max(cos theta, 0)
 //   else:  (cos theta acos(y) - x sin theta sqrt(1 - y^2)) sin^2 r + atan(sin theta sqrt(1 - y^2) / x)
 //          with x = cot r, y = -x cot theta.
-float uniformDiskIrradiance(float cosTheta, float angularRadius) {
-  float r = clamp(angularRadius, 0.0, 0.5 * kPi);
+// The same with the radius given by its cosine and sine (cosSin, r in [0, pi / 2]): a light's
+// (lightCosSin), so that a pixel does not evaluate them.
+float uniformDiskIrradiance(float cosTheta, vec2 cosSin) {
   float c = clamp(cosTheta, -1.0, 1.0);
-  float sinRadius = sin(r);
+  float sinRadius = cosSin.y;
   float sinSquared = sinRadius * sinRadius;
   if (sinSquared <= 0.0) return 0.0;
   if (c * c > sinSquared) return kPi * sinSquared * max(c, 0.0);
-  float x = max(cos(r) / sinRadius, 1e-7);
+  float x = max(cosSin.x / sinRadius, 1e-7);
   float sinTheta = max(sqrt(max(0.0, 1.0 - c * c)), 1e-7);
   float y = clamp(-x * c / sinTheta, -1.0, 1.0);
   float sinThetaSqrtY = sinTheta * sqrt(max(0.0, 1.0 - y * y));
   float e = (c * acos(y) - x * sinThetaSqrtY) * sinSquared + atan(sinThetaSqrtY / x);
   return max(e, 0.0);
+}
+
+float uniformDiskIrradiance(float cosTheta, float angularRadius) {
+  float r = clamp(angularRadius, 0.0, 0.5 * kPi);
+  return uniformDiskIrradiance(cosTheta, vec2(cos(r), sin(r)));
 }
 
 // One disk light of radiance `radiance`, direction l, angular radius r (cos, sin = cosSin), on the
@@ -91,16 +97,19 @@ float uniformDiskIrradiance(float cosTheta, float angularRadius) {
 // full's 0.027). There the disk is reflected as a disk: F(n.v) L times the part of the reflected
 // direction's neighbourhood inside it (an edge a fifth of the radius wide), blended towards the
 // widened lobe as alpha grows to tan(r) / 2. Above that, as before.
-vec3 mirroredDiskRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, float angularRadius) {
+// edgeCos: cos(1.1 r) and cos(0.9 r), the edge (a light's lightMirrorEdgeCos, per light).
+vec3 mirroredDiskRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, vec2 edgeCos) {
   float NoV = dot(n, v);
   vec3 r = reflect(-v, n);
-  float inside = smoothstep(cos(1.1 * angularRadius), cos(0.9 * angularRadius), dot(r, l));
+  float inside = smoothstep(edgeCos.x, edgeCos.y, dot(r, l));
   return splitSumKaris(lobes.f0, lobes.f90, schlickWeights(NoV)) * radiance * inside;
 }
 
-vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, float angularRadius, vec2 cosSin) {
+// cosSin: cos r and sin r; edgeCos: cos(1.1 r) and cos(0.9 r) (uniforms of the light, so that a
+// pixel evaluates no trigonometry of r).
+vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, vec2 cosSin, vec2 edgeCos) {
   if (dot(n, v) <= 0.0) return vec3(0.0);
-  float irradiance = uniformDiskIrradiance(dot(n, l), angularRadius);
+  float irradiance = uniformDiskIrradiance(dot(n, l), cosSin);
   vec3 result = irradiance > 0.0 ? brdfDiffuse(lobes, v, l) * radiance * irradiance : vec3(0.0);
   if (maxComponent(lobes.f90) > 0.0) {
     float spread = 0.5 * cosSin.y / max(cosSin.x, 1e-4);
@@ -108,7 +117,7 @@ vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, f
     vec3 lobe = irradiance > 0.0 ? brdfSpecular(lobes, n, v, l, widened) * radiance * irradiance : vec3(0.0);
     float towardsLobe = clamp(lobes.alpha / max(spread, 1e-6), 0.0, 1.0);
     result += towardsLobe >= 1.0 ? lobe
-                                 : mix(mirroredDiskRadiance(lobes, n, v, l, radiance, angularRadius), lobe, towardsLobe);
+                                 : mix(mirroredDiskRadiance(lobes, n, v, l, radiance, edgeCos), lobe, towardsLobe);
   }
   return result;
 }

@@ -30,5 +30,6 @@ void main() {
   vec3 n = vec3(0.0, 0.0, 1.0);
   if (quantity == 0) fragColor = vec4(uniformDiskIrradiance(i.z, i.w));
   else if (quantity == 1) fragColor = vec4(evalBrdf(lobes, n, o.xyz, i.xyz), 1.0);
-  else fragColor = vec4(diskLightRadiance(lobes, n, o.xyz, i.xyz, vec3(1.0), i.w, vec2(cos(i.w), sin(i.w))), 1.0);
+  else fragColor = vec4(diskLightRadiance(lobes, n, o.xyz, i.xyz, vec3(1.0), vec2(cos(i.w), sin(i.w)),
+                                             vec2(cos(1.1 * i.w), cos(0.9 * i.w))), 1.0);
 }

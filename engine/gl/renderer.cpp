@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "core/disk_irradiance.h"
 #include "core/error.h"
 #include "core/sh_rotation.h"
 #include "engine/gl/drawn_lights.h"
@@ -212,9 +213,12 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       const EnvironmentLight& light = drawn.lights[i];
       program.set(uniformElement("lightDirection", i).c_str(), light.direction);
       program.set(uniformElement("lightRadiance", i).c_str(), light.radiance);
-      program.set(uniformElement("lightAngularRadius", i).c_str(), light.angularRadius);
       program.set(uniformElement("lightCosSin", i).c_str(),
                   glm::vec2(std::cos(light.angularRadius), std::sin(light.angularRadius)));
+      program.set(uniformElement("lightMirrorEdgeCos", i).c_str(),
+                  glm::vec2(std::cos(1.1f * light.angularRadius), std::cos(0.9f * light.angularRadius)));
+      program.set(uniformElement("lightIrradianceUp", i).c_str(),
+                  light.radiance * uniformDiskIrradiance(light.direction.y, light.angularRadius));
     }
     program.setArray("residualShRadiance", drawn.residualSh9.coefficients.data(), kShCoefficients);
     if (mode == ShadingMode::LightsShadowed) r.shadowMaps->setUniforms(program);
