@@ -386,6 +386,17 @@ template <unsigned kChannels = 0xF>
                        fraction);
 }
 
+// The fast lookup `plan` on decoded levels (levels[plan level] and, trilinear, the next), the
+// channels outside `channels` 0: runLookupChannels' and SlotSet::sample's common case.
+[[gnu::always_inline]] inline void storeDecodedLookup(const MipLevel* levels, const LookupPlan& plan,
+                                                      unsigned channels, glm::vec4& out) {
+  const int d = plan.choice.level;
+  const Lanes4 a = blendDecoded(levels[d], plan.taps[0]);
+  (plan.choice.fraction == 0.0f ? a : a * plan.w0 + blendDecoded(levels[d + 1], plan.taps[1]) * plan.w1)
+      .maskedBy(channels)
+      .store(out);
+}
+
 // runLookup with the channel mask given at run time (SceneTextures's masks). The common case, the
 // fast path on decoded levels (a level's smaller ones are decoded too), is one code path for every
 // mask: blendTaps' decoded blend, the mask applied at the end.
@@ -393,16 +404,8 @@ template <unsigned kChannels = 0xF>
                                                      const DecodeTables& decode,
                                                      const TextureSampler& sampler, glm::vec2 uv,
                                                      const LookupPlan& plan, glm::vec4& out) {
-  const int d = plan.choice.level;
-  const bool single = plan.choice.fraction == 0.0f;
-  // Level d decoded means d + 1 is too (MipChain::decodedFrom).
-  if (plan.fast && d >= chain.decodedFrom) {
-    const Lanes4 a = blendDecoded(chain.levels[d], plan.taps[0]);
-    (single ? a : a * plan.w0 + blendDecoded(chain.levels[d + 1], plan.taps[1]) * plan.w1)
-        .maskedBy(channels)
-        .store(out);
-    return;
-  }
+  // The plan's level decoded means d + 1 is too (MipChain::decodedFrom).
+  if (plan.fast && plan.choice.level >= chain.decodedFrom) return storeDecodedLookup(chain.levels.data(), plan, channels, out);
   switch (channels) {
     case SceneTextures::kRed:
       return runLookup<SceneTextures::kRed>(chain, decode, sampler, uv, plan, out);
@@ -693,15 +696,10 @@ void SceneTextures::SlotSet::sample(const glm::vec2 texcoords[2], const float fo
     // level sizes, so the same decoded levels (MipChain::decodedFrom).
     const int d = plan.choice.level;
     if (plan.fast && d >= group.sizes->decodedFrom) {
-      const bool single = plan.choice.fraction == 0.0f;
       for (int s = group.first; s < group.first + group.count; ++s) {
         const Slot& slot = slots_[s];
-        if (!((active >> slot.lookup) & 1u)) continue;
-        const MipLevel* levels = slot.chain->levels.data();
-        const Lanes4 a = blendDecoded(levels[d], plan.taps[0]);
-        (single ? a : a * plan.w0 + blendDecoded(levels[d + 1], plan.taps[1]) * plan.w1)
-            .maskedBy(slot.channels)
-            .store(values[slot.lookup]);
+        if ((active >> slot.lookup) & 1u)
+          storeDecodedLookup(slot.chain->levels.data(), plan, slot.channels, values[slot.lookup]);
       }
       continue;
     }
