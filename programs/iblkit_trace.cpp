@@ -38,6 +38,7 @@ struct Options {
   std::filesystem::path albedo, normal, depth, variance, mask, bentNormal;
   bool misCompensation = false;
   std::string integrator = "path", envSampling = "mis", filter = "box";
+  std::string envOrientation = "normal";
   int maxDepth = 16;
   int environmentLights = 64;
   float aoDistance = std::numeric_limits<float>::infinity();
@@ -172,7 +173,9 @@ int run(const Options& options, const CLI::App& app) {
   settings.textureFootprint = options.textureFootprint;
 
   const EnvironmentMap environment = loadSceneEnvironment(scene, options.scene.environment);
-  const EnvironmentSampler environmentSampler(environment, options.misCompensation);
+  const EnvironmentSampler environmentSampler(
+      environment, options.misCompensation,
+      parseEnumName(kLightOrientationNames, options.envOrientation, "--env-orientation", "orientation"));
   if (environmentSampler.isBlack())
     warn(overriddenEnvironment(scene.environment, options.scene.environment).file,
          "environment is black everywhere: only emission will show");
@@ -248,6 +251,9 @@ int main(int argc, char** argv) {
   app.add_option("--bent-normal", options.bentNormal, "ao only: mean unoccluded direction, OpenEXR");
   app.add_flag("--mis-compensation", options.misCompensation,
                "MIS compensation in the environment sampler (env, mis, mediancut)");
+  addNameOption(app, "--env-orientation", options.envOrientation, kLightOrientationNames, "orientation",
+                "env and mis: normal samples the map by its texels times a bound of the cosine with the "
+                "vertex's normal, none by the texels alone");
   app.add_option("--env-lights", options.environmentLights,
                  "median-cut regions of --env-sampling mediancut and point lights of lights (a power of 2 "
                  "in 1..4096, default 64)");

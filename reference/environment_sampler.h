@@ -14,6 +14,11 @@
 // direction within a texel are EnvironmentTexels' (environment_texels.h), shared with the median-cut
 // sampler.
 //
+// Oriented sampling (oriented_environment.h): with LightOrientation::ByNormal the sampler also
+// has a distribution per bucket of normals (normal_buckets.h), the weights times a bound of the
+// cosine with the bucket's normals, for next-event estimation at a vertex whose normal is known.
+// The *(bucket, ...) calls take bucketOf(normal); a bucket of kNoBucket is the plain sampler.
+//
 // MIS compensation (Karlik et al. 2019, "MIS Compensation: Optimizing Sampling Techniques in
 // Multiple Importance Sampling") leaves directions that BRDF sampling finds well to it: only valid
 // combined with BRDF sampling by MIS.
@@ -22,15 +27,26 @@
 #include <vector>
 
 #include "core/distribution.h"
+#include "core/enum_names.h"
 #include "core/environment_map.h"
 #include "reference/environment_texels.h"
+#include "reference/oriented_environment.h"
+
+#include <optional>
 
 namespace iblkit {
 
+enum class LightOrientation { None, ByNormal };
+inline constexpr EnumName<LightOrientation> kLightOrientationNames[] = {{LightOrientation::None, "none"},
+                                                                        {LightOrientation::ByNormal, "normal"}};
+
 class EnvironmentSampler {
  public:
-  // Keeps a reference to `map`, which must outlive the sampler.
-  explicit EnvironmentSampler(const EnvironmentMap& map, bool misCompensation = false);
+  // Keeps a reference to `map`, which must outlive the sampler. A black map is never oriented.
+  explicit EnvironmentSampler(const EnvironmentMap& map, bool misCompensation = false,
+                              LightOrientation orientation = LightOrientation::ByNormal);
+  EnvironmentSampler(const EnvironmentSampler&) = delete;
+  EnvironmentSampler& operator=(const EnvironmentSampler&) = delete;
 
   struct Sample {
     glm::vec3 direction{0.0f};  // world direction, unit length
@@ -61,6 +77,19 @@ class EnvironmentSampler {
   void prefetchLookup(glm::vec2 uv) const;
   static constexpr int kPrefetchStages = 3;
 
+  // Oriented sampling, for a vertex whose shading normal lies in `bucket` (bucketOf(normal)):
+  // the same results as above for bucket == kNoBucket.
+  static constexpr int kNoBucket = -1;
+  bool oriented() const { return oriented_.has_value(); }
+  // The bucket of a non-zero normal; kNoBucket when the sampler is not oriented.
+  int bucketOf(const glm::vec3& normal) const { return oriented_ ? NormalBuckets::of(normal) : kNoBucket; }
+  Sample sample(int bucket, glm::vec2 u) const;
+  float pdf(int bucket, const glm::vec3& worldDirection) const;
+  Lookup lookupAt(int bucket, glm::vec2 uv) const;
+  void prefetchSample(int bucket, glm::vec2 u, int stage) const;
+  void prefetchLookup(int bucket, glm::vec2 uv) const;
+  const OrientedEnvironment* orientedTables() const { return oriented_ ? &*oriented_ : nullptr; }
+
   // True when the map is black everywhere: the sampler then samples uniformly in (u, v).
   bool isBlack() const { return black_; }
   bool misCompensated() const { return compensated_; }
@@ -70,6 +99,7 @@ class EnvironmentSampler {
   bool compensated_ = false;
   bool black_ = false;
   PiecewiseConstant2D distribution_;
+  std::optional<OrientedEnvironment> oriented_;
 };
 
 }  // namespace iblkit

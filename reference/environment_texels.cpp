@@ -44,23 +44,32 @@ std::vector<float> EnvironmentTexels::weights(bool misCompensation, bool* compen
     for (int x = 0; x < width; ++x)
       luminance[static_cast<std::size_t>(y) * width + x] = map_.texelLuminance(x, y);
 
-  // Each texel's weight is its luminance times its solid angle, which is proportional to its
-  // row's cos(theta) span (times height / 2, which keeps the weights near sin(theta) x luminance).
+  // Each texel's weight is the mean over the texel of the bilinear luminance the lookups return,
+  // times its solid angle (proportional to its row's cos(theta) span, times height / 2, which keeps
+  // the weights near sin(theta) x luminance). Texel centres sit at half-integers, so over a texel
+  // the bilinear interpolant of one axis averages its neighbours with weights 1/8, 6/8, 1/8 (rows
+  // clamped at the poles, columns wrapped, as sampleLatLongBilinear has them); the 2D mean is the
+  // product of the two.
   std::vector<float> weights(luminance.size());
+  const auto at = [&](int x, int y) {
+    x = x < 0 ? width - 1 : (x >= width ? 0 : x);
+    y = std::clamp(y, 0, height - 1);
+    return luminance[static_cast<std::size_t>(y) * width + x];
+  };
   for (int y = 0; y < height; ++y) {
     const float rowSolidAngle =
         (rowCosTheta_[static_cast<std::size_t>(y)] - rowCosTheta_[static_cast<std::size_t>(y) + 1]) * 0.5f *
         static_cast<float>(height);
     for (int x = 0; x < width; ++x) {
-      float neighbourhoodMax = 0.0f;
-      for (int dy = -1; dy <= 1; ++dy) {
-        const int sy = std::clamp(y + dy, 0, height - 1);
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int sx = (x + dx + width) % width;
-          neighbourhoodMax = std::max(neighbourhoodMax, luminance[static_cast<std::size_t>(sy) * width + sx]);
-        }
+      const float c = at(x, y);
+      float m = c;
+      for (int dy = -1; dy <= 1; dy += 2) {
+        m = std::max(m, 0.5f * (c + at(x, y + dy)));
+        m = std::max(m, 0.5f * (c + at(x + dy, y)));
+        for (int dx = -1; dx <= 1; dx += 2)
+          m = std::max(m, 0.25f * (c + at(x + dx, y) + at(x, y + dy) + at(x + dx, y + dy)));
       }
-      weights[static_cast<std::size_t>(y) * width + x] = neighbourhoodMax * rowSolidAngle;
+      weights[static_cast<std::size_t>(y) * width + x] = m * rowSolidAngle;
     }
   }
 

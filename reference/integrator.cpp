@@ -115,8 +115,11 @@ struct Integrator::Path {
   glm::vec3 throughput{1.0f};
   float previousPdf = 0.0f;   // BRDF pdf of the ray being traced
   bool previousDelta = true;  // the camera ray, like a mirror ray, sees the environment directly
-  // Light samples taken at the vertex the ray leaves (K at the first hit), for its MIS weight.
+  // Light samples taken at the vertex the ray leaves (K at the first hit), for its MIS weight, and
+  // the environment sampler's bucket of that vertex's normal (an oriented sampler's density there).
   float previousLightSamples = 1.0f;
+  int previousBucket = EnvironmentSampler::kNoBucket;
+  int bucket = EnvironmentSampler::kNoBucket;  // the current vertex's
   bool alive = true;
   Hit hit;
   glm::vec2 escapeUv{0.0f};  // where an escaping ray looks the environment sampler up (mis)
@@ -144,7 +147,7 @@ void Integrator::traceBatch(std::span<const Ray> cameraRays, std::span<PixelSamp
   traceRadiance(paths, samplers, out);
 }
 
-Integrator::LightSample Integrator::sampleLight(const glm::vec3& n, glm::vec2 u) const {
+Integrator::LightSample Integrator::sampleLight(const glm::vec3& n, int bucket, glm::vec2 u) const {
   LightSample sample;
   switch (settings_.envSampling) {
     case EnvSampling::Uniform:
@@ -159,7 +162,7 @@ Integrator::LightSample Integrator::sampleLight(const glm::vec3& n, glm::vec2 u)
     }
     case EnvSampling::Env:
     case EnvSampling::Mis: {
-      const EnvironmentSampler::Sample s = environmentSampler_.sample(u);
+      const EnvironmentSampler::Sample s = environmentSampler_.sample(bucket, u);
       return {s.direction, s.radiance, s.pdf};
     }
     case EnvSampling::MedianCut: {
@@ -219,7 +222,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       for (Path& p : paths)
         if (weighted(p)) {
           p.escapeUv = environmentSampler_.mapUv(p.ray.direction);
-          environmentSampler_.prefetchLookup(p.escapeUv);
+          environmentSampler_.prefetchLookup(p.previousBucket, p.escapeUv);
         }
     for (std::size_t i = 0; i < count; ++i) {
       Path& p = paths[i];
@@ -229,7 +232,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
         out[i].radiance += p.throughput * environment_.radiance(p.ray.direction);
       } else if (combine) {
         const EnvironmentSampler::Lookup seen = strategy == EnvSampling::Mis
-                                                    ? environmentSampler_.lookupAt(p.escapeUv)
+                                                    ? environmentSampler_.lookupAt(p.previousBucket, p.escapeUv)
                                                     : lookupLight(p.ray.direction);
         out[i].radiance +=
             p.throughput * powerHeuristic(p.previousPdf, p.previousLightSamples * seen.pdf) * seen.radiance;
@@ -263,6 +266,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
           splitDraws[i * std::size_t(split) + std::size_t(j)] = sampler.splitLight2D(j, split);
       p.brdf.reset();
       if (!settings_.phong) p.brdf.emplace(p.point.lobes, p.point.shadingNormal, wo);
+      p.bucket = envSampler ? environmentSampler_.bucketOf(p.point.shadingNormal) : EnvironmentSampler::kNoBucket;
     }
     // The light samples' tables and texels, brought in for the whole batch stage by stage.
     const int lightSamples = depth == 0 ? split : 1;
@@ -270,10 +274,11 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       for (int stage = 0; stage < EnvironmentSampler::kPrefetchStages; ++stage)
         for (std::size_t i = 0; i < count; ++i) {
           if (!paths[i].alive) continue;
+          const int bucket = paths[i].bucket;
           if (lightSamples == 1)
-            environmentSampler_.prefetchSample(paths[i].uLight, stage);
+            environmentSampler_.prefetchSample(bucket, paths[i].uLight, stage);
           else
-            for (int j = 0; j < lightSamples; ++j) environmentSampler_.prefetchSample(splitDraw(i, j), stage);
+            for (int j = 0; j < lightSamples; ++j) environmentSampler_.prefetchSample(bucket, splitDraw(i, j), stage);
         }
 
     // Next-event estimation and the bounce.
@@ -289,7 +294,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       // power heuristic (Veach 1997, eq. 9.13).
       const float samples = float(lightSamples);
       for (int j = 0; sampleLights && j < lightSamples; ++j) {
-        const LightSample light = sampleLight(n, lightSamples == 1 ? p.uLight : splitDraw(i, j));
+        const LightSample light = sampleLight(n, p.bucket, lightSamples == 1 ? p.uLight : splitDraw(i, j));
         const float cosTheta = glm::dot(n, light.direction);
         // Directions below the triangle's plane are blocked by the surface itself.
         if (light.pdf > 0.0f && cosTheta > 0.0f && glm::dot(light.direction, ng) > 0.0f &&
@@ -321,6 +326,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       p.previousPdf = scattered.pdf;
       p.previousDelta = scattered.delta;
       p.previousLightSamples = samples;
+      p.previousBucket = p.bucket;
       // Russian roulette (Arvo and Kirk 1990): continue with probability q, dividing by q.
       if (depth + 1 >= kRussianRouletteDepth) {
         const float q = std::min(0.95f, maxComponent(p.throughput));

@@ -151,8 +151,9 @@ class Integrator {
     // irradiance over its probability.
     float pdf = 0.0f;
   };
-  // The environment strategy's direction at a point with shading normal n (not for brdf or lights).
-  LightSample sampleLight(const glm::vec3& n, glm::vec2 u) const;
+  // The environment strategy's direction at a point with shading normal n (not for brdf or lights);
+  // `bucket` is the environment sampler's bucket of n (env, mis: EnvironmentSampler::bucketOf).
+  LightSample sampleLight(const glm::vec3& n, int bucket, glm::vec2 u) const;
   // The density with which the light strategy of mis or mediancut samples world direction w, and
   // the environment's radiance there.
   EnvironmentSampler::Lookup lookupLight(const glm::vec3& w) const;

@@ -54,10 +54,11 @@ inline Scene sphereScene(const Material& material) {
 inline RenderResult renderWith(Scene scene, const EnvironmentMap& environment,
                                const IntegratorSettings& integratorSettings, int size, int spp,
                                std::uint32_t seed = 1, int threads = 2, int medianCutLevels = 6,
-                               int firstSample = 0) {
+                               int firstSample = 0,
+                               LightOrientation orientation = LightOrientation::ByNormal) {
   const Camera camera = sceneCamera(scene, 1.0f);
   const RenderScene renderScene(std::move(scene));
-  const EnvironmentSampler sampler(environment);
+  const EnvironmentSampler sampler(environment, false, orientation);
   std::optional<MedianCutSampler> medianCut;
   std::optional<EnvironmentPointLights> pointLights;
   if (integratorSettings.envSampling == EnvSampling::MedianCut)
