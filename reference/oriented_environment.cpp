@@ -107,6 +107,7 @@ OrientedEnvironment::OrientedEnvironment(const EnvironmentTexels& texels, std::s
   cellRowOffset_[cellCount] = static_cast<int>(rowCdf_.size());
 
   bounds_.resize(cellCount * NormalBuckets::kCount);
+  texelScale_.reserve(cellCount * NormalBuckets::kCount);
   cellDistribution_.reserve(NormalBuckets::kCount);
   std::vector<float> f(cellCount);
   const float halfPi = 0.5f * glm::pi<float>();
@@ -120,6 +121,19 @@ OrientedEnvironment::OrientedEnvironment(const EnvironmentTexels& texels, std::s
       f[cell] = cellWeight_[cell] * bound[cell];
     }
     cellDistribution_.emplace_back(f, columns_, rows_);
+    const PiecewiseConstant2D& cells = cellDistribution_.back();
+    for (int cy = 0; cy < rows_; ++cy)
+      for (int cx = 0; cx < columns_; ++cx) {
+        const std::size_t cell = static_cast<std::size_t>(cy) * columns_ + static_cast<std::size_t>(cx);
+        const float cellProbability =
+            cells.pdf({(static_cast<float>(cx) + 0.5f) / static_cast<float>(columns_),
+                       (static_cast<float>(cy) + 0.5f) / static_cast<float>(rows_)}) /
+            (static_cast<float>(columns_) * static_cast<float>(rows_));
+        texelScale_.push_back(cells.integral() > 0.0f && cellWeight_[cell] > 0.0f
+                                  ? cellProbability / cellWeight_[cell] * static_cast<float>(width_) *
+                                        static_cast<float>(height_)
+                                  : 0.0f);
+      }
   }
 }
 
@@ -137,7 +151,17 @@ struct Found {
   float fraction = 0.0f;
 };
 Found findInCdf(const float* first, const float* last, float u) {
-  const float* found = std::min(std::upper_bound(first, last, u), last - 1);
+  // A cell's rows and columns are few (8 on a 512 x 256 map): counting the entries at or below u
+  // has no branch to mispredict, unlike a binary search.
+  const std::ptrdiff_t size = last - first;
+  const float* found;
+  if (size <= 32) {
+    std::ptrdiff_t count = 0;
+    for (std::ptrdiff_t i = 0; i + 1 < size; ++i) count += first[i] <= u;
+    found = first + count;
+  } else {
+    found = std::min(std::upper_bound(first, last, u), last - 1);
+  }
   const float below = found == first ? 0.0f : found[-1];
   const float fraction = found[0] > below ? std::clamp((u - below) / (found[0] - below), 0.0f, kOneMinusEpsilon) : 0.5f;
   return {static_cast<int>(found - first), fraction};
@@ -163,24 +187,13 @@ OrientedEnvironment::Pick OrientedEnvironment::sample(int bucket, glm::vec2 u) c
   out.texel = {x0 + column.index, rowStart_[static_cast<std::size_t>(cy)] + row.index};
   out.within = {column.fraction, row.fraction};
   // P(cell) P(texel | cell), over the texel's area 1 / (width height) in (u, v).
-  const float cellProbability = picked.pdf / (static_cast<float>(columns_) * static_cast<float>(rows_));
-  const float texelWeight = weights_[static_cast<std::size_t>(out.texel.y) * width_ + out.texel.x];
-  out.pdfUv = cellProbability * (texelWeight / cellWeight_[cell]) * static_cast<float>(width_) *
-              static_cast<float>(height_);
+  out.pdfUv = weights_[static_cast<std::size_t>(out.texel.y) * width_ + out.texel.x] * texelScale(bucket, cell);
   return out;
 }
 
 float OrientedEnvironment::pdfUv(int bucket, glm::ivec2 texel) const {
-  const PiecewiseConstant2D& cells = cellDistribution_[static_cast<std::size_t>(bucket)];
-  if (cells.integral() <= 0.0f) return 0.0f;
-  const int cx = columnCell_[static_cast<std::size_t>(texel.x)], cy = rowCell_[static_cast<std::size_t>(texel.y)];
-  const float cellTotal = cellWeight_[static_cast<std::size_t>(cy) * columns_ + static_cast<std::size_t>(cx)];
-  if (cellTotal <= 0.0f) return 0.0f;
-  const glm::vec2 centre((static_cast<float>(cx) + 0.5f) / static_cast<float>(columns_),
-                         (static_cast<float>(cy) + 0.5f) / static_cast<float>(rows_));
-  const float cellProbability = cells.pdf(centre) / (static_cast<float>(columns_) * static_cast<float>(rows_));
-  const float texelWeight = weights_[static_cast<std::size_t>(texel.y) * width_ + texel.x];
-  return cellProbability * (texelWeight / cellTotal) * static_cast<float>(width_) * static_cast<float>(height_);
+  return weights_[static_cast<std::size_t>(texel.y) * width_ + texel.x] *
+         texelScale(bucket, static_cast<std::size_t>(cellOf(texel)));
 }
 
 void OrientedEnvironment::prefetchSample(int bucket, glm::vec2 u, int stage) const {
@@ -189,17 +202,15 @@ void OrientedEnvironment::prefetchSample(int bucket, glm::vec2 u, int stage) con
   const std::size_t index = static_cast<std::size_t>(cell.y) * columns_ + static_cast<std::size_t>(cell.x);
   __builtin_prefetch(rowCdf_.data() + cellRowOffset_[index]);
   __builtin_prefetch(texelCdf_.data() + cellOffset_[index]);
-  __builtin_prefetch(&cellWeight_[index]);
+  __builtin_prefetch(&texelScale_[static_cast<std::size_t>(bucket) * static_cast<std::size_t>(columns_ * rows_) + index]);
   const glm::ivec2 corner(columnStart_[static_cast<std::size_t>(cell.x)], rowStart_[static_cast<std::size_t>(cell.y)]);
   __builtin_prefetch(&weights_[static_cast<std::size_t>(corner.y) * width_ + corner.x]);
   texels_.prefetchAround(corner);
 }
 
 void OrientedEnvironment::prefetchPdf(int bucket, glm::ivec2 texel) const {
-  const int cx = columnCell_[static_cast<std::size_t>(texel.x)], cy = rowCell_[static_cast<std::size_t>(texel.y)];
-  cellDistribution_[static_cast<std::size_t>(bucket)].prefetchPdf(
-      {(static_cast<float>(cx) + 0.5f) / static_cast<float>(columns_), (static_cast<float>(cy) + 0.5f) / static_cast<float>(rows_)});
-  __builtin_prefetch(&cellWeight_[static_cast<std::size_t>(cy) * columns_ + static_cast<std::size_t>(cx)]);
+  __builtin_prefetch(&texelScale_[static_cast<std::size_t>(bucket) * static_cast<std::size_t>(columns_ * rows_) +
+                                  static_cast<std::size_t>(cellOf(texel))]);
   __builtin_prefetch(&weights_[static_cast<std::size_t>(texel.y) * width_ + texel.x]);
 }
 

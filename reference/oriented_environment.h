@@ -36,7 +36,7 @@ namespace iblkit {
 
 class OrientedEnvironment {
  public:
-  static constexpr int kCellColumns = 128, kCellRows = 64;
+  static constexpr int kCellColumns = 64, kCellRows = 32;
 
   // `weights`: the texels' sampling weights row by row (EnvironmentTexels::weights of `texels`' map).
   // Keeps a reference to `texels`, which must outlive this.
@@ -77,6 +77,12 @@ class OrientedEnvironment {
   std::vector<float> texelCdf_;              // per cell, per row of it: inclusive CDF over the row, ending at 1
   std::vector<PiecewiseConstant2D> cellDistribution_;  // per bucket, over the cells
   std::vector<float> bounds_;                          // per bucket, c_b of each cell
+  // Per bucket and cell: P(cell) / (sum of w_t over the cell) x width x height, so that a texel's
+  // density in (u, v) is its weight times this (one read where the distribution takes three).
+  std::vector<float> texelScale_;
+  float texelScale(int bucket, std::size_t cell) const {
+    return texelScale_[static_cast<std::size_t>(bucket) * static_cast<std::size_t>(columns_ * rows_) + cell];
+  }
 };
 
 }  // namespace iblkit
