@@ -7,26 +7,48 @@ namespace iblkit {
 EnvironmentSampler::EnvironmentSampler(const EnvironmentMap& map, bool misCompensation,
                                        LightOrientation orientation)
     : texels_(map), distribution_(std::vector<float>{0.0f}, 1, 1) {
-  const std::vector<float> weights = texels_.weights(misCompensation, &compensated_);
+  std::vector<float> weights = texels_.weights(misCompensation, &compensated_);
+  // Uncompensated: each texel by its mean bilinear luminance and the point inside it by the
+  // bilinear luminance itself (EnvironmentTexels::sampleWithin), so the density follows the
+  // lookups' radiance instead of being flat across a texel next to a sun.
+  bilinear_ = !compensated_;
+  if (bilinear_) weights = texels_.meanWeights();
   distribution_ = PiecewiseConstant2D(weights, map.width(), map.height());
   black_ = distribution_.integral() <= 0.0f;
+  if (black_) bilinear_ = false;
   if (orientation == LightOrientation::ByNormal && !black_) oriented_.emplace(texels_, weights);
+}
+
+EnvironmentSampler::Sample EnvironmentSampler::pointIn(glm::ivec2 texel, glm::vec2 within, float pdfUv) const {
+  if (bilinear_) {
+    const EnvironmentTexels::WithinTexel w = texels_.sampleWithin(texel, within);
+    within = w.point;
+    pdfUv *= w.density;
+  }
+  const float across = (static_cast<float>(texel.x) + within.x) / static_cast<float>(texels_.map().width());
+  const EnvironmentTexels::Point point = texels_.pointInRow(across, texel.y, within.y);
+  return {point.direction, point.radiance, texels_.solidAnglePdf(pdfUv, texel.y)};
+}
+
+float EnvironmentSampler::withinDensity(const EnvironmentTexels::Location& at) const {
+  return bilinear_ ? texels_.densityWithin(at.texel, texels_.pointWithin(at.uv, at.texel)) : 1.0f;
 }
 
 EnvironmentSampler::Sample EnvironmentSampler::sample(glm::vec2 u) const {
   const PiecewiseConstant2D::Sample s = distribution_.sample(u);
-  // Uniform over the texel's solid angle: the fraction of the way down the row, linear in cos(theta).
-  const float along = std::clamp(
-      s.p.y * static_cast<float>(distribution_.height()) - static_cast<float>(s.offset.y), 0.0f, 1.0f);
-  const EnvironmentTexels::Point point = texels_.pointInRow(s.p.x, s.offset.y, along);
-  return {point.direction, point.radiance, texels_.solidAnglePdf(s.pdf, s.offset.y)};
+  // The point inside the texel: across its columns, and down its row's solid angle (linear in
+  // cos(theta)), uniform or by the bilinear luminance.
+  const glm::vec2 within(
+      std::clamp(s.p.x * static_cast<float>(distribution_.width()) - static_cast<float>(s.offset.x), 0.0f, 1.0f),
+      std::clamp(s.p.y * static_cast<float>(distribution_.height()) - static_cast<float>(s.offset.y), 0.0f, 1.0f));
+  return pointIn(s.offset, within, s.pdf);
 }
 
 float EnvironmentSampler::pdf(const glm::vec3& worldDirection) const { return lookup(worldDirection).pdf; }
 
 EnvironmentSampler::Lookup EnvironmentSampler::lookupAt(glm::vec2 uv) const {
   const EnvironmentTexels::Location at = texels_.locateUv(uv);
-  return {at.radiance, texels_.solidAnglePdf(distribution_.pdf(at.uv), at.texel.y)};
+  return {at.radiance, texels_.solidAnglePdf(distribution_.pdf(at.uv) * withinDensity(at), at.texel.y)};
 }
 
 void EnvironmentSampler::prefetchSample(glm::vec2 u, int stage) const {
@@ -47,9 +69,7 @@ EnvironmentSampler::Sample EnvironmentSampler::sample(int bucket, glm::vec2 u) c
   if (bucket == kNoBucket) return sample(u);
   const OrientedEnvironment::Pick pick = oriented_->sample(bucket, u);
   if (pick.pdfUv <= 0.0f) return {};
-  const float along = (static_cast<float>(pick.texel.x) + pick.within.x) / static_cast<float>(texels_.map().width());
-  const EnvironmentTexels::Point point = texels_.pointInRow(along, pick.texel.y, pick.within.y);
-  return {point.direction, point.radiance, texels_.solidAnglePdf(pick.pdfUv, pick.texel.y)};
+  return pointIn(pick.texel, pick.within, pick.pdfUv);
 }
 
 float EnvironmentSampler::pdf(int bucket, const glm::vec3& worldDirection) const {
@@ -59,7 +79,7 @@ float EnvironmentSampler::pdf(int bucket, const glm::vec3& worldDirection) const
 EnvironmentSampler::Lookup EnvironmentSampler::lookupAt(int bucket, glm::vec2 uv) const {
   if (bucket == kNoBucket) return lookupAt(uv);
   const EnvironmentTexels::Location at = texels_.locateUv(uv);
-  return {at.radiance, texels_.solidAnglePdf(oriented_->pdfUv(bucket, at.texel), at.texel.y)};
+  return {at.radiance, texels_.solidAnglePdf(oriented_->pdfUv(bucket, at.texel) * withinDensity(at), at.texel.y)};
 }
 
 void EnvironmentSampler::prefetchSample(int bucket, glm::vec2 u, int stage) const {

@@ -95,8 +95,15 @@ class EnvironmentSampler {
   bool misCompensated() const { return compensated_; }
 
  private:
+  // The direction at point `within` of `texel` (uniform, or warped by the bilinear luminance),
+  // whose texel has density pdfUv per unit (u, v) area.
+  Sample pointIn(glm::ivec2 texel, glm::vec2 within, float pdfUv) const;
+  // The within-texel density of the point a lookup found (1 unless bilinear).
+  float withinDensity(const EnvironmentTexels::Location& at) const;
+
   EnvironmentTexels texels_;
   bool compensated_ = false;
+  bool bilinear_ = false;  // the point inside a texel by the bilinear luminance (uncompensated maps)
   bool black_ = false;
   PiecewiseConstant2D distribution_;
   std::optional<OrientedEnvironment> oriented_;

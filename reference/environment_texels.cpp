@@ -29,6 +29,10 @@ constexpr float kNearConstant = 1e-2f;
 
 EnvironmentTexels::EnvironmentTexels(const EnvironmentMap& map)
     : map_(map), rowCosTheta_(rowEdges(map.height())) {
+  luminance_.resize(static_cast<std::size_t>(map.width()) * static_cast<std::size_t>(map.height()));
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x)
+      luminance_[static_cast<std::size_t>(y) * map.width() + x] = map.texelLuminance(x, y);
   const double height = map.height();
   rowPdfScale_.resize(static_cast<std::size_t>(map.height()));
   for (std::size_t y = 0; y < rowPdfScale_.size(); ++y) {
@@ -37,12 +41,104 @@ EnvironmentTexels::EnvironmentTexels(const EnvironmentMap& map)
   }
 }
 
+std::vector<float> EnvironmentTexels::meanWeights() const {
+  const int width = map_.width(), height = map_.height();
+  std::vector<float> weights(luminance_.size());
+  for (int y = 0; y < height; ++y) {
+    const float rowSolidAngle =
+        (rowCosTheta_[static_cast<std::size_t>(y)] - rowCosTheta_[static_cast<std::size_t>(y) + 1]) * 0.5f *
+        static_cast<float>(height);
+    for (int x = 0; x < width; ++x) weights[static_cast<std::size_t>(y) * width + x] = nodes({x, y}).mean * rowSolidAngle;
+  }
+  return weights;
+}
+
+EnvironmentTexels::Nodes EnvironmentTexels::nodes(glm::ivec2 texel) const {
+  const int width = map_.width(), height = map_.height();
+  // Neighbours as sampleLatLongBilinear reads them: columns wrapped, rows clamped at the poles.
+  const int left = texel.x == 0 ? width - 1 : texel.x - 1, right = texel.x + 1 == width ? 0 : texel.x + 1;
+  const int up = std::max(texel.y - 1, 0), down = std::min(texel.y + 1, height - 1);
+  const int xs[3] = {left, texel.x, right}, ys[3] = {up, texel.y, down};
+  float l[3][3];
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) l[j][i] = luminance_[static_cast<std::size_t>(ys[j]) * width + xs[i]];
+  Nodes n;
+  for (int j = 0; j < 3; j += 2)
+    for (int i = 0; i < 3; i += 2) n.v[j][i] = 0.25f * (l[1][1] + l[1][i] + l[j][1] + l[j][i]);
+  for (int j = 0; j < 3; j += 2) n.v[j][1] = 0.5f * (l[1][1] + l[j][1]);
+  for (int i = 0; i < 3; i += 2) n.v[1][i] = 0.5f * (l[1][1] + l[1][i]);
+  n.v[1][1] = l[1][1];
+  // Each quarter's mean is the mean of its four corners; the texel's the mean of the quarters'.
+  float sum = 0.0f;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) sum += n.v[j][i] + n.v[j][i + 1] + n.v[j + 1][i] + n.v[j + 1][i + 1];
+  n.mean = sum / 16.0f;
+  return n;
+}
+
+namespace {
+// The largest float below 1.
+constexpr float kBelowOne = 0x1.fffffep-1f;
+// A point of [0, 1] drawn from u with density proportional to the line from a (at 0) to b (at 1)
+// (pbrt-v4's SampleLinear).
+float sampleLinear(float u, float a, float b) {
+  if (u == 0.0f && a == 0.0f) return 0.0f;
+  const float x = u * (a + b) / (a + std::sqrt(std::max(0.0f, glm::mix(a * a, b * b, u))));
+  return std::min(x, kBelowOne);
+}
+// A point of [0, 1] drawn from u proportionally to the piecewise-linear function with values
+// n0, n1, n2 at 0, 1/2 and 1.
+float sampleTwoSegments(float u, float n0, float n1, float n2) {
+  const float first = n0 + n1, second = n1 + n2;
+  if (first + second <= 0.0f) return u;
+  const float split = first / (first + second);
+  if (u < split) return 0.5f * sampleLinear(std::min(u / split, kBelowOne), n0, n1);
+  return 0.5f + 0.5f * sampleLinear(std::min((u - split) / (1.0f - split), kBelowOne), n1, n2);
+}
+}  // namespace
+
+EnvironmentTexels::WithinTexel EnvironmentTexels::sampleWithin(glm::ivec2 texel, glm::vec2 u) const {
+  const Nodes n = nodes(texel);
+  if (n.mean <= 0.0f) return {u, 1.0f};
+  // Down the texel: the marginal, piecewise linear through the rows' means (trapezoids).
+  float rows[3];
+  for (int j = 0; j < 3; ++j) rows[j] = n.v[j][0] + 2.0f * n.v[j][1] + n.v[j][2];
+  WithinTexel out;
+  out.point.y = sampleTwoSegments(u.y, rows[0], rows[1], rows[2]);
+  // Across it, at that height: the nodes interpolated between the two rows around it.
+  const int j = out.point.y < 0.5f ? 0 : 1;
+  const float t = 2.0f * out.point.y - static_cast<float>(j);
+  float across[3];
+  for (int i = 0; i < 3; ++i) across[i] = glm::mix(n.v[j][i], n.v[j + 1][i], t);
+  out.point.x = sampleTwoSegments(u.x, across[0], across[1], across[2]);
+  out.density = densityAt(n, out.point);
+  return out;
+}
+
+float EnvironmentTexels::densityWithin(glm::ivec2 texel, glm::vec2 point) const {
+  const Nodes n = nodes(texel);
+  return n.mean <= 0.0f ? 1.0f : densityAt(n, point);
+}
+
+float EnvironmentTexels::densityAt(const Nodes& n, glm::vec2 point) {
+  const float sx = std::clamp(point.x, 0.0f, 1.0f) * 2.0f, sy = std::clamp(point.y, 0.0f, 1.0f) * 2.0f;
+  const int i = std::min(static_cast<int>(sx), 1), j = std::min(static_cast<int>(sy), 1);
+  const float fx = sx - static_cast<float>(i), fy = sy - static_cast<float>(j);
+  const float top = glm::mix(n.v[j][i], n.v[j][i + 1], fx), bottom = glm::mix(n.v[j + 1][i], n.v[j + 1][i + 1], fx);
+  return glm::mix(top, bottom, fy) / n.mean;
+}
+
+glm::vec2 EnvironmentTexels::pointWithin(glm::vec2 uv, glm::ivec2 texel) const {
+  const std::size_t y = static_cast<std::size_t>(texel.y);
+  const float cosTheta = std::cos(glm::pi<float>() * std::clamp(uv.y, 0.0f, 1.0f));
+  const float span = rowCosTheta_[y] - rowCosTheta_[y + 1];
+  return {std::clamp(uv.x * static_cast<float>(map_.width()) - static_cast<float>(texel.x), 0.0f, 1.0f),
+          std::clamp((rowCosTheta_[y] - cosTheta) / span, 0.0f, 1.0f)};
+}
+
 std::vector<float> EnvironmentTexels::weights(bool misCompensation, bool* compensated) const {
   const int width = map_.width(), height = map_.height();
-  std::vector<float> luminance(static_cast<std::size_t>(width) * height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      luminance[static_cast<std::size_t>(y) * width + x] = map_.texelLuminance(x, y);
+  const std::vector<float>& luminance = luminance_;
 
   // Each texel's weight is the mean over the texel of the bilinear luminance the lookups return,
   // times its solid angle (proportional to its row's cos(theta) span, times height / 2, which keeps

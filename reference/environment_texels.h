@@ -34,6 +34,24 @@ class EnvironmentTexels {
   // luminance x solid angle; MIS-compensated when asked and the map is not near-constant
   // (*compensated says whether it was).
   std::vector<float> weights(bool misCompensation, bool* compensated) const;
+  // The same with each texel's mean bilinear luminance instead of its maximum: the weights that
+  // sampleWithin's density completes, so that texel and point together are drawn proportionally
+  // to the bilinear luminance (never MIS-compensated).
+  std::vector<float> meanWeights() const;
+
+  // Inside a texel: a point of [0,1]^2 (across its columns, down its solid angle, as pointInRow
+  // takes them) drawn from u proportionally to the bilinear luminance the lookups return there, as
+  // a bilinear function of the point (exact at the texel's centre, edges and corners, which
+  // split it into four bilinear quarters), and its density relative to the uniform point. The
+  // density's mean over the texel is 1; a black texel gives the uniform point with density 1.
+  struct WithinTexel {
+    glm::vec2 point{0.5f};
+    float density = 1.0f;
+  };
+  WithinTexel sampleWithin(glm::ivec2 texel, glm::vec2 u) const;
+  float densityWithin(glm::ivec2 texel, glm::vec2 point) const;
+  // Where in its texel the direction of lat-long coordinates uv lies, in sampleWithin's terms.
+  glm::vec2 pointWithin(glm::vec2 uv, glm::ivec2 texel) const;
 
   struct Point {
     glm::vec3 direction{0.0f};  // world direction, unit length
@@ -68,7 +86,17 @@ class EnvironmentTexels {
   void prefetchAround(glm::ivec2 texel) const;
 
  private:
+  // The 3 x 3 node values of a texel's bilinear luminance (rows top edge, centre, bottom edge;
+  // columns left edge, centre, right edge) and their mean over the texel.
+  struct Nodes {
+    float v[3][3];
+    float mean;
+  };
+  Nodes nodes(glm::ivec2 texel) const;
+  static float densityAt(const Nodes& n, glm::vec2 point);  // n.mean > 0
+
   const EnvironmentMap& map_;
+  std::vector<float> luminance_;    // per texel, row by row
   std::vector<float> rowCosTheta_;  // height + 1 row edges: cos of the polar angle from +Y, 1 to -1
   std::vector<float> rowPdfScale_;  // per row: 1 / (2 pi H (rowCosTheta_[y] - rowCosTheta_[y + 1]))
 };

@@ -18,7 +18,10 @@ std::optional<int> medianCutLevelsOf(int regions) {
 MedianCutSampler::MedianCutSampler(const EnvironmentMap& map, int levels, bool misCompensation)
     : texels_(map), regions_(medianCutLights(map, levels)) {
   const int width = map.width();
-  const std::vector<float> weights = texels_.weights(misCompensation, &compensated_);
+  std::vector<float> weights = texels_.weights(misCompensation, &compensated_);
+  // As the environment sampler has them (environment_sampler.h), so the two densities are one.
+  bilinear_ = !compensated_;
+  if (bilinear_) weights = texels_.meanWeights();
   regionOf_.assign(weights.size(), 0);
   std::vector<float> regionWeights;
   regionTexels_.reserve(regions_.size());
@@ -66,12 +69,18 @@ MedianCutSampler::Sample MedianCutSampler::sample(glm::vec2 u) const {
                  kOneMinusEpsilon);
   const PiecewiseConstant2D::Sample s = regionTexels_[static_cast<std::size_t>(i)].sample({rescaled, u.y});
   const int x = r.x0 + s.offset.x, y = r.y0 + s.offset.y;
-  const float rows = static_cast<float>(r.y1 - r.y0);
-  const float along = std::clamp(s.p.y * rows - static_cast<float>(s.offset.y), 0.0f, 1.0f);
-  const float u0 = (static_cast<float>(r.x0) + s.p.x * static_cast<float>(r.x1 - r.x0)) /
-                   static_cast<float>(texels_.map().width());
-  const EnvironmentTexels::Point point = texels_.pointInRow(u0, y, along);
-  return {point.direction, point.radiance, texels_.solidAnglePdf(uvPdf(i, x, y), y)};
+  const float rows = static_cast<float>(r.y1 - r.y0), columns = static_cast<float>(r.x1 - r.x0);
+  glm::vec2 within(std::clamp(s.p.x * columns - static_cast<float>(s.offset.x), 0.0f, 1.0f),
+                   std::clamp(s.p.y * rows - static_cast<float>(s.offset.y), 0.0f, 1.0f));
+  float density = 1.0f;
+  if (bilinear_) {
+    const EnvironmentTexels::WithinTexel w = texels_.sampleWithin({x, y}, within);
+    within = w.point;
+    density = w.density;
+  }
+  const float u0 = (static_cast<float>(x) + within.x) / static_cast<float>(texels_.map().width());
+  const EnvironmentTexels::Point point = texels_.pointInRow(u0, y, within.y);
+  return {point.direction, point.radiance, texels_.solidAnglePdf(uvPdf(i, x, y) * density, y)};
 }
 
 float MedianCutSampler::pdf(const glm::vec3& worldDirection) const { return lookup(worldDirection).pdf; }
@@ -79,7 +88,8 @@ float MedianCutSampler::pdf(const glm::vec3& worldDirection) const { return look
 MedianCutSampler::Lookup MedianCutSampler::lookup(const glm::vec3& worldDirection) const {
   const EnvironmentTexels::Location at = texels_.locate(worldDirection);
   const int i = regionOf_[static_cast<std::size_t>(at.texel.y) * texels_.map().width() + at.texel.x];
-  return {at.radiance, texels_.solidAnglePdf(uvPdf(i, at.texel.x, at.texel.y), at.texel.y)};
+  const float density = bilinear_ ? texels_.densityWithin(at.texel, texels_.pointWithin(at.uv, at.texel)) : 1.0f;
+  return {at.radiance, texels_.solidAnglePdf(uvPdf(i, at.texel.x, at.texel.y) * density, at.texel.y)};
 }
 
 }  // namespace iblkit

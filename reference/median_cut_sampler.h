@@ -62,6 +62,7 @@ class MedianCutSampler {
 
   EnvironmentTexels texels_;
   bool compensated_ = false;
+  bool bilinear_ = false;  // texels by their mean bilinear luminance, the point inside by the luminance itself
   std::vector<EnvironmentLight> regions_;
   std::vector<PiecewiseConstant2D> regionTexels_;  // per region, over its own texels
   // Over the regions, by their summed weights; built in the constructor's body, after the
