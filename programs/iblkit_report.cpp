@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
          "a converged reference's estimated relMSE is at most this, whatever the modes' (default 1e-3)")
       ->check(CLI::Range(0.0, 1e9));
   app.add_option("--reference-light-samples", settings.referenceLightSamples,
-                 "iblkit-trace --camera-light-samples of the reference passes (default 4)")
+                 "iblkit-trace --camera-light-samples of the reference passes (default 2)")
       ->check(CLI::Range(1, 64));
   app.add_option("--bench", settings.benchFrames, "frames for each mode's median frame time (0: none)")
       ->check(CLI::Range(0, 1000));

@@ -1,18 +1,18 @@
 #pragma once
 // Importance sampling of a lat-long environment map (the reference path tracer's light sampler).
 //
-// Texels are drawn from a piecewise-constant distribution proportional to luminance x solid
-// angle (marginal over rows, conditional over columns: PiecewiseConstant2D), the standard
-// inverted-CDF construction (pbrt-v4 13.6 / Mitsuba 3 `envmap`). Within the chosen texel the
-// direction is uniform over its solid angle: the row's fraction picks cos(theta) linearly between
-// the row's edges, not theta. The density per steradian is then exactly constant on each texel,
-//   pdf(w) = pdf_uv(texel) / (2 pi H (cos theta_top - cos theta_bottom)),
+// Texels are drawn from a piecewise-constant distribution proportional to their weights
+// (marginal over rows, conditional over columns: PiecewiseConstant2D), the standard inverted-CDF
+// construction (pbrt-v4 13.6 / Mitsuba 3 `envmap`). The weights are each texel's mean bilinear
+// luminance x solid angle, and the point inside the texel is drawn by the bilinear luminance itself
+// (EnvironmentTexels::sampleWithin), the row's fraction picking cos(theta) linearly between the
+// row's edges, not theta: the density per steradian is that bilinear function over its mean times
+//   pdf_uv(texel) / (2 pi H (cos theta_top - cos theta_bottom)),
 // so a constant map is sampled exactly uniformly over the sphere (the usual uniform-in-theta row,
 // with its density pdf_uv / (2 pi^2 sin theta), varies by 2x and more across the rows nearest the
-// poles of a small map, which costs the white furnace test its noise floor).
-// The texel weights (the 3x3-maximum luminance x solid angle, optionally MIS-compensated) and the
-// direction within a texel are EnvironmentTexels' (environment_texels.h), shared with the median-cut
-// sampler.
+// poles of a small map, which costs the white furnace test its noise floor). With MIS compensation
+// the weights are the compensated maxima and the point inside a texel is uniform. Weights and
+// points are EnvironmentTexels' (environment_texels.h), shared with the median-cut sampler.
 //
 // Oriented sampling (oriented_environment.h): with LightOrientation::ByNormal the sampler also
 // has a distribution per bucket of normals (normal_buckets.h), the weights times a bound of the

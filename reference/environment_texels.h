@@ -1,20 +1,31 @@
 #pragma once
 // The texels of a lat-long environment as the reference's light samplers draw them
-// (environment_sampler.h, median_cut_sampler.h): each texel's sampling weight, and a direction
-// uniform over a texel's solid angle with its density per steradian. Both samplers pick a texel,
-// and a point of [0,1]^2 inside it, from a piecewise-constant distribution over these weights; this
-// is what turns that point into a direction.
+// (environment_sampler.h, median_cut_sampler.h, oriented_environment.h): each texel's sampling
+// weight, the point inside a texel, and the direction at that point with its density per steradian.
+// The samplers pick a texel, and a point of [0,1]^2 inside it, from a piecewise-constant
+// distribution over these weights; this is what turns that point into a direction.
 //
-// Weights: luminance x solid angle per texel, the luminance being the maximum of the texel's 3x3
-// neighbourhood (wrapped in longitude): lookups are bilinear, which spreads a texel's radiance into
-// its neighbours, so the pdf is non-zero wherever the looked-up radiance is. Optionally with MIS
-// compensation (Karlik et al. 2019; pbrt-v4's ImageInfiniteLight, Mitsuba 3's `mis_compensation`):
-// the mean weight subtracted, keeping a floor of 0.1% of the mean, skipped for near-constant maps
-// (max - min <= 1% of the mean).
+// Weights, two kinds. meanWeights (what the samplers use): the mean over the texel of the bilinear
+// luminance the lookups return, times the texel's solid angle; the point inside the texel is then
+// drawn by that bilinear luminance itself (sampleWithin), so texel and point together follow the
+// lookup's radiance, and next to a sun a texel's samples go where its light is. The luminance over
+// a texel is four bilinear quarters through the values at its centre (the texel), its edge
+// midpoints (the mean of it and a neighbour) and its corners (the mean of four): exact for the
+// lookup in (u, v), and as a function of the point (across, down the solid angle) exact at those
+// nine nodes. weights: the maximum of that bilinear luminance over the texel, with a uniform point;
+// optionally with MIS compensation (Karlik et al. 2019; pbrt-v4's ImageInfiniteLight, Mitsuba 3's
+// `mis_compensation`): the mean weight subtracted, keeping a floor of 0.1% of the mean, skipped
+// for near-constant maps (max - min <= 1% of the mean). Both are non-zero wherever a lookup inside
+// the texel can return radiance (the texel's 3x3 neighbourhood is not black).
+//
+// What this bought (docs/benchmarks.md, "Variance per sample"): the earlier weights, the 3x3
+// maximum with a uniform point, spread a one-texel sun's weight over nine texels whose lookups
+// mostly return a fraction of it; the bunny under sky had 4x the relMSE per sample.
 //
 // Directions: within a texel the fraction of the way down its row is linear in cos(theta), not
-// theta, so the density per steradian is exactly constant on each texel:
-//   pdf(w) = pdf_uv(texel) / (2 pi H (cos theta_top - cos theta_bottom)).
+// theta, so a uniform point has a density per steradian exactly constant on the texel:
+//   pdf(w) = pdf_uv(texel) / (2 pi H (cos theta_top - cos theta_bottom)),
+// and sampleWithin's point that times its density relative to uniform.
 
 #include <glm/glm.hpp>
 #include <vector>
@@ -30,9 +41,9 @@ class EnvironmentTexels {
 
   const EnvironmentMap& map() const { return map_; }
 
-  // The weights of the texels, row by row (row 0 first), proportional to the 3x3-maximum
-  // luminance x solid angle; MIS-compensated when asked and the map is not near-constant
-  // (*compensated says whether it was).
+  // The weights of the texels, row by row (row 0 first), proportional to the maximum bilinear
+  // luminance over the texel x solid angle; MIS-compensated when asked and the map is not
+  // near-constant (*compensated says whether it was).
   std::vector<float> weights(bool misCompensation, bool* compensated) const;
   // The same with each texel's mean bilinear luminance instead of its maximum: the weights that
   // sampleWithin's density completes, so that texel and point together are drawn proportionally

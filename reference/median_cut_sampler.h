@@ -2,14 +2,14 @@
 // Median-cut importance sampling of a lat-long environment map (--env-sampling mediancut;
 // docs/reference-tracer.md "Median-cut sampling"): the map is cut into 2^levels regions of equal
 // energy (medianCutLights, Debevec 2005, core/environment_lights.h); a sample picks a region by its
-// power, then a texel inside it by the region's own piecewise-constant distribution, then a
-// direction uniform over the texel's solid angle (EnvironmentTexels, shared with
-// EnvironmentSampler). The region is chosen with u.x, which is then rescaled to [0,1) and, with u.y,
+// power, then a texel inside it by the region's own piecewise-constant distribution, then the
+// point inside the texel by its bilinear luminance, as EnvironmentSampler draws it (EnvironmentTexels,
+// shared with EnvironmentSampler). The region is chosen with u.x, which is then rescaled to [0,1) and, with u.y,
 // picks the texel (marginal over the region's rows, conditional over its columns), so one 2D sample
 // does all three steps and a stratified u spreads the samples evenly over the equal-energy regions.
 //
-// A region's power is the sum of the sampler's texel weights inside it (the 3x3-maximum luminance x
-// solid angle of EnvironmentTexels, MIS-compensated when asked), not the light's own luminance
+// A region's power is the sum of the sampler's texel weights inside it (the mean bilinear luminance
+// x solid angle of EnvironmentTexels; the compensated maxima when asked), not the light's own luminance
 // power: a region whose texels are black can still receive bilinear radiance across its border,
 // and must keep a non-zero density there. The density of texel t in region r is then
 //   P(r) p(t | r) = (W_r / W) (w_t / W_r) = w_t / W,

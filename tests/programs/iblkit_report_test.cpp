@@ -234,7 +234,7 @@ TEST(IblkitReport, ReferencesConvergeAtTheAbsoluteBoundWithSplitLightSamples) {
       << output;
   const json document = readJson(out / "report.json");
   EXPECT_EQ(document["settings"]["maxReferenceRelMse"].get<double>(), 1e-3);
-  EXPECT_EQ(document["settings"]["referenceLightSamples"].get<int>(), 4);
+  EXPECT_EQ(document["settings"]["referenceLightSamples"].get<int>(), 2);
   ASSERT_EQ(document["cases"].size(), 1u);
   const json& reference = document["cases"][0]["reference"];
   EXPECT_TRUE(reference["converged"].get<bool>()) << reference.dump();
