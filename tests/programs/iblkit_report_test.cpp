@@ -216,7 +216,7 @@ TEST(IblkitReport, GltfOcclusionModesOnlyOnScenesWithAnOcclusionTexture) {
   }
 }
 
-// The references' defaults: 4 light samples at the first hit (in every trace command, so in the
+// The references' defaults: 2 light samples at the first hit (in every trace command, so in the
 // stage keys) and converged at the absolute bound, relMSE <= 1e-3 (--negligible-relmse 1e-3 makes
 // that bound the target whatever the sh frame's error), which the tiny diffuse sphere under city
 // reaches well before the 64-pass maximum (the count aimed from the measured noise); report.json
@@ -247,7 +247,7 @@ TEST(IblkitReport, ReferencesConvergeAtTheAbsoluteBoundWithSplitLightSamples) {
     const std::string text = command.get<std::string>();
     if (text.find("iblkit-trace") == std::string::npos) continue;
     ++traces;
-    EXPECT_NE(text.find("--camera-light-samples 4"), std::string::npos) << text;
+    EXPECT_NE(text.find("--camera-light-samples 2"), std::string::npos) << text;
   }
   EXPECT_EQ(traces, 1);
   std::ifstream html(out / "report.html");

@@ -97,7 +97,7 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   const auto split = std::find(trace.begin(), trace.end(), "--camera-light-samples");
   ASSERT_NE(split, trace.end());
   ASSERT_NE(split + 1, trace.end());
-  EXPECT_EQ(*(split + 1), "4");
+  EXPECT_EQ(*(split + 1), "2");
   ReportSettings single = fixture.settings;
   single.referenceLightSamples = 1;
   const std::vector<std::string> plain = traceCommand(single, fixture.inputs, 0).arguments;
