@@ -58,14 +58,9 @@ TEST(EnvironmentSampler, RotatedScaledMapPassesChiSquareWithAndWithoutCompensati
 }
 
 TEST(EnvironmentSampler, RealMapPassesChiSquare) {
-  const std::filesystem::path file = test::assetsDir() / "hdri" / "sky.exr";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "assets not fetched: " << file;
-  // Box-downsampled to 128x64 so the quadrature of the step-function pdf stays quick; the
-  // content (a sun and sky) is the real map's.
-  const EnvironmentMap full = loadEnvironmentMap(file);
-  EnvironmentMap map = EnvironmentMap::fromImage(downsample2x(downsample2x(full.image())), file);
-  map.setRotationDegrees(-60.0f);
-  const EnvironmentSampler sampler(map);
+  const std::optional<EnvironmentMap> map = test::downsampledSky();
+  if (!map) GTEST_SKIP() << "assets not fetched";
+  const EnvironmentSampler sampler(*map);
   const test::Chi2Result r = runChi2(sampler, "env_sky");
   EXPECT_TRUE(r.passed) << r.message;
 }

@@ -10,8 +10,11 @@
 #include <string>
 
 #include "core/environment_map.h"
+#include "core/environment_map_file.h"
+#include "core/image.h"
 #include "core/latlong.h"
 #include "support/chi2.h"
+#include "support/test_paths.h"
 
 namespace iblkit::test {
 
@@ -29,6 +32,17 @@ inline EnvironmentMap spotMap(int width = 64) {
       "spot");
   map.setRotationDegrees(35.0f);
   map.setIntensity(2.0f);
+  return map;
+}
+
+// The bundled sky.exr (a sun and sky), box-downsampled to 128x64 so that the quadrature of a
+// chi-square test stays quick, and turned by -60 degrees; nothing when the assets are not fetched.
+inline std::optional<EnvironmentMap> downsampledSky() {
+  const std::filesystem::path file = assetsDir() / "hdri" / "sky.exr";
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  const EnvironmentMap full = loadEnvironmentMap(file);
+  EnvironmentMap map = EnvironmentMap::fromImage(downsample2x(downsample2x(full.image())), file);
+  map.setRotationDegrees(-60.0f);
   return map;
 }
 

@@ -52,12 +52,9 @@ TEST(OrientedEnvironment, BucketsPassChiSquareOnARotatedPeakedMap) {
 }
 
 TEST(OrientedEnvironment, RealMapBucketPassesChiSquare) {
-  const std::filesystem::path file = test::assetsDir() / "hdri" / "sky.exr";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "assets not fetched: " << file;
-  const EnvironmentMap full = loadEnvironmentMap(file);
-  EnvironmentMap map = EnvironmentMap::fromImage(downsample2x(downsample2x(full.image())), file);
-  map.setRotationDegrees(-60.0f);
-  const EnvironmentSampler sampler(map);
+  const std::optional<EnvironmentMap> map = test::downsampledSky();
+  if (!map) GTEST_SKIP() << "assets not fetched";
+  const EnvironmentSampler sampler(*map);
   const test::Chi2Result r = runChi2(sampler, glm::vec3(0.3f, 0.9f, 0.1f), "oriented_sky");
   EXPECT_TRUE(r.passed) << r.message;
 }
