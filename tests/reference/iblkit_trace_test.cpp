@@ -60,6 +60,17 @@ TEST_F(IblkitTrace, WritesTheBeautyLayersAndPreview) {
   EXPECT_GT(readExr(dir_ / "depth.exr").stats().max.r, 0.0f);
 }
 
+// --env-orientation none renders the plain environment sampler's image, the default (normal) the
+// oriented one's: the same image within the noise of 64 spp, and not the same samples.
+TEST_F(IblkitTrace, EnvironmentOrientationsRenderTheSameImage) {
+  std::string output;
+  ASSERT_EQ(trace("scene.json -o oriented.exr --spp 64 --threads 2", &output), 0) << output;
+  ASSERT_EQ(trace("scene.json -o plain.exr --spp 64 --threads 2 --env-orientation none", &output), 0) << output;
+  const Image oriented = readExr(dir_ / "oriented.exr"), plain = readExr(dir_ / "plain.exr");
+  EXPECT_NEAR(oriented.stats().meanLuminance / plain.stats().meanLuminance, 1.0, 0.01);
+  EXPECT_NE(oriented.pixels(), plain.pixels());
+}
+
 // mediancut samples the map unbiasedly (the image's mean is mis's within the noise of 64 spp);
 // lights with 16 point lights renders the biased approximation; both show the map itself where
 // the camera sees it.
@@ -285,6 +296,8 @@ TEST_F(IblkitTrace, BadArgumentsGiveOneLineErrors) {
        "iblkit-trace: --env-lights: must be a power of 2 in 1..4096, not 48\n"},
       {"scene.json -o out.exr --env-sampling mediancut --env-lights 8192", 2,
        "iblkit-trace: --env-lights: must be a power of 2 in 1..4096, not 8192\n"},
+      {"scene.json -o out.exr --env-orientation up", 2,
+       "iblkit-trace: --env-orientation: unknown orientation 'up' (expected one of none, normal)\n"},
       {"scene.json -o out.exr --env-lights 16", 2,
        "iblkit-trace: --env-lights: needs --env-sampling mediancut or lights\n"},
       {"scene.json -o out.exr --env missing.exr", 1,
