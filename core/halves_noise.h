@@ -21,4 +21,12 @@ namespace iblkit {
 // Throws Error when the sizes differ or the mask scores no pixel.
 double halvesRelMseEstimate(const Image& a, const Image& b, std::span<const std::uint8_t> mask = {});
 
+// The part of that estimate one component of the image carries (the light after one scattering
+// event, say, of a = aPart + aRest): per scored pixel and RGB channel ((aPart - bPart) / 2)^2 over
+// the whole image's (m^2 + epsilon), m = (a + b) / 2, averaged. The parts of a split add up to the
+// whole's estimate but for twice their covariance. Throws Error when the sizes differ or the mask
+// scores no pixel.
+double halvesPartRelMseEstimate(const Image& aPart, const Image& bPart, const Image& a, const Image& b,
+                                std::span<const std::uint8_t> mask = {});
+
 }  // namespace iblkit

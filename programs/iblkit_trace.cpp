@@ -225,9 +225,10 @@ int run(const Options& options, const CLI::App& app) {
     writeNoiseSplitJson(options.noiseSplit, *split, flip);
     std::printf(
         "noise split: relMSE of the mean %.3g (object %.3g over %zu px, %.0f%%; ground %.3g over %zu px, "
-        "%.0f%%), halves' FLIP %.4f\n",
+        "%.0f%%; direct light %.0f%%, indirect %.0f%%), halves' FLIP %.4f\n",
         split->relMse, split->object.relMse, split->object.pixels, 100.0 * split->object.share,
-        split->ground.relMse, split->ground.pixels, 100.0 * split->ground.share, flip);
+        split->ground.relMse, split->ground.pixels, 100.0 * split->ground.share, 100.0 * split->direct.share,
+        100.0 * split->indirect.share, flip);
   }
   return 0;
 }

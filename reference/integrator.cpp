@@ -136,7 +136,10 @@ void Integrator::traceBatch(std::span<const Ray> cameraRays, std::span<PixelSamp
     throw std::invalid_argument("Integrator::traceBatch: rays, samplers and results differ in number");
   for (CameraSample& result : out) result = CameraSample{};
   if (settings_.kind == IntegratorKind::AmbientOcclusion) {
-    for (std::size_t i = 0; i < out.size(); ++i) traceOcclusion(cameraRays[i], samplers[i], cone, out[i]);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      traceOcclusion(cameraRays[i], samplers[i], cone, out[i]);
+      out[i].direct = out[i].radiance;
+    }
     return;
   }
   std::vector<Path> paths(cameraRays.size());
@@ -202,6 +205,11 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
     return splitDraws[i * std::size_t(split) + std::size_t(j)];
   };
 
+  // What has arrived after at most one scattering event: everything so far, taken once the first
+  // vertex's escapes and the second vertex's emission are in (or when every path ended before).
+  const auto keepDirect = [&] {
+    for (CameraSample& result : out) result.direct = result.radiance;
+  };
   for (int depth = 0;; ++depth) {
     bool any = false;
     for (std::size_t i = 0; i < count; ++i) {
@@ -211,7 +219,10 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       p.hit = intersect(p.ray, RayQuery{depth == 0 ? RayKind::Camera : RayKind::Secondary, p.cone});
       ++out[i].rays;
     }
-    if (!any) return;
+    if (!any) {
+      if (depth <= 1) keepDirect();
+      return;
+    }
 
     // Rays that escape. The environment seen by a BRDF-sampled ray counts when BRDF sampling is a
     // strategy of its own (brdf), MIS-weighted against the light strategy (mis, mediancut), or
@@ -268,6 +279,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       if (!settings_.phong) p.brdf.emplace(p.point.lobes, p.point.shadingNormal, wo);
       p.bucket = envSampler ? environmentSampler_.bucketOf(p.point.shadingNormal) : EnvironmentSampler::kNoBucket;
     }
+    if (depth == 1) keepDirect();
     // The light samples' tables and texels, brought in for the whole batch stage by stage.
     const int lightSamples = depth == 0 ? split : 1;
     if (envSampler)

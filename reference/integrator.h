@@ -91,6 +91,11 @@ struct IntegratorSettings {
 // Everything one camera sample produces; the renderer averages these per pixel.
 struct CameraSample {
   glm::vec3 radiance{0.0f};  // the estimate (ao: the visibility, grey)
+  // The part of `radiance` that reached the camera after at most one scattering event: the map
+  // seen directly, emission at the first two vertices, the first vertex's next-event estimate and
+  // its BRDF ray's escape. Bit for bit the direct integrator's estimate with the same numbers;
+  // radiance - direct is the indirect light (the noise split by depth). ao: the visibility.
+  glm::vec3 direct{0.0f};
   // First-hit features (zero where the camera ray escapes): base colour, world shading normal,
   // distance along the unit camera ray, and 1 for a non-ground object (the object mask).
   glm::vec3 albedo{0.0f};

@@ -28,6 +28,7 @@ RenderResult meanOf(const RenderResult& a, const RenderResult& b) {
   };
   mean.beauty = average(a.beauty, b.beauty, 0.5f);
   mean.albedo = average(a.albedo, b.albedo, 0.5f);
+  mean.direct = average(a.direct, b.direct, 0.5f);
   mean.depth = average(a.depth, b.depth, 0.5f);
   mean.mask = average(a.mask, b.mask, 0.5f);
   mean.variance = average(a.variance, b.variance, 0.25f);
@@ -82,7 +83,21 @@ NoiseSplit renderNoiseSplit(const Integrator& integrator, const Camera& camera,
     s->share = total > 0.0 ? s->relMse * double(s->pixels) / total : 0.0;
   const std::size_t pixels = split.object.pixels + split.ground.pixels;
   split.relMse = pixels > 0 ? total / double(pixels) : 0.0;
-  if (pixels > 0) split.geometry = std::move(geometry);
+  if (pixels > 0) {
+    // By depth: the direct part, and the indirect one as beauty - direct.
+    const auto indirectOf = [](const RenderResult& r) {
+      Image out = r.beauty;
+      for (std::size_t i = 0; i < out.pixelCount(); ++i) out.pixels()[i] -= r.direct.pixels()[i];
+      return out;
+    };
+    const Image indirectA = indirectOf(split.a), indirectB = indirectOf(split.b);
+    split.direct = {pixels, halvesPartRelMseEstimate(split.a.direct, split.b.direct, split.a.beauty, split.b.beauty, geometry), 0.0};
+    split.indirect = {pixels, halvesPartRelMseEstimate(indirectA, indirectB, split.a.beauty, split.b.beauty, geometry), 0.0};
+    const double parts = split.direct.relMse + split.indirect.relMse;
+    split.direct.share = parts > 0.0 ? split.direct.relMse / parts : 0.0;
+    split.indirect.share = parts > 0.0 ? split.indirect.relMse / parts : 0.0;
+    split.geometry = std::move(geometry);
+  }
   return split;
 }
 
@@ -95,7 +110,8 @@ void writeNoiseSplitJson(const std::filesystem::path& file, const NoiseSplit& sp
                          {"seconds", split.mean.seconds},
                          {"relMseEstimate", split.relMse},
                          {"halvesMeanFlip", halvesMeanFlip},
-                         {"byFirstHit", {{"object", share(split.object)}, {"ground", share(split.ground)}}}};
+                         {"byFirstHit", {{"object", share(split.object)}, {"ground", share(split.ground)}}},
+                         {"byDepth", {{"direct", share(split.direct)}, {"indirect", share(split.indirect)}}}};
   writeAtomically(file, [&](const std::filesystem::path& temporary) {
     std::ofstream(temporary) << document.dump(2) << "\n";
   });

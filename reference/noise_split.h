@@ -30,6 +30,10 @@ struct NoiseSplit {
   // the map itself, exact), and by first hit: object (mask >= 0.5) and ground (the other ones).
   double relMse = 0.0;
   NoiseShare object, ground;
+  // The same pixels' estimate by path depth (halvesPartRelMseEstimate): the light after one
+  // scattering event (RenderResult::direct) and the rest; their shares of the two's sum (which is
+  // relMse but for twice their covariance). pixels: the geometry pixels.
+  NoiseShare direct, indirect;
   std::vector<std::uint8_t> geometry;  // one byte per pixel, 1 where depth > 0; empty when none is
 };
 
@@ -41,7 +45,8 @@ NoiseSplit renderNoiseSplit(const Integrator& integrator, const Camera& camera,
                             const RenderSettings& settings, const RenderProgress& progress = {});
 
 // The split as JSON: spp, seconds, relMseEstimate, halvesMeanFlip (given: computed by the scorer,
-// score/halves_flip.h), byFirstHit {object, ground: {pixels, relMse, share}}.
+// score/halves_flip.h), byFirstHit {object, ground: {pixels, relMse, share}}, byDepth {direct,
+// indirect: {pixels, relMse, share}}.
 void writeNoiseSplitJson(const std::filesystem::path& file, const NoiseSplit& split, double halvesMeanFlip);
 
 }  // namespace iblkit

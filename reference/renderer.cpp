@@ -23,7 +23,7 @@ namespace {
 // Running sums of one pixel's feature layers over its samples (double: millions of samples add up
 // exactly enough); the beauty's are exact, in the PassSum.
 struct PixelSums {
-  glm::dvec3 albedo{0.0}, normal{0.0}, unoccluded{0.0};
+  glm::dvec3 albedo{0.0}, normal{0.0}, unoccluded{0.0}, direct{0.0};
   double distance = 0.0, coverage = 0.0;
 };
 
@@ -53,7 +53,7 @@ RenderResult resolve(const std::vector<PixelSums>& sums, PassSum&& radiance, con
                      int samples) {
   const int w = settings.width, h = settings.height;
   RenderResult result;
-  for (Image* image : {&result.albedo, &result.normal, &result.depth, &result.mask, &result.bentNormal})
+  for (Image* image : {&result.albedo, &result.normal, &result.depth, &result.mask, &result.bentNormal, &result.direct})
     *image = Image(w, h);
   result.beauty = meanRadiance(radiance);
   result.variance = meanVariance(radiance);
@@ -64,6 +64,7 @@ RenderResult resolve(const std::vector<PixelSums>& sums, PassSum&& radiance, con
       const PixelSums& s =
           sums[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
       result.albedo.at(x, y) = opaque(s.albedo / n);
+      result.direct.at(x, y) = opaque(s.direct / n);
       const double normalLength = glm::length(s.normal);
       result.normal.at(x, y) = opaque(normalLength > 0.0 ? s.normal / normalLength : glm::dvec3(0.0));
       const double bentLength = glm::length(s.unoccluded);
@@ -132,6 +133,7 @@ RenderResult render(const Integrator& integrator, const Camera& camera, const Re
                     PixelSums& s = sums[batchPixels[b]];
                     radianceSum.addSample(batchPixels[b], c.radiance);
                     s.albedo += glm::dvec3(c.albedo);
+                    s.direct += glm::dvec3(c.direct);
                     s.normal += glm::dvec3(c.normal);
                     s.unoccluded += glm::dvec3(c.unoccludedDirection);
                     s.distance += c.distance;

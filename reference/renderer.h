@@ -55,6 +55,9 @@ struct RenderResult {
   Image mask;               // coverage of non-ground objects, grey in [0, 1]
   Image variance;           // per channel variance of the beauty pixel's mean (sample variance / n)
   Image bentNormal;         // ao: normalised mean unoccluded direction (0 where none)
+  // Mean radiance after at most one scattering event (CameraSample::direct; summed in double, not
+  // in the exact pass sums, so it is not in --sum files): beauty - direct is the indirect light.
+  Image direct;
   // The beauty's exact sums, of which beauty and variance are the mean and its variance
   // (pass_sum.h): what a pass of a split render writes (--sum) for the merge.
   PassSum sum;

@@ -64,5 +64,26 @@ TEST(HalvesNoise, OnlyTheMasksPixelsCount) {
   EXPECT_THROW(halvesRelMseEstimate(a, Image(1, 1)), Error);
 }
 
+// A part's estimate: the whole as its own part is the whole's estimate; a part that is the same in
+// both halves carries no noise; half of the difference carries a quarter of it.
+TEST(HalvesNoise, PartsOfTheImageCarryTheirShare) {
+  PCG32 rng(5, 1);
+  Image a(32, 16), b(32, 16), half(32, 16), halfB(32, 16);
+  for (std::size_t i = 0; i < a.pixelCount(); ++i) {
+    const float truth = 0.2f + float(i % 7);
+    for (int c = 0; c < 3; ++c) {
+      a.pixels()[i][c] = truth * (1.0f + 0.1f * gaussian(rng));
+      b.pixels()[i][c] = truth * (1.0f + 0.1f * gaussian(rng));
+      half.pixels()[i][c] = 0.5f * a.pixels()[i][c];
+      halfB.pixels()[i][c] = 0.5f * b.pixels()[i][c];
+    }
+  }
+  const double whole = halvesRelMseEstimate(a, b);
+  EXPECT_NEAR(halvesPartRelMseEstimate(a, b, a, b), whole, 1e-6 * whole);
+  EXPECT_EQ(halvesPartRelMseEstimate(a, a, a, b), 0.0);
+  EXPECT_NEAR(halvesPartRelMseEstimate(half, halfB, a, b), 0.25 * whole, 1e-6 * whole);
+  EXPECT_THROW(halvesPartRelMseEstimate(Image(2, 2), b, a, b), Error);
+}
+
 }  // namespace
 }  // namespace iblkit

@@ -227,6 +227,19 @@ TEST(Integrator, SplitLightSamplesConvergeToTheSameImage) {
   }
 }
 
+// The path integrator's direct layer (the light after at most one scattering event) is, bit for
+// bit, the direct integrator's image with the same numbers; and the indirect light it leaves is
+// there (the glossy sphere and the ground light each other).
+TEST(Integrator, PathsDirectLayerIsTheDirectIntegratorsImage) {
+  const EnvironmentMap environment = spotEnvironment();
+  const RenderResult path = renderWith(groundedGlossyScene(), environment, integratorOf(IntegratorKind::Path), 16, 16);
+  const RenderResult direct =
+      renderWith(groundedGlossyScene(), environment, integratorOf(IntegratorKind::Direct), 16, 16);
+  EXPECT_EQ(path.direct.pixels(), direct.beauty.pixels());
+  EXPECT_EQ(direct.direct.pixels(), direct.beauty.pixels());
+  EXPECT_GT(path.beauty.stats().meanLuminance, 1.02 * path.direct.stats().meanLuminance);
+}
+
 // The oriented environment sampler (a distribution per bucket of normals, the default) and the
 // plain one converge to the same image on the glossy sphere and ground under the spot (path and
 // direct): the means within 0.5%, at most 2 of 256 pixels further apart than 4 sigma. A cosine

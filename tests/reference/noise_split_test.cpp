@@ -104,5 +104,28 @@ TEST(NoiseSplit, HalvesAreTheRendersOfTheirSeedsAndTheClassesAddUp) {
   EXPECT_THROW(renderNoiseSplit(f.integrator, f.camera, f.settings(5, 3)), std::invalid_argument);
 }
 
+// The split by depth: the direct light's and the indirect light's shares of the noise add up to 1,
+// both are there on a ground with a sphere (light bounces between them), and the two parts'
+// estimates add up to the whole's within 25% (the rest is twice their covariance, which splitting
+// the same paths' light in two makes positive or negative). The direct integrator's light is all
+// direct: nothing is indirect.
+TEST(NoiseSplit, SplitsTheNoiseByDepth) {
+  const Fixture f;
+  const NoiseSplit split = renderNoiseSplit(f.integrator, f.camera, f.settings(32, 3));
+  EXPECT_GT(split.direct.relMse, 0.0);
+  EXPECT_GT(split.indirect.relMse, 0.0);
+  EXPECT_NEAR(split.direct.share + split.indirect.share, 1.0, 1e-12);
+  EXPECT_NEAR((split.direct.relMse + split.indirect.relMse) / split.relMse, 1.0, 0.25);
+  EXPECT_EQ(split.direct.pixels, split.object.pixels + split.ground.pixels);
+
+  IntegratorSettings direct;
+  direct.kind = IntegratorKind::Direct;
+  const Integrator once(f.renderScene, f.environment, f.sampler, direct);
+  const NoiseSplit onlyDirect = renderNoiseSplit(once, f.camera, f.settings(32, 3));
+  EXPECT_EQ(onlyDirect.indirect.relMse, 0.0);
+  EXPECT_EQ(onlyDirect.direct.share, 1.0);
+  EXPECT_NEAR(onlyDirect.direct.relMse, onlyDirect.relMse, 1e-6 * onlyDirect.relMse);
+}
+
 }  // namespace
 }  // namespace iblkit
