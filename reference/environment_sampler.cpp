@@ -31,7 +31,7 @@ EnvironmentSampler::Sample EnvironmentSampler::pointIn(glm::ivec2 texel, glm::ve
 }
 
 float EnvironmentSampler::withinDensity(const EnvironmentTexels::Location& at) const {
-  return bilinear_ ? texels_.densityWithin(at.texel, texels_.pointWithin(at.uv, at.texel)) : 1.0f;
+  return bilinear_ ? texels_.densityAtUv(at.texel, at.uv) : 1.0f;
 }
 
 EnvironmentSampler::Sample EnvironmentSampler::sample(glm::vec2 u) const {

@@ -33,6 +33,18 @@ EnvironmentTexels::EnvironmentTexels(const EnvironmentMap& map)
   for (int y = 0; y < map.height(); ++y)
     for (int x = 0; x < map.width(); ++x)
       luminance_[static_cast<std::size_t>(y) * map.width() + x] = map.texelLuminance(x, y);
+  shaped_.assign(luminance_.size(), 0);
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x) {
+      const Nodes n = nodes({x, y});
+      float lo = n.v[0][0], hi = n.v[0][0];
+      for (const auto& row : n.v)
+        for (const float v : row) {
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+      shaped_[static_cast<std::size_t>(y) * map.width() + x] = n.mean > 0.0f && hi > kFlatRatio * lo;
+    }
   const double height = map.height();
   rowPdfScale_.resize(static_cast<std::size_t>(map.height()));
   for (std::size_t y = 0; y < rowPdfScale_.size(); ++y) {
@@ -98,8 +110,8 @@ float sampleTwoSegments(float u, float n0, float n1, float n2) {
 }  // namespace
 
 EnvironmentTexels::WithinTexel EnvironmentTexels::sampleWithin(glm::ivec2 texel, glm::vec2 u) const {
+  if (!shaped(texel)) return {u, 1.0f};
   const Nodes n = nodes(texel);
-  if (n.mean <= 0.0f) return {u, 1.0f};
   // Down the texel: the marginal, piecewise linear through the rows' means (trapezoids).
   float rows[3];
   for (int j = 0; j < 3; ++j) rows[j] = n.v[j][0] + 2.0f * n.v[j][1] + n.v[j][2];
@@ -116,8 +128,8 @@ EnvironmentTexels::WithinTexel EnvironmentTexels::sampleWithin(glm::ivec2 texel,
 }
 
 float EnvironmentTexels::densityWithin(glm::ivec2 texel, glm::vec2 point) const {
-  const Nodes n = nodes(texel);
-  return n.mean <= 0.0f ? 1.0f : densityAt(n, point);
+  if (!shaped(texel)) return 1.0f;
+  return densityAt(nodes(texel), point);
 }
 
 float EnvironmentTexels::densityAt(const Nodes& n, glm::vec2 point) {

@@ -27,6 +27,7 @@
 //   pdf(w) = pdf_uv(texel) / (2 pi H (cos theta_top - cos theta_bottom)),
 // and sampleWithin's point that times its density relative to uniform.
 
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -54,7 +55,9 @@ class EnvironmentTexels {
   // takes them) drawn from u proportionally to the bilinear luminance the lookups return there, as
   // a bilinear function of the point (exact at the texel's centre, edges and corners, which
   // split it into four bilinear quarters), and its density relative to the uniform point. The
-  // density's mean over the texel is 1; a black texel gives the uniform point with density 1.
+  // density's mean over the texel is 1. A texel whose nine nodes lie within kFlatRatio of each
+  // other (most of a sky, away from a sun) gives the uniform point with density 1, which costs it
+  // under 1% more variance and saves the warp; so does a black texel.
   struct WithinTexel {
     glm::vec2 point{0.5f};
     float density = 1.0f;
@@ -63,6 +66,11 @@ class EnvironmentTexels {
   float densityWithin(glm::ivec2 texel, glm::vec2 point) const;
   // Where in its texel the direction of lat-long coordinates uv lies, in sampleWithin's terms.
   glm::vec2 pointWithin(glm::vec2 uv, glm::ivec2 texel) const;
+  // densityWithin at the point of lat-long coordinates uv in `texel` (which holds it).
+  float densityAtUv(glm::ivec2 texel, glm::vec2 uv) const {
+    return shaped(texel) ? densityWithin(texel, pointWithin(uv, texel)) : 1.0f;
+  }
+  static constexpr float kFlatRatio = 1.2f;
 
   struct Point {
     glm::vec3 direction{0.0f};  // world direction, unit length
@@ -105,9 +113,14 @@ class EnvironmentTexels {
   };
   Nodes nodes(glm::ivec2 texel) const;
   static float densityAt(const Nodes& n, glm::vec2 point);  // n.mean > 0
+  bool shaped(glm::ivec2 texel) const {
+    return shaped_[static_cast<std::size_t>(texel.y) * static_cast<std::size_t>(map_.width()) +
+                   static_cast<std::size_t>(texel.x)] != 0;
+  }
 
   const EnvironmentMap& map_;
   std::vector<float> luminance_;    // per texel, row by row
+  std::vector<std::uint8_t> shaped_;  // per texel: 1 where sampleWithin warps the point (not flat, not black)
   std::vector<float> rowCosTheta_;  // height + 1 row edges: cos of the polar angle from +Y, 1 to -1
   std::vector<float> rowPdfScale_;  // per row: 1 / (2 pi H (rowCosTheta_[y] - rowCosTheta_[y + 1]))
 };

@@ -88,7 +88,7 @@ float MedianCutSampler::pdf(const glm::vec3& worldDirection) const { return look
 MedianCutSampler::Lookup MedianCutSampler::lookup(const glm::vec3& worldDirection) const {
   const EnvironmentTexels::Location at = texels_.locate(worldDirection);
   const int i = regionOf_[static_cast<std::size_t>(at.texel.y) * texels_.map().width() + at.texel.x];
-  const float density = bilinear_ ? texels_.densityWithin(at.texel, texels_.pointWithin(at.uv, at.texel)) : 1.0f;
+  const float density = bilinear_ ? texels_.densityAtUv(at.texel, at.uv) : 1.0f;
   return {at.radiance, texels_.solidAnglePdf(uvPdf(i, at.texel.x, at.texel.y) * density, at.texel.y)};
 }
 

@@ -122,16 +122,26 @@ std::uint64_t PassSum::sampleCount() const {
   return n;
 }
 
+namespace {
+// An integral double as a 128-bit integer. Below 2^62 through a 64-bit conversion, one instruction
+// (the 128-bit one is a library call that was 2% of a render); the same value either way.
+FixedPointSum integralToFixed(double integral) {
+  constexpr double kSixtyTwo = 4611686018427387904.0;  // 2^62
+  if (std::abs(integral) < kSixtyTwo) return static_cast<FixedPointSum>(static_cast<std::int64_t>(integral));
+  return static_cast<FixedPointSum>(integral);
+}
+}  // namespace
+
 FixedPointSum PassSum::toFixedPoint(float value) {
   if (std::isnan(value)) return 0;
   const double v = std::clamp(double(value), -kMaxSampleValue, kMaxSampleValue);
-  return static_cast<FixedPointSum>(std::nearbyint(v * kScale));
+  return integralToFixed(std::nearbyint(v * kScale));
 }
 
 FixedPointSum PassSum::toFixedPointSquare(float value) {
   if (std::isnan(value)) return 0;
   const double v = std::min(std::abs(double(value)), kMaxSampleValue);
-  return static_cast<FixedPointSum>(std::nearbyint(v * v * kScale));  // v * v is exact in double
+  return integralToFixed(std::nearbyint(v * v * kScale));  // v * v is exact in double
 }
 
 std::string sampleRangesText(const std::vector<SampleRange>& samples) {
