@@ -7,12 +7,11 @@ namespace iblkit {
 EnvironmentSampler::EnvironmentSampler(const EnvironmentMap& map, bool misCompensation,
                                        LightOrientation orientation)
     : texels_(map), distribution_(std::vector<float>{0.0f}, 1, 1) {
-  std::vector<float> weights = texels_.weights(misCompensation, &compensated_);
   // Uncompensated: each texel by its mean bilinear luminance and the point inside it by the
   // bilinear luminance itself (EnvironmentTexels::sampleWithin), so the density follows the
   // lookups' radiance instead of being flat across a texel next to a sun.
+  const std::vector<float> weights = texels_.samplingWeights(misCompensation, &compensated_);
   bilinear_ = !compensated_;
-  if (bilinear_) weights = texels_.meanWeights();
   distribution_ = PiecewiseConstant2D(weights, map.width(), map.height());
   black_ = distribution_.integral() <= 0.0f;
   if (black_) bilinear_ = false;
@@ -60,10 +59,6 @@ void EnvironmentSampler::prefetchLookup(glm::vec2 uv) const {
   distribution_.prefetchPdf(uv);
   texels_.prefetchAround(texels_.texelAt(uv));
 }
-
-}  // namespace iblkit
-
-namespace iblkit {
 
 EnvironmentSampler::Sample EnvironmentSampler::sample(int bucket, glm::vec2 u) const {
   if (bucket == kNoBucket) return sample(u);

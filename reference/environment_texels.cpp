@@ -37,13 +37,7 @@ EnvironmentTexels::EnvironmentTexels(const EnvironmentMap& map)
   for (int y = 0; y < map.height(); ++y)
     for (int x = 0; x < map.width(); ++x) {
       const Nodes n = nodes({x, y});
-      float lo = n.v[0][0], hi = n.v[0][0];
-      for (const auto& row : n.v)
-        for (const float v : row) {
-          lo = std::min(lo, v);
-          hi = std::max(hi, v);
-        }
-      shaped_[static_cast<std::size_t>(y) * map.width() + x] = n.mean > 0.0f && hi > kFlatRatio * lo;
+      shaped_[static_cast<std::size_t>(y) * map.width() + x] = n.mean > 0.0f && n.highest() > kFlatRatio * n.lowest();
     }
   const double height = map.height();
   rowPdfScale_.resize(static_cast<std::size_t>(map.height()));
@@ -53,16 +47,43 @@ EnvironmentTexels::EnvironmentTexels(const EnvironmentMap& map)
   }
 }
 
-std::vector<float> EnvironmentTexels::meanWeights() const {
+std::vector<float> EnvironmentTexels::nodeWeights(float (*luminance)(const Nodes&)) const {
   const int width = map_.width(), height = map_.height();
   std::vector<float> weights(luminance_.size());
   for (int y = 0; y < height; ++y) {
     const float rowSolidAngle =
         (rowCosTheta_[static_cast<std::size_t>(y)] - rowCosTheta_[static_cast<std::size_t>(y) + 1]) * 0.5f *
         static_cast<float>(height);
-    for (int x = 0; x < width; ++x) weights[static_cast<std::size_t>(y) * width + x] = nodes({x, y}).mean * rowSolidAngle;
+    for (int x = 0; x < width; ++x) weights[static_cast<std::size_t>(y) * width + x] = luminance(nodes({x, y})) * rowSolidAngle;
   }
   return weights;
+}
+
+std::vector<float> EnvironmentTexels::meanWeights() const {
+  return nodeWeights([](const Nodes& n) { return n.mean; });
+}
+
+std::vector<float> EnvironmentTexels::samplingWeights(bool misCompensation, bool* compensated) const {
+  *compensated = false;
+  if (misCompensation) {
+    std::vector<float> maxima = weights(true, compensated);
+    if (*compensated) return maxima;
+  }
+  return meanWeights();
+}
+
+float EnvironmentTexels::Nodes::lowest() const {
+  float lo = v[0][0];
+  for (const auto& row : v)
+    for (const float value : row) lo = std::min(lo, value);
+  return lo;
+}
+
+float EnvironmentTexels::Nodes::highest() const {
+  float hi = v[0][0];
+  for (const auto& row : v)
+    for (const float value : row) hi = std::max(hi, value);
+  return hi;
 }
 
 EnvironmentTexels::Nodes EnvironmentTexels::nodes(glm::ivec2 texel) const {
@@ -149,38 +170,9 @@ glm::vec2 EnvironmentTexels::pointWithin(glm::vec2 uv, glm::ivec2 texel) const {
 }
 
 std::vector<float> EnvironmentTexels::weights(bool misCompensation, bool* compensated) const {
-  const int width = map_.width(), height = map_.height();
-  const std::vector<float>& luminance = luminance_;
-
-  // Each texel's weight is the mean over the texel of the bilinear luminance the lookups return,
-  // times its solid angle (proportional to its row's cos(theta) span, times height / 2, which keeps
-  // the weights near sin(theta) x luminance). Texel centres sit at half-integers, so over a texel
-  // the bilinear interpolant of one axis averages its neighbours with weights 1/8, 6/8, 1/8 (rows
-  // clamped at the poles, columns wrapped, as sampleLatLongBilinear has them); the 2D mean is the
-  // product of the two.
-  std::vector<float> weights(luminance.size());
-  const auto at = [&](int x, int y) {
-    x = x < 0 ? width - 1 : (x >= width ? 0 : x);
-    y = std::clamp(y, 0, height - 1);
-    return luminance[static_cast<std::size_t>(y) * width + x];
-  };
-  for (int y = 0; y < height; ++y) {
-    const float rowSolidAngle =
-        (rowCosTheta_[static_cast<std::size_t>(y)] - rowCosTheta_[static_cast<std::size_t>(y) + 1]) * 0.5f *
-        static_cast<float>(height);
-    for (int x = 0; x < width; ++x) {
-      const float c = at(x, y);
-      float m = c;
-      for (int dy = -1; dy <= 1; dy += 2) {
-        m = std::max(m, 0.5f * (c + at(x, y + dy)));
-        m = std::max(m, 0.5f * (c + at(x + dy, y)));
-        for (int dx = -1; dx <= 1; dx += 2)
-          m = std::max(m, 0.25f * (c + at(x + dx, y) + at(x, y + dy) + at(x + dx, y + dy)));
-      }
-      weights[static_cast<std::size_t>(y) * width + x] = m * rowSolidAngle;
-    }
-  }
-
+  // The maximum over the texel of the bilinear luminance the lookups return: the largest of its
+  // nine node values (a bilinear quarter peaks at a corner).
+  std::vector<float> weights = nodeWeights([](const Nodes& n) { return n.highest(); });
   *compensated = false;
   if (misCompensation) {
     double sum = 0.0;

@@ -50,6 +50,10 @@ class EnvironmentTexels {
   // sampleWithin's density completes, so that texel and point together are drawn proportionally
   // to the bilinear luminance (never MIS-compensated).
   std::vector<float> meanWeights() const;
+  // What the samplers draw texels by: meanWeights, unless MIS compensation is asked for and the map
+  // is not near-constant, in which case the compensated weights (and *compensated is true). The
+  // point inside a texel is then to follow its bilinear luminance exactly when !*compensated.
+  std::vector<float> samplingWeights(bool misCompensation, bool* compensated) const;
 
   // Inside a texel: a point of [0,1]^2 (across its columns, down its solid angle, as pointInRow
   // takes them) drawn from u proportionally to the bilinear luminance the lookups return there, as
@@ -110,9 +114,14 @@ class EnvironmentTexels {
   struct Nodes {
     float v[3][3];
     float mean;
+    float lowest() const;
+    float highest() const;
   };
   Nodes nodes(glm::ivec2 texel) const;
   static float densityAt(const Nodes& n, glm::vec2 point);  // n.mean > 0
+  // Per texel, row by row: `luminance` of its nodes times its solid angle (proportional to its
+  // row's cos(theta) span, times height / 2, which keeps the weights near sin(theta) x luminance).
+  std::vector<float> nodeWeights(float (*luminance)(const Nodes&)) const;
   bool shaped(glm::ivec2 texel) const {
     return shaped_[static_cast<std::size_t>(texel.y) * static_cast<std::size_t>(map_.width()) +
                    static_cast<std::size_t>(texel.x)] != 0;

@@ -18,10 +18,9 @@ std::optional<int> medianCutLevelsOf(int regions) {
 MedianCutSampler::MedianCutSampler(const EnvironmentMap& map, int levels, bool misCompensation)
     : texels_(map), regions_(medianCutLights(map, levels)) {
   const int width = map.width();
-  std::vector<float> weights = texels_.weights(misCompensation, &compensated_);
   // As the environment sampler has them (environment_sampler.h), so the two densities are one.
+  const std::vector<float> weights = texels_.samplingWeights(misCompensation, &compensated_);
   bilinear_ = !compensated_;
-  if (bilinear_) weights = texels_.meanWeights();
   regionOf_.assign(weights.size(), 0);
   std::vector<float> regionWeights;
   regionTexels_.reserve(regions_.size());
