@@ -58,10 +58,12 @@ std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b) {
 
 PixelSeeds::PixelSeeds(std::uint32_t seed, std::uint32_t pixelIndex)
     : pixelIndex_(pixelIndex), pixelSeed_(hashCombine(seed, pixelIndex)) {
-  for (int pair = 0; pair < kPixelSobolPairs; ++pair) {
+  for (int pair = 0; pair < kPixelSobolPairs + kPixelPaddedPairs; ++pair) {
     const std::uint32_t pairSeed = hashCombine(pixelSeed_, 0x50b01u + static_cast<std::uint32_t>(pair));
     scrambles_[pair] = sobol02Scramble(pairSeed);
   }
+  for (int pair = 0; pair < kPixelPaddedPairs; ++pair)
+    shuffles_[pair] = hashCombine(pixelSeed_, 0x5b1ffu + static_cast<std::uint32_t>(pair));
 }
 
 PixelSampler::PixelSampler(const PixelSeeds& pixel, std::uint32_t sampleIndex)
@@ -79,6 +81,15 @@ glm::vec2 PixelSampler::next2D() {
     // of the light directions. The fixed permutations match them as a 4D net.
     const int pair = pair_++;
     return owenScrambledSobol02(pairIndex(pair, sampleIndex_), pixel_.scrambles_[pair]);
+  }
+  if (pair_ < kSobolPairs + kPaddedPairs) {
+    // Past the first vertex the pairing with the pixel position matters less than each draw's own
+    // stratification over the pixel's samples: a nested uniform scramble of the index bits (Owen's
+    // scramble, applied to the index as an integer: bit j flipped by a random function of the bits
+    // above it) is a random permutation of every aligned block of indices onto an aligned block.
+    const int pair = pair_++;
+    const std::uint32_t shuffled = owenScramble(sampleIndex_, pixel_.shuffles_[pair - kSobolPairs]);
+    return owenScrambledSobol02(shuffled, pixel_.scrambles_[pair]);
   }
   return rng_.uniform2D();
 }

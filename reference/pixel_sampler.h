@@ -10,8 +10,12 @@
 // is a (0,2)-sequence; the pixel position with the light or the BRDF draw is a 4D sequence whose
 // aligned blocks of 2^m samples are (t,m,4)-nets with t <= 3 up to 4096 samples and t <= 4 up to
 // 65536 (pixel_sampler.cpp), so the samples that land on one side of an edge inside the pixel still
-// cover the light and BRDF squares evenly. Everything else comes from a PCG32 stream keyed by the
-// pixel and the sample index.
+// cover the light and BRDF squares evenly. The next kPaddedPairs 2D draws (the second and third
+// vertices' light and BRDF directions) are Sobol (0,2)-points too, each at its own per-pixel
+// random shuffle of the sample index (Burley 2020's padding: a nested uniform scramble of the index
+// bits, which maps every aligned block of 2^m indices onto an aligned block, so each of these draws
+// is still a (0,m,2)-net over any aligned block of a pixel's samples, matched at random with the
+// other draws). Everything else comes from a PCG32 stream keyed by the pixel and the sample index.
 //
 // Splitting (IntegratorSettings::cameraLightSamples K): the first vertex's K light draws are the
 // light pair's points at indices K l(i) .. K l(i) + K - 1, l(i) the light draw's permuted index of
@@ -32,8 +36,12 @@ namespace iblkit {
 // per-pixel and per-dimension seeds.
 std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b);
 
-// Number of leading 2D draws of a camera sample taken from the scrambled Sobol sequence.
+// Number of leading 2D draws of a camera sample taken from the scrambled Sobol sequence at fixed
+// index permutations (pixel position, the first vertex's light and BRDF draws).
 inline constexpr int kPixelSobolPairs = 3;
+// The Sobol draws after those, each at a per-pixel random shuffle of the index (the second and
+// third vertices' light and BRDF draws).
+inline constexpr int kPixelPaddedPairs = 4;
 // The most light draws PixelSampler::splitLight2D splits the first vertex's into (indices stay
 // below 2^32 for kMaxSamplesPerPixel = 2^24 samples).
 inline constexpr int kMaxSplitLightDraws = 64;
@@ -47,12 +55,14 @@ class PixelSeeds {
  private:
   friend class PixelSampler;
   std::uint32_t pixelIndex_, pixelSeed_;
-  Sobol02Scramble scrambles_[kPixelSobolPairs];
+  Sobol02Scramble scrambles_[kPixelSobolPairs + kPixelPaddedPairs];
+  std::uint32_t shuffles_[kPixelPaddedPairs];  // the padded pairs' index shuffles
 };
 
 class PixelSampler {
  public:
   static constexpr int kSobolPairs = kPixelSobolPairs;
+  static constexpr int kPaddedPairs = kPixelPaddedPairs;
 
   PixelSampler(std::uint32_t seed, std::uint32_t pixelIndex, std::uint32_t sampleIndex)
       : PixelSampler(PixelSeeds(seed, pixelIndex), sampleIndex) {}

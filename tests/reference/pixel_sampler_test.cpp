@@ -42,10 +42,12 @@ TEST(PixelSampler, ValuesLieInTheUnitInterval) {
     }
 }
 
-// The three Sobol draws of one sample: pixel position, light, BRDF.
-std::array<glm::vec2, PixelSampler::kSobolPairs> sobolDraws(std::uint32_t pixel, std::uint32_t sample) {
+// The Sobol draws of one sample: pixel position, light, BRDF, then the padded ones (the second and
+// third vertices' light and BRDF).
+constexpr int kSobolDraws = PixelSampler::kSobolPairs + PixelSampler::kPaddedPairs;
+std::array<glm::vec2, kSobolDraws> sobolDraws(std::uint32_t pixel, std::uint32_t sample) {
   PixelSampler sampler(3, pixel, sample);
-  std::array<glm::vec2, PixelSampler::kSobolPairs> result;
+  std::array<glm::vec2, kSobolDraws> result;
   for (glm::vec2& u : result) u = sampler.next2D();
   return result;
 }
@@ -67,9 +69,10 @@ std::vector<std::vector<float>> blockOfDraws(std::uint32_t pixel, int m, std::ui
 }
 
 // Each Sobol draw of a pixel's aligned blocks of 2^m samples is a (0,m,2)-net: with 16 samples, each
-// of the 4 x 4 cells (and 2 x 8, ...) holds exactly one pixel position, light or BRDF point.
+// of the 4 x 4 cells (and 2 x 8, ...) holds exactly one pixel position, light or BRDF point. The
+// padded draws too: their shuffle maps an aligned block of indices onto an aligned block.
 TEST(PixelSampler, EachDrawOfEveryAlignedBlockIsStratified) {
-  for (int draw = 0; draw < PixelSampler::kSobolPairs; ++draw)
+  for (int draw = 0; draw < kSobolDraws; ++draw)
     for (int m = 1; m <= 10; ++m)
       for (std::uint32_t block : {0u, 1u, 5u})
         EXPECT_TRUE(test::isNet(blockOfDraws(40, m, block, {draw}), m, 0))
@@ -109,7 +112,10 @@ TEST(PixelSampler, DrawsOfOneSampleAreUniformAndIndependentOverPixels) {
     int xDraw, yDraw;  // x from one draw, y from another
     std::uint32_t sample;
   };
-  const Pairing pairings[] = {{"pixel_x_light_y_sample_37", 0, 1, 37}, {"light_x_brdf_y_sample_0", 1, 2, 0}};
+  const Pairing pairings[] = {{"pixel_x_light_y_sample_37", 0, 1, 37},
+                              {"light_x_brdf_y_sample_0", 1, 2, 0},
+                              {"brdf_x_second_light_y_sample_5", 2, 3, 5},
+                              {"second_light_x_third_brdf_y_sample_0", 3, 6, 0}};
   for (const Pairing& pairing : pairings) {
     test::Chi2Options options;
     options.testCount = static_cast<int>(std::size(pairings));
@@ -122,6 +128,21 @@ TEST(PixelSampler, DrawsOfOneSampleAreUniformAndIndependentOverPixels) {
         },
         [](const glm::vec2&) { return 1.0; }, options);
     EXPECT_TRUE(result.passed) << result.message;
+  }
+}
+
+// The padded draws are shuffled independently of each other: over one pixel's 256 samples, the
+// first coordinates of two draws fill the 16 x 16 grid of their cells at random (about 162 cells
+// in expectation). Two draws at one index, scrambled apart, would be a bijection of nested strips:
+// exactly 16 cells, 16 points each (Burley 2020, section 4).
+TEST(PixelSampler, PaddedDrawsAreShuffledIndependently) {
+  for (const auto& [first, second] : {std::pair{3, 4}, std::pair{3, 5}, std::pair{4, 6}, std::pair{2, 3}}) {
+    std::set<int> cells;
+    for (std::uint32_t sample = 0; sample < 256; ++sample) {
+      const auto u = sobolDraws(40, sample);
+      cells.insert(int(u[std::size_t(first)].x * 16.0f) * 16 + int(u[std::size_t(second)].x * 16.0f));
+    }
+    EXPECT_GT(cells.size(), 120u) << "draws " << first << " and " << second;
   }
 }
 
