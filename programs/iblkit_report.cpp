@@ -222,6 +222,10 @@ int main(int argc, char** argv) {
   app.add_option("--min-passes", settings.minPasses, "reference passes before the first convergence check")
       ->check(CLI::Range(2, 4096));
   app.add_option("--max-passes", settings.maxPasses, "most reference passes")->check(CLI::Range(2, 4096));
+  app.add_option("--max-stage-passes", settings.maxStagePasses,
+                 "most reference passes one iblkit-trace run traces together (1: a run per pass; "
+                 "more: fewer runs, better stratified samples; --scheduler slurm: fewer, longer tasks)")
+      ->check(CLI::Range(1, 4096));
   app.add_option("--negligible", settings.negligibleRatio,
                  "converged when the reference's relMSE is at most this fraction of the best mode's")
       ->check(CLI::Range(0.0, 1.0));

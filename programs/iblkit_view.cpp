@@ -225,6 +225,21 @@ int runHeadless(const Options& options) {
   const Camera camera = sceneCamera(bake.scene, float(width) / float(height));
   checkGlErrors("setup");
 
+  // The output frame first: it also warms up its shader variants and renders its shadow maps
+  // for the frames timed after it (one warm-up frame less).
+  if (!options.output.empty()) {
+    renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
+    const Image image = readFrame(target, options.supersample);
+    checkGlErrors("render");
+    if (!options.normalOutput.empty())
+      writeLayer(renderer, target, camera, settings, FrameLayer::Normal, options.normalOutput, options.supersample);
+    if (!options.depthOutput.empty())
+      writeLayer(renderer, target, camera, settings, FrameLayer::Depth, options.depthOutput, options.supersample);
+    if (lowerExtension(options.output) == ".exr")
+      writeExr(options.output, image, {.pixelType = PixelType::Float, .writeAlpha = true});
+    else
+      writePng(options.output, image, {.exposure = settings.exposure, .curve = settings.curve});
+  }
   if (options.bench > 0) {
     std::cout << kProgram << ": " << context.description() << ", " << width << "x" << height << ", "
               << target.samples() << " sample(s), texture slots " << textureSlotsName(settings.textureSlots)
@@ -232,7 +247,8 @@ int runHeadless(const Options& options) {
               << "), median of " << options.bench << " frames\n";
     std::vector<ShadingMode> modes(std::begin(kShadingModes), std::end(kShadingModes));
     if (!allModes) modes = {settings.mode};
-    benchmark(renderer, target, camera, settings, modes, 2);  // warm-up: shader variants, caches
+    // Warm-up: shader variants, caches (the output frame, when there is one, was the first).
+    benchmark(renderer, target, camera, settings, modes, options.output.empty() || allModes ? 2 : 1);
     const std::vector<FrameTimes> times = benchmark(renderer, target, camera, settings, modes, options.bench);
     double unlit = 0.0, full = 0.0;
     for (std::size_t m = 0; m < modes.size(); ++m) {
@@ -246,7 +262,8 @@ int runHeadless(const Options& options) {
       std::cout << "  full / unlit = " << std::setprecision(2) << full / unlit << '\n';
     const auto shadowed = std::find(modes.begin(), modes.end(), ShadingMode::LightsShadowed);
     const int lights = drawnLightCount(bake.env, settings.lightCount);
-    if (shadowed != modes.end() && settings.shadows && lights > 0) {
+    // The shadow maps' own cost with every mode (the speed command), not for one mode's time.
+    if (allModes && shadowed != modes.end() && settings.shadows && lights > 0) {
       const double cached = times[std::size_t(shadowed - modes.begin())].cpuMs;
       const FrameTimes fresh =
           benchmark(renderer, target, camera, settings, {ShadingMode::LightsShadowed}, options.bench, true).front();
@@ -254,20 +271,8 @@ int runHeadless(const Options& options) {
                 << "again each frame: cpu " << fresh.cpuMs << " ms (the maps: " << fresh.cpuMs - cached << " ms)\n";
       if (full > 0.0) std::cout << "  lights-shadowed / full = " << cached / full << '\n';
     }
-    if (options.output.empty()) return 0;
   }
 
-  renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
-  const Image image = readFrame(target, options.supersample);
-  checkGlErrors("render");
-  if (!options.normalOutput.empty())
-    writeLayer(renderer, target, camera, settings, FrameLayer::Normal, options.normalOutput, options.supersample);
-  if (!options.depthOutput.empty())
-    writeLayer(renderer, target, camera, settings, FrameLayer::Depth, options.depthOutput, options.supersample);
-  if (lowerExtension(options.output) == ".exr")
-    writeExr(options.output, image, {.pixelType = PixelType::Float, .writeAlpha = true});
-  else
-    writePng(options.output, image, {.exposure = settings.exposure, .curve = settings.curve});
   return 0;
 }
 

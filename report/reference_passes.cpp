@@ -17,35 +17,41 @@ namespace iblkit {
 
 namespace {
 
-Image meanOf(const std::vector<Image>& images) {
-  Image mean(images.front().width(), images.front().height());
-  for (const Image& image : images)
-    for (std::size_t i = 0; i < mean.pixelCount(); ++i) mean.pixels()[i] += image.pixels()[i];
-  for (glm::vec4& pixel : mean.pixels()) pixel /= float(images.size());
+// The mean of the stages' images weighted by their passes (each image is the mean of its samples).
+Image weightedMeanOf(const std::vector<const Image*>& images, const std::vector<int>& passes) {
+  Image mean(images.front()->width(), images.front()->height());
+  int total = 0;
+  for (std::size_t k = 0; k < images.size(); ++k) {
+    const float weight = float(passes[k]);
+    total += passes[k];
+    for (std::size_t i = 0; i < mean.pixelCount(); ++i) mean.pixels()[i] += weight * images[k]->pixels()[i];
+  }
+  for (glm::vec4& pixel : mean.pixels()) pixel /= float(total);
   return mean;
 }
 
-// Traces the pass with `seed` and appends its beauty image to `passes`; pass 0 also gives the
-// mask and the normals.
-void tracePass(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
-               const CaseInputs& inputs, int seed, std::vector<Image>& passes, Reference& reference,
-               CaseResult& result) {
-  const StageRun pass =
-      runStage(cache, "trace-" + caseName + "-" + std::to_string(seed), traceCommand(settings, inputs, seed));
+// Traces the stage with `seed` (`passes` passes in one run) and appends its beauty image to
+// `stages`; stage 0 also gives the mask and the normals.
+void traceStage(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
+                const CaseInputs& inputs, int seed, int passes, std::vector<Image>& stages, Reference& reference,
+                CaseResult& result) {
+  const StageRun pass = runStage(cache, "trace-" + caseName + "-" + std::to_string(seed),
+                                 traceCommand(settings, inputs, seed, passes));
   if (pass.pending) {
     result.pending = true;
-    passes.emplace_back();
+    stages.emplace_back();
     return;
   }
   if (seed == 0) {
-    result.commands.push_back(pass.command + "   (one pass of " + std::to_string(settings.maxPasses) +
-                              " at most)");
+    result.commands.push_back(pass.command + "   (the first stage; " + std::to_string(settings.maxPasses) +
+                              " passes of " + std::to_string(settings.passSpp) + " at most, up to " +
+                              std::to_string(std::max(1, settings.maxStagePasses)) + " a stage)");
     const Image depth = readExr(pass.folder / "depth.exr");
     reference.mask = erodeMask(geometryMask(depth), depth.width(), depth.height());
     reference.normals = readExr(pass.folder / "normal.exr", nullptr, 0, PixelRepair::Keep);  // signed
   }
   result.traceSeconds += pass.seconds;
-  passes.push_back(readExr(pass.folder / "beauty.exr", nullptr, 0, PixelRepair::Keep));
+  stages.push_back(readExr(pass.folder / "beauty.exr", nullptr, 0, PixelRepair::Keep));
 }
 
 // The smallest relMSE of the frames against the reference; marks a frame of the wrong size as a
@@ -86,17 +92,32 @@ int referencePassesFor(const ReportSettings& settings, int passes, double relMse
 Reference traceReference(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
                          const CaseInputs& inputs, const std::vector<Image>& frames, CaseResult& result) {
   Reference reference;
-  std::vector<Image> passes;
+  std::vector<Image> stages;
+  std::vector<int> stagePasses;  // the passes of each stage
+  int traced = 0;                // passes in the stages so far
   Image a, b;
   for (int count = settings.minPasses;;) {
-    while (int(passes.size()) < count)
-      tracePass(settings, cache, caseName, inputs, int(passes.size()), passes, reference, result);
+    // The wave's passes, half to each half, in pairs of stages of at most maxStagePasses passes
+    // (even seeds half A, odd seeds half B, so the halves always hold as many passes).
+    for (int left = (count - traced) / 2; left > 0;) {
+      const int group = std::min(left, std::max(1, settings.maxStagePasses));
+      for (int half = 0; half < 2; ++half) {
+        traceStage(settings, cache, caseName, inputs, int(stages.size()), group, stages, reference, result);
+        stagePasses.push_back(group);
+      }
+      left -= group;
+      traced += 2 * group;
+    }
     // Collected passes or frames (StageCache::collectInto): the next wave is decided once they exist.
     if (result.pending) return reference;
-    std::vector<Image> halfA, halfB;
-    for (std::size_t i = 0; i < passes.size(); ++i) (i % 2 == 0 ? halfA : halfB).push_back(passes[i]);
-    a = meanOf(halfA);
-    b = meanOf(halfB);
+    std::vector<const Image*> halfA, halfB;
+    std::vector<int> passesA, passesB;
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+      (i % 2 == 0 ? halfA : halfB).push_back(&stages[i]);
+      (i % 2 == 0 ? passesA : passesB).push_back(stagePasses[i]);
+    }
+    a = weightedMeanOf(halfA, passesA);
+    b = weightedMeanOf(halfB, passesB);
     reference.image = averageImages(a, b);
     result.referenceSpp = count * settings.passSpp;
     result.scoredPixels = scoredPixelCount(reference.mask, reference.image.pixelCount());

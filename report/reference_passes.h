@@ -28,15 +28,18 @@ double referenceTargetRelMse(const ReportSettings& settings, double bestModeRelM
 // and at most settings.maxPasses.
 int referencePassesFor(const ReportSettings& settings, int passes, double relMse, double target);
 
-// Traces passes with seeds 0, 1, 2, ... (stage "trace-CASE-SEED"; even seeds make half A, odd
-// seeds half B): settings.minPasses, then as many as referencePassesFor aims at, until the halves'
-// relMSE estimate (core/halves_noise.h) is at most referenceTargetRelMse of the best of `frames`,
-// or settings.maxPasses are traced. Sets result's reference fields (spp, relMSE, convergence, the
-// halves' FLIP, trace seconds, scored pixels, FLIP bracket), adds pass 0's command, and marks the
-// modes whose frame has the wrong size as failed. When a pass or a frame is not in the cache and the
-// cache collects missing stages (StageCache::collectInto), it stops after collecting the passes
-// of the current wave (the first minPasses, or the aimed count), with result.pending set: the
-// same waves as a local run, each decided once the previous one exists.
+// Traces the reference in passes of settings.passSpp samples: settings.minPasses, then as many as
+// referencePassesFor aims at, until the halves' relMSE estimate (core/halves_noise.h) is at most
+// referenceTargetRelMse of the best of `frames`, or settings.maxPasses are traced. A wave's passes
+// run as pairs of stages of up to settings.maxStagePasses passes each (stage "trace-CASE-SEED",
+// one iblkit-trace run of that many passes' samples, seeds 0, 1, 2, ... in order; even seeds make
+// half A, odd seeds half B, and the two stages of a pair hold as many passes). Each half is its
+// stages' mean weighted by their passes. Sets result's reference fields (spp, relMSE, convergence,
+// the halves' FLIP, trace seconds, scored pixels, FLIP bracket), adds stage 0's command, and marks
+// the modes whose frame has the wrong size as failed. When a stage or a frame is not in the cache
+// and the cache collects missing stages (StageCache::collectInto), it stops after collecting the
+// stages of the current wave (the first minPasses, or the aimed count), with result.pending set:
+// the same waves as a local run, each decided once the previous one exists.
 Reference traceReference(const ReportSettings& settings, const StageCache& cache, const std::string& caseName,
                          const CaseInputs& inputs, const std::vector<Image>& frames, CaseResult& result);
 

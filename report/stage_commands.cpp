@@ -73,11 +73,11 @@ StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, c
   return command;
 }
 
-StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inputs, int seed) {
+StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inputs, int seed, int passes) {
   StageCommand command{settings.binDir / "iblkit-trace",
                        {inputs.sceneFile.string(), "--env", inputs.environmentFile.string(), "-o",
                         stageFile("beauty.exr"), "--depth", stageFile("depth.exr"), "--spp",
-                        std::to_string(settings.passSpp), "--seed", std::to_string(seed)},
+                        std::to_string(passes * settings.passSpp), "--seed", std::to_string(seed)},
                        inputs.files};
   std::vector<std::string>& arguments = command.arguments;
   if (seed == 0) arguments.insert(arguments.end(), {"--normal", stageFile("normal.exr")});

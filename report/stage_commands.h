@@ -42,6 +42,7 @@ StageCommand viewCommand(const ReportSettings& settings, const std::filesystem::
 // level of detail from the derivatives of its K x K finer pixels, so the reference's camera ray
 // cones spread over that pixel too (reference/renderer.h, textureFootprint). An untextured scene's
 // command (and cache key) does not depend on K.
-StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inputs, int seed);
+// `passes` passes of settings.passSpp samples in one run (reference_passes.h groups them).
+StageCommand traceCommand(const ReportSettings& settings, const CaseInputs& inputs, int seed, int passes = 1);
 
 }  // namespace iblkit

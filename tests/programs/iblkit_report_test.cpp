@@ -255,6 +255,52 @@ TEST(IblkitReport, ReferencesConvergeAtTheAbsoluteBoundWithSplitLightSamples) {
   EXPECT_NE(page.find("halves' FLIP</th>"), std::string::npos);
 }
 
+// The samples per pixel of each reference stage in a report's cache (trace-*/stage.json).
+std::vector<int> traceStageSpp(const fs::path& cache) {
+  std::vector<int> spp;
+  for (const fs::directory_entry& entry : fs::directory_iterator(cache)) {
+    if (entry.path().filename().string().rfind("trace-", 0) != 0) continue;
+    const std::string command = readJson(entry.path() / "stage.json")["command"].get<std::string>();
+    const std::size_t at = command.find("--spp ");
+    EXPECT_NE(at, std::string::npos) << command;
+    if (at != std::string::npos) spp.push_back(std::stoi(command.substr(at + 6)));
+  }
+  return spp;
+}
+
+// A wave's passes run as pairs of stages of up to --max-stage-passes passes: every sample the
+// reference counts was traced once, by fewer runs than passes; with 1, a run per pass as before.
+TEST(IblkitReport, ReferencePassesRunInStagesOfSeveralPasses) {
+  for (const int stagePasses : {1, 16}) {
+    const fs::path out = test::scratchDir() / ("report-stages-" + std::to_string(stagePasses));
+    std::string output;
+    ASSERT_EQ(report(quoted(test::assetsDir() / "scenes" / "diffuse_sphere.json") + " --env-dir " +
+                         quoted(test::assetsDir() / "hdri") +
+                         " --envs esplanade --width 64 --height 36 --pass-spp 4 --min-passes 2 --bench 0"
+                         " --modes sh --max-stage-passes " + std::to_string(stagePasses) + " -o " + quoted(out),
+                     &output),
+              0)
+        << output;
+    const json reference = readJson(out / "report.json")["cases"][0]["reference"];
+    const int spp = reference["spp"].get<int>();
+    const std::vector<int> stages = traceStageSpp(out / "cache");
+    int sum = 0;
+    for (int s : stages) {
+      EXPECT_EQ(s % 4, 0) << "whole passes";
+      EXPECT_LE(s, 4 * stagePasses);
+      sum += s;
+    }
+    EXPECT_EQ(sum, spp) << reference.dump();
+    EXPECT_EQ(stages.size() % 2, 0u) << "the halves' stages come in pairs";
+    // The first wave alone is 2 passes; the esplanade sun needs more, in fewer stages than passes.
+    ASSERT_GT(spp, 2 * 4) << reference.dump();
+    if (stagePasses == 1)
+      EXPECT_EQ(int(stages.size()), spp / 4);
+    else
+      EXPECT_LT(int(stages.size()), spp / 4);
+  }
+}
+
 TEST(IblkitReport, AMissingEnvironmentIsOneLineAndNoReport) {
   const fs::path out = test::scratchDir() / "report";
   const fs::path scene = test::assetsDir() / "scenes" / "mirror_sphere.json";
