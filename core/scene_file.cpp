@@ -347,8 +347,25 @@ void readModels(const ObjectReader& root, const fs::path& folder, Scene& scene, 
   }
 }
 
-// A square of side `size` at height `height`, centred under the objects, facing +Y. With
-// `texcoords`, TEXCOORD_0 spans [0, 1] over it, u along +X and v along +Z.
+// The ground's grid: kGroundCells x kGroundCells cells, graded so that they are finest in the
+// middle, under the objects (the ground is centred under them and 10 bounding radii wide). The
+// baker's per-vertex ambient occlusion and bent normals, which every AO mode of the engine reads,
+// need vertices where the objects occlude the sky: a two-triangle square had them only at its four
+// far corners, so the engine's ground showed no contact shadow at all (docs/scene-format.md).
+constexpr int kGroundCells = 64;
+constexpr float kGroundCentreSpacing = 0.35f;  // cell size in the middle, relative to a uniform grid's
+
+// Position in [-1, 1] of grid line i of kGroundCells: f(t) = t (a + (1 - a) t^2), odd and
+// increasing, f(1) = 1, f'(0) = a: the middle cells a, the outer ones 3 - 2a times the uniform size.
+float groundGridLine(int i) {
+  const float t = 2.0f * float(i) / float(kGroundCells) - 1.0f;
+  const float a = kGroundCentreSpacing;
+  return t * (a + (1.0f - a) * t * t);
+}
+
+// A square of side `size` at height `height`, centred under the objects, facing +Y, as a graded
+// grid of triangles (above). With `texcoords`, TEXCOORD_0 spans [0, 1] over it, u along +X and v
+// along +Z.
 Mesh groundMesh(const glm::vec3& center, float height, float size, int material, bool texcoords) {
   Mesh ground;
   ground.name = "ground";
@@ -356,13 +373,23 @@ Mesh groundMesh(const glm::vec3& center, float height, float size, int material,
   ground.material = material;
   ground.source = MeshSource{-1, -1, -1, -1};
   const float h = 0.5f * size;
-  for (const glm::vec2 corner : {glm::vec2(-h, -h), glm::vec2(h, -h), glm::vec2(h, h), glm::vec2(-h, h)}) {
-    ground.positions.emplace_back(center.x + corner.x, height, center.z + corner.y);
-    ground.normals.emplace_back(0.0f, 1.0f, 0.0f);
-    if (texcoords) ground.texcoords.push_back(corner / size + 0.5f);
-  }
-  // Counter-clockwise seen from above: cross(p3 - p0, p2 - p0) points along +Y.
-  ground.indices = {0, 3, 2, 0, 2, 1};
+  constexpr int lines = kGroundCells + 1;
+  for (int j = 0; j < lines; ++j)
+    for (int i = 0; i < lines; ++i) {
+      // The outer lines exactly at +-h, so the square is the size asked for.
+      const glm::vec2 corner(i == 0 ? -h : i == kGroundCells ? h : h * groundGridLine(i),
+                             j == 0 ? -h : j == kGroundCells ? h : h * groundGridLine(j));
+      ground.positions.emplace_back(center.x + corner.x, height, center.z + corner.y);
+      ground.normals.emplace_back(0.0f, 1.0f, 0.0f);
+      if (texcoords) ground.texcoords.push_back(corner / size + 0.5f);
+    }
+  // Counter-clockwise seen from above: with v00 at (x_i, z_j), v10 at (x_i+1, z_j), v01 at
+  // (x_i, z_j+1), cross(v01 - v00, v11 - v00) points along +Y.
+  for (int j = 0; j < kGroundCells; ++j)
+    for (int i = 0; i < kGroundCells; ++i) {
+      const auto v00 = std::uint32_t(j * lines + i), v10 = v00 + 1, v01 = v00 + lines, v11 = v01 + 1;
+      ground.indices.insert(ground.indices.end(), {v00, v01, v11, v00, v11, v10});
+    }
   return ground;
 }
 

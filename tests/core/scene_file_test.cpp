@@ -119,6 +119,26 @@ TEST_F(SceneFile, FullSceneDescription) {
                                    ground.positions[ground.indices[3 * t + 2]] - a);
     EXPECT_GT(n.y, 0.0f);  // front face up
   }
+  // A grid that tiles the square: its triangles' areas add up to the square's, and it is finer in
+  // the middle, under the objects, than at the rim (the baker's per-vertex AO needs vertices where
+  // the objects occlude the sky; four corners have none).
+  double area = 0.0;
+  float middleEdge = 1e30f, rimEdge = 0.0f;
+  const float side = groundBounds.max.x - groundBounds.min.x;
+  for (std::size_t t = 0; t < ground.triangleCount(); ++t) {
+    const glm::vec3& a = ground.positions[ground.indices[3 * t]];
+    const glm::vec3& b = ground.positions[ground.indices[3 * t + 1]];
+    const glm::vec3& c = ground.positions[ground.indices[3 * t + 2]];
+    area += 0.5 * double(glm::length(glm::cross(b - a, c - a)));
+    const float edge = glm::length(b - a);
+    const float fromCentre = std::max(std::abs(a.x - groundBounds.center().x), std::abs(a.z - groundBounds.center().z));
+    if (fromCentre < 0.05f * side) middleEdge = std::min(middleEdge, edge);
+    if (fromCentre > 0.45f * side) rimEdge = std::max(rimEdge, edge);
+  }
+  EXPECT_NEAR(area, double(side) * double(side), 1e-4 * double(side) * double(side));
+  EXPECT_GE(ground.positions.size(), 1000u);
+  EXPECT_LT(middleEdge * 3.0f, rimEdge) << middleEdge << " " << rimEdge;
+  EXPECT_LT(middleEdge, 0.02f * side);
   const Material& groundMaterial = scene.materials.at(ground.material);
   EXPECT_EQ(groundMaterial.baseColor, glm::vec3(0.5f));
   EXPECT_EQ(groundMaterial.metallic, 0.0f);
@@ -322,8 +342,8 @@ TEST_F(SceneFile, MaterialOverridesAssignTextures) {
   // A textured ground gets uvs spanning [0, 1], u along +X, v along +Z.
   const Mesh& groundMesh = scene.meshes.back();
   ASSERT_TRUE(groundMesh.isGround);
-  ASSERT_EQ(groundMesh.texcoords.size(), 4u);
-  for (std::size_t i = 0; i < 4; ++i) {
+  ASSERT_EQ(groundMesh.texcoords.size(), groundMesh.positions.size());
+  for (std::size_t i = 0; i < groundMesh.positions.size(); ++i) {
     const glm::vec3& p = groundMesh.positions[i];
     const glm::vec3 size = groundMesh.bounds().max - groundMesh.bounds().min;
     EXPECT_NEAR(groundMesh.texcoords[i].x, (p.x - groundMesh.bounds().min.x) / size.x, 1e-5f);
