@@ -32,6 +32,7 @@ inline constexpr const char* kBakeBrdfLutFile = "env/brdf_lut.exr";
 inline constexpr const char* kBakeLightsFile = "env/lights.json";
 inline constexpr const char* kBakeResidualSh9File = "env/residual_sh9.json";
 inline constexpr const char* kBakeResidualSpecularFile = "env/residual_specular.exr";
+inline constexpr const char* kBakeResidualIrradianceFile = "env/residual_irradiance.exr";
 
 // `file`, a file of a bake folder that a reader needs. Throws Error("<file>: missing (incomplete
 // bake folder?)") unless it is a regular file.

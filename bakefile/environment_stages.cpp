@@ -22,6 +22,8 @@ void writeEnvironmentStages(const fs::path& folder, const EnvironmentStages& sta
     writeEnvironmentLightsJson(folder / kBakeLightsFile, stages.lights);
     writeSh9Json(folder / kBakeResidualSh9File, stages.residualSh9, stages.shWindowCutoff);
     writeSpecularCubeExr(folder / kBakeResidualSpecularFile, stages.residualSpecular);
+    if (stages.residualIrradiance.size > 0)
+      writeIrradianceCubeExr(folder / kBakeResidualIrradianceFile, stages.residualIrradiance);
   }
 }
 
@@ -46,6 +48,8 @@ EnvironmentStages readEnvironmentStages(const fs::path& folder, const BakeInputs
     env.lights = readEnvironmentLightsJson(requireBakeFile(folder / kBakeLightsFile));
     env.residualSh9 = readSh9Json(requireBakeFile(folder / kBakeResidualSh9File));
     env.residualSpecular = readSpecularCubeExr(requireBakeFile(folder / kBakeResidualSpecularFile));
+    if (fs::exists(folder / kBakeResidualIrradianceFile))
+      env.residualIrradiance = readIrradianceCubeExr(folder / kBakeResidualIrradianceFile);
   }
   return env;
 }

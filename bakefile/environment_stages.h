@@ -42,18 +42,23 @@ struct EnvironmentStages {
   // lights.suns plus the residual integrate to the map exactly.
   SphericalHarmonics9 residualSh9;
   SpecularCube residualSpecular;
+  // The residual's brute-force irradiance cube (size 0: not computed, or a bake from before it):
+  // the lights modes correct the residual SH9's truncation with it (docs/dominant-lights.md).
+  CubeMap residualIrradiance;
 };
 
 // Writes env/sh9.json (sh9 and shWindowCutoff), env/irradiance.exr (when computed),
 // env/specular.exr and env/brdf_lut.exr into `folder`, creating env/; and when the residual was
 // computed (residualSpecular.levels not empty), env/lights.json, env/residual_sh9.json (with
-// shWindowCutoff) and env/residual_specular.exr. Throws Error naming the file.
+// shWindowCutoff), env/residual_specular.exr and env/residual_irradiance.exr (when computed).
+// Throws Error naming the file.
 void writeEnvironmentStages(const std::filesystem::path& folder, const EnvironmentStages& stages);
 
 // Reads them back from `folder`, with the lat-long map, its rotation and intensity from the bake's
 // `inputs`; env/irradiance.exr only where it exists (else irradiance.size is 0); the lights and the
 // residual only when env/lights.json exists (a bake without it has none: lights and residual stay
-// empty), and then the two residual files must exist too. Throws Error("<file>: ...") naming the
+// empty), and then the two residual files must exist too (env/residual_irradiance.exr only where
+// it exists: bakes made before it have none). Throws Error("<file>: ...") naming the
 // file that is missing or invalid, and
 // Error("<folder>/bake.json: the bake has no environment stages ...") when `inputs` has none.
 EnvironmentStages readEnvironmentStages(const std::filesystem::path& folder, const BakeInputs& inputs);

@@ -67,6 +67,7 @@ EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, co
     stages.residualSh9 = windowSh9(projectEnvironmentSh9(residual), stages.shWindowCutoff);
     measured.residualSh9 = stopwatch.lap();
     stages.residualSpecular = prefilterSpecular(residual, specular);
+    if (options.irradianceCubeSize > 0) stages.residualIrradiance = irradianceCube(residual, options.irradianceCubeSize);
     measured.residualSpecular = stopwatch.lap();
     step(6);
   }

@@ -242,7 +242,8 @@ int bake(const Options& options) {
       timings["write_environment_s"] = stopwatch.lap();
       environmentReport = environmentRecord(*stages, options);
       for (const char* file : {kBakeSh9File, kBakeIrradianceFile, kBakeSpecularFile, kBakeBrdfLutFile,
-                               kBakeLightsFile, kBakeResidualSh9File, kBakeResidualSpecularFile})
+                               kBakeLightsFile, kBakeResidualSh9File, kBakeResidualSpecularFile,
+                               kBakeResidualIrradianceFile})
         outputs.push_back(file);
     }
     json record = makeBakeRecord(inputs, {{"ao_rays", options.aoRays},

@@ -116,7 +116,8 @@ std::string sharedConstants() {
                         {"kTextureUnitEmissive", kTextureUnitEmissive},
                         {"kTextureUnitIrradiance", kTextureUnitIrradiance},
                         {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
-                        {"kTextureUnitShadowDepth", kTextureUnitShadowDepth}});
+                        {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
+                        {"kTextureUnitResidualIrradiance", kTextureUnitResidualIrradiance}});
   text += intConstants("iblkit::kMaxEngineLights, kShadowMapSize (engine/gl/light_constants.h)",
                        {{"kMaxEngineLights", kMaxEngineLights}, {"kShadowMapSize", kShadowMapSize}});
   text += "// iblkit::kShadowExponent (engine/gl/light_constants.h)\nconst float kShadowExponent = " +

@@ -53,6 +53,7 @@ struct Renderer::Impl {
   GLuint emptyVertexArray = 0;  // the fullscreen triangle needs a bound VAO but no attributes
   GlTexture latLong, specular, brdfLut, residualSpecular;
   GlTexture irradiance;  // the irradiance modes' cube; id 0 when the stages have none
+  GlTexture residualIrradiance;  // the lights modes' residual cube; id 0 when the stages have none
   SphericalHarmonics9 sh9;
   // The lights modes' inputs (drawn_lights.h): the stages without the images.
   EnvironmentStages lightStages;
@@ -109,6 +110,9 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
   impl_->specularLevels = int(env.specular.levels.size());
   // The lights modes read the residual's chain when there is one (drawn_lights.h).
   if (!env.residualSpecular.levels.empty()) impl_->residualSpecular = uploadCubeLevels(env.residualSpecular.levels);
+  impl_->residualIrradiance = !env.residualSpecular.levels.empty() && env.residualIrradiance.size > 0
+                                  ? uploadCubeLevels({env.residualIrradiance})
+                                  : GlTexture();
   EnvironmentStages& stages = impl_->lightStages;
   stages.sh9 = env.sh9;
   stages.lights = env.lights;
@@ -161,6 +165,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       r.shadowMaps->bind();
     }
     glBindTextureUnit(kTextureUnitResidualSpecular, drawn.residualChain ? r.residualSpecular.id() : r.specular.id());
+    glBindTextureUnit(kTextureUnitResidualIrradiance, r.residualIrradiance.id());
   }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
@@ -199,6 +204,9 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
   GLint samples = 1;
   glGetIntegerv(GL_SAMPLES, &samples);
+  const SphericalHarmonics9 residualCubeSh =
+      settings.envRotationDegrees == 0.0f ? r.lightStages.residualSh9
+                                          : rotateShAboutY(r.lightStages.residualSh9, settings.envRotationDegrees);
   auto setFrameUniforms = [&](const ShaderProgram& program) {
     program.set("framebufferSamples", int(samples));
     program.set("viewProjection", viewProjection);
@@ -221,6 +229,12 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
                   light.radiance * uniformDiskIrradiance(light.direction.y, light.angularRadius));
     }
     program.setArray("residualShRadiance", drawn.residualSh9.coefficients.data(), kShCoefficients);
+    // The residual cube's correction of the residual SH9 (dominant_lights.glsl): the cube and the
+    // SH9 of the same residual, turned alike; off without a cube (a bake from before it) or
+    // without suns (the lights modes are then full).
+    const bool correct = drawn.residualChain && r.residualIrradiance.id() != 0;
+    program.set("residualCubeCorrection", correct ? 1 : 0);
+    if (correct) program.setArray("residualCubeSh", residualCubeSh.coefficients.data(), kShCoefficients);
     if (mode == ShadingMode::LightsShadowed) r.shadowMaps->setUniforms(program);
   };
   glEnable(GL_DEPTH_TEST);

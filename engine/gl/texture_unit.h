@@ -26,6 +26,7 @@ enum TextureUnit : unsigned {
   // exponential moments, one mip-mapped texture array, shadow_maps.h).
   kTextureUnitResidualSpecular = 13,
   kTextureUnitShadowDepth = 14,
+  kTextureUnitResidualIrradiance = 15,  // mesh.frag's lights modes: the residual's irradiance cube
 };
 
 }  // namespace iblkit

@@ -175,7 +175,8 @@ TEST(IblkitBake, WritesTheEnvironmentStagesWhenThereIsAnEnvironment) {
   const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
   EXPECT_EQ(report["outputs"], nlohmann::json({"scene.glb", "bake.json", "env/sh9.json", "env/irradiance.exr",
                                                "env/specular.exr", "env/brdf_lut.exr", "env/lights.json",
-                                               "env/residual_sh9.json", "env/residual_specular.exr"}));
+                                               "env/residual_sh9.json", "env/residual_specular.exr",
+                                               "env/residual_irradiance.exr"}));
   for (const nlohmann::json& file : report["outputs"])
     EXPECT_TRUE(fs::is_regular_file(out / file.get<std::string>())) << file;
   // The SH9 irradiance of this smooth sky is close to the brute-force cube, not exact (the bright

@@ -274,6 +274,64 @@ TEST(Renderer, ShAndIrradianceModesDifferByTheSh9Truncation) {
             << " of it on average, at most " << maxDeviation << " of the brightest pixel\n";
 }
 
+// The lights modes' residual diffuse corrects SH9's truncation with the residual's own irradiance
+// cube (dominant_lights.glsl, residualTruncation): on a lone Lambert sphere under a sun over a sky
+// with a hard horizon (a step SH9 rings around), `lights` is the map's brute-force irradiance
+// within the cube's resolution. Without the residual cube (a bake from before it) the residual
+// is SH9's, several times further off.
+TEST(Renderer, LightsModeResidualDiffuseIsTheResidualCubes) {
+  const glm::vec3 sun = glm::normalize(glm::vec3(0.4f, 0.7f, 0.6f));
+  const EnvironmentMap map = EnvironmentMap::fromImage(
+      latLongFromRadiance(256, 128, 2,
+                          [&](const glm::vec3& d) {
+                            if (glm::dot(d, sun) > std::cos(glm::radians(2.0f))) return glm::vec3(3000.0f, 2900.0f, 2600.0f);
+                            return d.y > 0.0f ? glm::vec3(0.6f, 0.8f, 1.0f) : glm::vec3(0.02f, 0.02f, 0.02f);
+                          }),
+      "sun over a hard horizon");
+  const Material white = lambertWhite();
+  BakedScene bake = test::makeTestBake({.sphereMaterial = white, .aoRays = 256});
+  EnvironmentStageOptions options = kViewerEnvironmentStages;
+  options.specularSamples = 16;
+  options.lutSamples = 16;
+  options.lutSize = 8;
+  bake.env = computeEnvironmentStages(map, options);
+  ASSERT_EQ(bake.env.lights.suns.size(), 1u);
+  ASSERT_EQ(bake.env.residualIrradiance.size, 16);
+  FrameSettings settings;
+  settings.mode = ShadingMode::Lights;
+  const auto meanError = [&](const BakedScene& stages) {
+    test::glContext();
+    Renderer renderer(stages);
+    RenderTarget target(kWidth, kHeight, 1);
+    const Camera camera = sceneCamera(stages.scene, float(kWidth) / float(kHeight));
+    renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+    const Image image = target.readColor();
+    checkGlErrors("lights render");
+    std::vector<glm::ivec2> interior;
+    std::vector<glm::vec3> normals;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x)
+        if (interiorPixel(camera, x, y)) {
+          interior.emplace_back(x, y);
+          normals.push_back(glm::normalize(*hitUnitSphere(camera, glm::vec2(x, y) + 0.5f)));
+        }
+    const std::vector<glm::vec3> exact = bruteForceIrradiance(map, normals);
+    double error = 0.0;
+    for (std::size_t i = 0; i < interior.size(); ++i)
+      error += relativeError(glm::vec3(image.at(interior[i].x, interior[i].y)), white.baseColor / glm::pi<float>() * exact[i]);
+    EXPECT_GT(interior.size(), 1500u);
+    return error / double(interior.size());
+  };
+  const double withCube = meanError(bake);
+  BakedScene before = bake;
+  before.env.residualIrradiance = CubeMap();
+  const double withoutCube = meanError(before);
+  std::cout << "lights on a lone sphere, mean relative error against the brute-force irradiance: " << withCube
+            << " with the residual cube, " << withoutCube << " with the residual SH9 alone\n";
+  EXPECT_LT(withCube, 0.005);
+  EXPECT_GT(withoutCube, 3.0 * withCube);
+}
+
 // Every mode gives finite radiance everywhere and light on every object pixel (the sphere touches
 // the ground, so the occluded modes are nearly black at the contact point, not black); occlusion only
 // darkens (sh-ao <= sh on average), and multisampling gives fractional coverage at the silhouette.

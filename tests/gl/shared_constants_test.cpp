@@ -43,7 +43,8 @@ const std::vector<float> kCppValues = {
     float(ShadingMode::Irradiance), float(ShadingMode::IrradianceAoBent), float(kTextureUnitIrradiance),
     float(ShadingMode::Lights),   float(ShadingMode::LightsShadowed), float(kTextureUnitResidualSpecular),
     float(kTextureUnitShadowDepth), float(kMaxEngineLights),
-    float(kShadowMapSize),        kShadowExponent,              kDeltaAlpha};
+    float(kShadowMapSize),        kShadowExponent,              kDeltaAlpha,
+    float(kTextureUnitResidualIrradiance)};
 
 TEST(SharedConstants, GlslValuesEqualTheCppOnes) {
   const int n = int(kCppValues.size()) + 1;  // one texel past the table: the probe's -1
@@ -110,6 +111,7 @@ TEST(SharedConstants, SamplersReadTheTextureUnitsTheCppBinds) {
                                "#define SHADING_MODE " + std::to_string(int(ShadingMode::LightsShadowed)));
   EXPECT_EQ(samplerUnit(shadowed, "residualSpecularCube"), GLint(kTextureUnitResidualSpecular));
   EXPECT_EQ(samplerUnit(shadowed, "shadowMoments"), GLint(kTextureUnitShadowDepth));
+  EXPECT_EQ(samplerUnit(shadowed, "residualIrradianceCube"), GLint(kTextureUnitResidualIrradiance));
   const ShaderProgram sky("fullscreen.vert", "sky.frag");
   EXPECT_EQ(samplerUnit(sky, "latLongMap"), GLint(kTextureUnitLatLong));
   const ShaderProgram present("fullscreen.vert", "present.frag");
