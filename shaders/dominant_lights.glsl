@@ -31,24 +31,32 @@ layout(binding = kTextureUnitResidualSpecular) uniform samplerCube residualSpecu
 // residual  = fullMaterialModelWith(residual chain, AO, cone axis, E_PRT,residual)
 // + sum_i diskLightRadiance(light i) V_i   (V_i = 1, or the shadow map's visibility with `shadowed`)
 // The residual's diffuse is `full`'s: the baked transfer dotted with the residual's SH9 (PRT, the
-// visibility in the transfer), so that where the bake extracted no sun both modes are `full`
-// exactly. (The residual's SH9 along the bent normal times AO, the sh-ao-bent formula, measured
+// visibility in the transfer), plus SH9's truncation of the residual from its cube
+// (residualTruncation, below). (The residual's SH9 along the bent normal times AO, the sh-ao-bent formula, measured
 // worse than `full` on the soft maps: bunny under forest, mean FLIP 0.043 against 0.034.)
-// A light's first bounce off the ground (docs/dominant-lights.md, "Bounce light"). The reference's
-// sunlit ground lights the object from below; `full` holds it only through its SH9 sun and the
-// multi-bounce AO fit, the lights' direct term not at all. The occluders below the vertex's
-// horizon are taken as an upward-facing diffuse surface of the vertex's own albedo (the
-// assumption of Jimenez's multi-bounce fit), lit by the light unshadowed: radiance
-// albedo E_up / pi, E_up the light's irradiance on an upward normal. The vertex sees them over
-//   O = pi (1 - n_y) / 2 - sum_k t_k H_k   (>= 0),
+// A light's first bounce off what occludes the vertex (docs/dominant-lights.md, "Bounce light").
+// The reference's sunlit ground lights the object from below, and the object lights the ground
+// beside it; `full` holds some of it through its SH9 sun and the multi-bounce AO fit, the lights'
+// direct term not at all. The occluders are taken as diffuse surfaces of the vertex's own albedo
+// (the assumption of Jimenez's multi-bounce fit) lit by the light unshadowed as an upward-facing
+// surface: radiance albedo E_up / pi, E_up the light's irradiance on an upward normal. Below the
+// vertex's horizon they count whole (the ground); above it by half (an object seen from beside or
+// below shows about as much shadowed as sunlit surface; 0, 0.5 and 1 were measured, docs/
+// dominant-lights.md). The vertex sees them over
+//   O_below = pi (1 - n_y) / 2 - sum_k t_k H_k   (>= 0),
 // the lower hemisphere's unoccluded irradiance weight (exact: a hemisphere's irradiance lies in
 // SH bands 0 and 1) minus the part the baked transfer t sees, H the SH9 of the lower hemisphere's
-// indicator (H_0 = 2 pi Y_0 = sqrt(pi), H_1 = -pi 0.488603, the others 0).
+// indicator (H_0 = 2 pi Y_0 = sqrt(pi), H_1 = -pi 0.488603, the others 0), and
+//   O_all = pi - t_0 sqrt(4 pi)   (>= 0),
+// the whole hemisphere's occluded weight (what the transfer sees of a constant radiance 1).
+const float kAboveHorizonBounce = 0.5;  // the weight of the occluders above the horizon (above)
 vec3 groundBounceIrradiance(vec3 albedo, vec3 irradianceUp) {
   float visibleBelow = vertexIn.transfer012.x * 1.7724539 - vertexIn.transfer012.y * 1.5349874;
   float ny = normalize(vertexIn.normal).y;
   float occludedBelow = max(0.5 * kPi * (1.0 - ny) - visibleBelow, 0.0);
-  return occludedBelow * albedo / kPi * irradianceUp;
+  float occludedAll = max(kPi - vertexIn.transfer012.x * 3.5449077, 0.0);
+  float occluded = occludedBelow + kAboveHorizonBounce * max(occludedAll - occludedBelow, 0.0);
+  return occluded * albedo / kPi * irradianceUp;
 }
 
 // What SH9 truncates of the residual's irradiance: the residual's cube minus its SH9 irradiance,
@@ -78,7 +86,7 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 posit
     radiance += lit;
     irradianceUp += lightIrradianceUp[i];
   }
-  // The lights' bounce off what occludes the vertex below its horizon (groundBounceIrradiance,
+  // The lights' bounce off what occludes the vertex (groundBounceIrradiance,
   // linear in the irradiance: the lights' sum at once).
   radiance += diffuseWeight(lobes, schlickWeights(clamp(dot(n, v), 0.0, 1.0))) * m.baseColor / kPi *
               groundBounceIrradiance(m.baseColor, irradianceUp);

@@ -361,5 +361,29 @@ TEST_F(ShadowTest, SunlitGroundLightsTheSphereFromBelow) {
   EXPECT_NEAR(e / r, 1.0, 0.15);
 }
 
+// The bounce off occluders above the horizon (docs/dominant-lights.md, "Bounce light"): the ground
+// in front of a sphere resting on it, which a 30 degree sun behind the camera lights, also gets
+// the light the sphere's sunlit face bounces onto it. Without that part of the term the engine's
+// ground there is darker than the reference's (one bounce, --max-depth 2).
+TEST_F(ShadowTest, SunlitObjectLightsTheGroundBesideIt) {
+  const nlohmann::json sphere = {{{"shape", "sphere"}, {"translation", {0.0, 0.5, 0.0}}, {"scale", 0.5},
+                                  {"material", {{"baseColor", {0.5, 0.5, 0.5}}, {"metallic", 0.0}, {"roughness", 1.0}, {"specular", 0.0}}}}};
+  const SunScene s = writeSunScene("object_bounce", sunDirection(0.0f, 30.0f), 0.5f, sphere);
+  const BakedScene bake = bakeWithSun(s);
+  Renderer renderer(bake);
+  const Image engine = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
+  const Image reference = renderTrace(s);
+  const glm::vec2 p = project(bake, glm::vec3(0.0f, 0.0f, 0.62f));
+  double e = 0.0, r = 0.0;
+  for (int y = int(p.y) - 1; y <= int(p.y) + 1; ++y)
+    for (int x = int(p.x) - 2; x <= int(p.x) + 2; ++x) {
+      e += luminance(glm::vec3(engine.at(x, y)));
+      r += luminance(glm::vec3(reference.at(x, y)));
+    }
+  std::cout << "ground in front of the sphere: engine " << e / 15.0 << ", reference " << r / 15.0 << '\n';
+  EXPECT_GT(r, 0.0);
+  EXPECT_NEAR(e / r, 1.0, 0.05);
+}
+
 }  // namespace
 }  // namespace iblkit
