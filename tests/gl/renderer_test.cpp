@@ -211,6 +211,16 @@ TEST(Renderer, IrradianceModesNeedTheCube) {
   checkGlErrors("after the refused frame");
 }
 
+// The interior pixels of the unit sphere and the sphere's normal at each pixel's centre.
+void interiorSphereNormals(const Camera& camera, std::vector<glm::ivec2>& interior, std::vector<glm::vec3>& normals) {
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      if (interiorPixel(camera, x, y)) {
+        interior.emplace_back(x, y);
+        normals.push_back(glm::normalize(*hitUnitSphere(camera, glm::vec2(x, y) + 0.5f)));
+      }
+}
+
 // Under a peaked map (a small sun over a dim sky) `sh` and `irradiance` differ by the SH9
 // truncation: on every interior pixel the GPU's difference of the two modes is the CPU's
 // albedo / pi (E_brute(n) - E_SH9(n)), within the cube's resolution; and the truncation is large.
@@ -246,12 +256,7 @@ TEST(Renderer, ShAndIrradianceModesDifferByTheSh9Truncation) {
   const glm::vec3 brightest = white.baseColor / glm::pi<float>() * bruteForceIrradianceAt(peaked, sun);
   std::vector<glm::ivec2> interior;
   std::vector<glm::vec3> normals;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x)
-      if (interiorPixel(camera, x, y)) {
-        interior.emplace_back(x, y);
-        normals.push_back(glm::normalize(*hitUnitSphere(camera, glm::vec2(x, y) + 0.5f)));
-      }
+  interiorSphereNormals(camera, interior, normals);
   const std::vector<glm::vec3> exact = bruteForceIrradiance(peaked, normals);
   float maxDeviation = 0.0f;
   double deviation = 0.0, truncation = 0.0, radiance = 0.0;
@@ -309,12 +314,7 @@ TEST(Renderer, LightsModeResidualDiffuseIsTheResidualCubes) {
     checkGlErrors("lights render");
     std::vector<glm::ivec2> interior;
     std::vector<glm::vec3> normals;
-    for (int y = 0; y < kHeight; ++y)
-      for (int x = 0; x < kWidth; ++x)
-        if (interiorPixel(camera, x, y)) {
-          interior.emplace_back(x, y);
-          normals.push_back(glm::normalize(*hitUnitSphere(camera, glm::vec2(x, y) + 0.5f)));
-        }
+    interiorSphereNormals(camera, interior, normals);
     const std::vector<glm::vec3> exact = bruteForceIrradiance(map, normals);
     double error = 0.0;
     for (std::size_t i = 0; i < interior.size(); ++i)
