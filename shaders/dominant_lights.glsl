@@ -61,19 +61,19 @@ vec3 groundBounceIrradiance(vec3 albedo, vec3 irradianceUp) {
 
 // What SH9 truncates of the residual's irradiance: the residual's cube minus its SH9 irradiance,
 // along the visibility cone's axis and scaled by AO (the sh-ao-bent approximation, for this
-// high-frequency part only). A studio map's residual keeps the softboxes past the K drawn lights,
+// high-frequency part only; `axis` = visibilityConeAxis(n, ao)). A studio map's residual keeps the softboxes past the K drawn lights,
 // which SH9 rings around: on a lone diffuse sphere this makes the residual's diffuse the cube's
 // exactly (axis n, AO 1), the `irradiance` mode's accuracy (docs/dominant-lights.md).
-vec3 residualTruncation(vec3 n, float ao) {
-  vec3 axis = visibilityConeAxis(n, ao);
+vec3 residualTruncation(vec3 axis, float ao) {
   vec3 cube = textureLod(residualIrradianceCube, rotateAboutY(axis, specularRotation), 0.0).rgb;
   return ao * (cube - sphericalHarmonics9Irradiance(residualCubeSh, axis));
 }
 
 vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 position, vec3 geometric, bool shadowed) {
   vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, residualShRadiance);
-  if (residualCubeCorrection != 0) irradiance = max(irradiance + residualTruncation(n, ao), vec3(0.0));
-  vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, visibilityConeAxis(n, ao), irradiance);
+  vec3 axis = visibilityConeAxis(n, ao);
+  if (residualCubeCorrection != 0) irradiance = max(irradiance + residualTruncation(axis, ao), vec3(0.0));
+  vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, axis, irradiance);
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, specularWeight, specularColor);
   vec3 irradianceUp = vec3(0.0);
   for (int i = 0; i < lightCount; ++i) {

@@ -204,9 +204,15 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
   GLint samples = 1;
   glGetIntegerv(GL_SAMPLES, &samples);
-  const SphericalHarmonics9 residualCubeSh =
-      settings.envRotationDegrees == 0.0f ? r.lightStages.residualSh9
-                                          : rotateShAboutY(r.lightStages.residualSh9, settings.envRotationDegrees);
+  // The residual cube's correction of the residual SH9 (dominant_lights.glsl): the cube and the
+  // SH9 of the same residual, turned alike; off without a cube (a bake from before it) or without
+  // a residual chain.
+  const bool cubeCorrection = lightsMode && drawn.residualChain && r.residualIrradiance.id() != 0;
+  SphericalHarmonics9 residualCubeSh;
+  if (cubeCorrection)
+    residualCubeSh = settings.envRotationDegrees == 0.0f
+                         ? r.lightStages.residualSh9
+                         : rotateShAboutY(r.lightStages.residualSh9, settings.envRotationDegrees);
   auto setFrameUniforms = [&](const ShaderProgram& program) {
     program.set("framebufferSamples", int(samples));
     program.set("viewProjection", viewProjection);
@@ -229,12 +235,8 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
                   light.radiance * uniformDiskIrradiance(light.direction.y, light.angularRadius));
     }
     program.setArray("residualShRadiance", drawn.residualSh9.coefficients.data(), kShCoefficients);
-    // The residual cube's correction of the residual SH9 (dominant_lights.glsl): the cube and the
-    // SH9 of the same residual, turned alike; off without a cube (a bake from before it) or
-    // without suns (the lights modes are then full).
-    const bool correct = drawn.residualChain && r.residualIrradiance.id() != 0;
-    program.set("residualCubeCorrection", correct ? 1 : 0);
-    if (correct) program.setArray("residualCubeSh", residualCubeSh.coefficients.data(), kShCoefficients);
+    program.set("residualCubeCorrection", cubeCorrection ? 1 : 0);
+    if (cubeCorrection) program.setArray("residualCubeSh", residualCubeSh.coefficients.data(), kShCoefficients);
     if (mode == ShadingMode::LightsShadowed) r.shadowMaps->setUniforms(program);
   };
   glEnable(GL_DEPTH_TEST);
