@@ -336,6 +336,14 @@ TEST_F(ShadowTest, ShadowStartsAtTheContact) {
   EXPECT_GE(checked, 5);
 }
 
+// The mean luminance of the pixels within +-dx, +-dy of pixel p.
+double meanLuminanceAround(const Image& image, glm::vec2 p, int dx, int dy) {
+  double sum = 0.0;
+  for (int y = int(p.y) - dy; y <= int(p.y) + dy; ++y)
+    for (int x = int(p.x) - dx; x <= int(p.x) + dx; ++x) sum += luminance(glm::vec3(image.at(x, y)));
+  return sum / double((2 * dx + 1) * (2 * dy + 1));
+}
+
 // The sun's bounce off the ground (docs/dominant-lights.md, "Bounce light of the suns"): a point of
 // the sphere facing the camera and slightly down, which the high sun does not reach, is lit by the
 // sky and the sunlit ground. Without the bounce term the engine gave it only the sky's share.
@@ -350,13 +358,8 @@ TEST_F(ShadowTest, SunlitGroundLightsTheSphereFromBelow) {
   const Image reference = renderTrace(s);
   const glm::vec3 normal = glm::normalize(glm::vec3(0.0f, -0.3f, 0.95f));
   const glm::vec2 p = project(bake, glm::vec3(0.0f, s.sphereY, 0.0f) + 0.5f * normal);
-  double e = 0.0, r = 0.0;
-  for (int y = int(p.y) - 2; y <= int(p.y) + 2; ++y)
-    for (int x = int(p.x) - 2; x <= int(p.x) + 2; ++x) {
-      e += luminance(glm::vec3(engine.at(x, y)));
-      r += luminance(glm::vec3(reference.at(x, y)));
-    }
-  std::cout << "engine " << e / 25.0 << ", reference " << r / 25.0 << '\n';
+  const double e = meanLuminanceAround(engine, p, 2, 2), r = meanLuminanceAround(reference, p, 2, 2);
+  std::cout << "engine " << e << ", reference " << r << '\n';
   EXPECT_GT(r, 0.0);
   EXPECT_NEAR(e / r, 1.0, 0.15);
 }
@@ -374,13 +377,8 @@ TEST_F(ShadowTest, SunlitObjectLightsTheGroundBesideIt) {
   const Image engine = renderEngine(renderer, bake, ShadingMode::LightsShadowed);
   const Image reference = renderTrace(s);
   const glm::vec2 p = project(bake, glm::vec3(0.0f, 0.0f, 0.62f));
-  double e = 0.0, r = 0.0;
-  for (int y = int(p.y) - 1; y <= int(p.y) + 1; ++y)
-    for (int x = int(p.x) - 2; x <= int(p.x) + 2; ++x) {
-      e += luminance(glm::vec3(engine.at(x, y)));
-      r += luminance(glm::vec3(reference.at(x, y)));
-    }
-  std::cout << "ground in front of the sphere: engine " << e / 15.0 << ", reference " << r / 15.0 << '\n';
+  const double e = meanLuminanceAround(engine, p, 2, 1), r = meanLuminanceAround(reference, p, 2, 1);
+  std::cout << "ground in front of the sphere: engine " << e << ", reference " << r << '\n';
   EXPECT_GT(r, 0.0);
   EXPECT_NEAR(e / r, 1.0, 0.05);
 }
