@@ -100,4 +100,17 @@ void GpuMesh::draw() const {
   glBindVertexArray(0);
 }
 
+void GpuMesh::draw(const std::vector<TriangleRun>& runs) const {
+  if (runs.empty()) return;
+  std::vector<GLsizei> counts;
+  std::vector<const void*> offsets;
+  for (const TriangleRun& run : runs) {
+    counts.push_back(GLsizei(3 * run.count));
+    offsets.push_back(reinterpret_cast<const void*>(indexOffset_ + GLintptr(3 * run.first * sizeof(GLuint))));
+  }
+  glBindVertexArray(vertexArray_);
+  glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(runs.size()));
+  glBindVertexArray(0);
+}
+
 }  // namespace iblkit

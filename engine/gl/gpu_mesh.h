@@ -4,10 +4,19 @@
 // them), and its triangle indices.
 #include <epoxy/gl.h>
 
+#include <cstddef>
+#include <vector>
+
 #include "core/mesh.h"
 #include "engine/gl/gpu_mesh_attribute.h"
 
 namespace iblkit {
+
+// Triangles first .. first + count - 1 of a mesh's index list.
+struct TriangleRun {
+  std::size_t first = 0, count = 0;
+  bool operator==(const TriangleRun&) const = default;
+};
 
 class GpuMesh {
  public:
@@ -22,6 +31,8 @@ class GpuMesh {
 
   // Draws the triangles with the currently bound program.
   void draw() const;
+  // Draws only these runs of triangles (one glMultiDrawElements); none: nothing.
+  void draw(const std::vector<TriangleRun>& runs) const;
 
  private:
   GLuint vertexArray_ = 0, buffer_ = 0;

@@ -58,6 +58,10 @@ struct Renderer::Impl {
   // The lights modes' inputs (drawn_lights.h): the stages without the images.
   EnvironmentStages lightStages;
   std::unique_ptr<ShadowMaps> shadowMaps;  // made on the first shadowed frame
+  // Per mesh, the ground's triangles split by whether a map covers them (shadowCoverage; empty for
+  // the objects, drawn whole), for the maps of shadowMaps->renderCount() == coverageRenders.
+  std::vector<ShadowCoverage> shadowCoverage;
+  int coverageRenders = -1;
   float rotationDegrees = 0.0f, intensity = 1.0f;
   int specularLevels = 1;
 
@@ -163,6 +167,12 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
         shadowLights.push_back({light.direction, std::tan(light.angularRadius)});
       r.shadowMaps->update(r.scene.meshes, r.meshes, shadowLights);
       r.shadowMaps->bind();
+      if (r.coverageRenders != r.shadowMaps->renderCount()) {
+        r.shadowCoverage.assign(r.scene.meshes.size(), {});
+        for (std::size_t i = 0; i < r.scene.meshes.size(); ++i)
+          if (r.scene.meshes[i].isGround) r.shadowCoverage[i] = shadowCoverage(r.scene.meshes[i], r.shadowMaps->frames());
+        r.coverageRenders = r.shadowMaps->renderCount();
+      }
     }
     glBindTextureUnit(kTextureUnitResidualSpecular, drawn.residualChain ? r.residualSpecular.id() : r.specular.id());
     glBindTextureUnit(kTextureUnitResidualIrradiance, r.residualIrradiance.id());
@@ -249,23 +259,40 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const Material& material = r.scene.materials.at(std::size_t(mesh.material));
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
-    const ShaderProgram& program = r.meshProgram(mode, settings.layer, slots, material.alphaMode, int(drawn.lights.size()));
-    if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
-      setFrameUniforms(program);
-      prepared.push_back(&program);
-    }
-    if (current != &program) {
-      program.use();
-      current = &program;
-    }
-    program.set("isGround", int(mesh.isGround));
-    setMaterialUniforms(program, material, slots);
+    const auto use = [&](ShadingMode programMode) -> const ShaderProgram& {
+      const ShaderProgram& program =
+          r.meshProgram(programMode, settings.layer, slots, material.alphaMode, int(drawn.lights.size()));
+      if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
+        setFrameUniforms(program);
+        prepared.push_back(&program);
+      }
+      if (current != &program) {
+        program.use();
+        current = &program;
+      }
+      program.set("isGround", int(mesh.isGround));
+      setMaterialUniforms(program, material, slots);
+      return program;
+    };
     // glTF 2.0 section 3.9.5 (doubleSided): false culls back faces; true shades both sides.
     if (material.doubleSided)
       glDisable(GL_CULL_FACE);
     else
       glEnable(GL_CULL_FACE);
-    r.meshes[i].draw();
+    // The ground outside every map is lit by all lights (the maps' border): drawn by the lights
+    // program, without the shadow lookups, which every pixel would otherwise pay (llvmpipe runs
+    // both sides of a branch).
+    const bool splitGround = mode == ShadingMode::LightsShadowed && settings.layer == FrameLayer::Radiance &&
+                             mesh.isGround && i < r.shadowCoverage.size();
+    if (splitGround) {
+      use(ShadingMode::LightsShadowed);
+      r.meshes[i].draw(r.shadowCoverage[i].covered);
+      use(ShadingMode::Lights);
+      r.meshes[i].draw(r.shadowCoverage[i].uncovered);
+    } else {
+      use(mode);
+      r.meshes[i].draw();
+    }
   }
   glDisable(GL_CULL_FACE);
   for (GLuint unit = kTextureUnitBaseColor; unit <= kTextureUnitEmissive; ++unit) glBindSampler(unit, 0);

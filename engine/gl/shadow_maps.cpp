@@ -106,6 +106,34 @@ ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& l
   return frame;
 }
 
+ShadowCoverage shadowCoverage(const Mesh& mesh, const std::vector<ShadowFrame>& frames) {
+  ShadowCoverage coverage;
+  const auto append = [](std::vector<TriangleRun>& runs, std::size_t triangle) {
+    if (!runs.empty() && runs.back().first + runs.back().count == triangle)
+      ++runs.back().count;
+    else
+      runs.push_back({triangle, 1});
+  };
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    bool covered = false;
+    for (const ShadowFrame& frame : frames) {
+      glm::vec2 low(std::numeric_limits<float>::infinity()), high(-std::numeric_limits<float>::infinity());
+      for (int k = 0; k < 3; ++k) {
+        const glm::vec4 s = frame.shadowFromWorld * glm::vec4(mesh.positions[mesh.indices[3 * t + std::size_t(k)]], 1.0f);
+        low = glm::min(low, glm::vec2(s));
+        high = glm::max(high, glm::vec2(s));
+      }
+      // Overlaps [0, 1]^2 (NaN corners count as covered).
+      if (!(high.x < 0.0f || high.y < 0.0f || low.x > 1.0f || low.y > 1.0f)) {
+        covered = true;
+        break;
+      }
+    }
+    append(covered ? coverage.covered : coverage.uncovered, t);
+  }
+  return coverage;
+}
+
 ShadowMaps::ShadowMaps(int size) : size_(size) {
   glCreateFramebuffers(1, &framebuffer_);
   glCreateSamplers(1, &momentsSampler_);

@@ -47,6 +47,16 @@ struct ShadowLight {
 // Empty meshes: a unit box at the origin.
 ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& light, int size);
 
+// A mesh's triangles split by whether a shadow map can darken them (docs/engine.md "Shadows",
+// "Receivers"): `covered` holds those whose (u, v) box in some frame overlaps the map's square,
+// `uncovered` the rest, which shadow.glsl would read as lit (the map's border), each as runs of
+// consecutive triangles in index order. Every triangle is in exactly one of them. The renderer
+// draws the uncovered runs of the ground without the shadow lookups.
+struct ShadowCoverage {
+  std::vector<TriangleRun> covered, uncovered;
+};
+ShadowCoverage shadowCoverage(const Mesh& mesh, const std::vector<ShadowFrame>& frames);
+
 class ShadowMaps {
  public:
   // `size`: the side of each map in texels. Needs a current OpenGL 4.5 context.

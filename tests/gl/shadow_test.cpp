@@ -23,7 +23,9 @@
 #include "core/image_io.h"
 #include "core/latlong.h"
 #include "engine/gl/render_target.h"
+#include "engine/gl/light_constants.h"
 #include "engine/gl/renderer.h"
+#include "engine/gl/shadow_maps.h"
 #include "gl/test_context.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
@@ -244,6 +246,59 @@ TEST_F(ShadowTest, NoAcneOnTheLitGroundFromHighAndGrazingSun) {
     EXPECT_GT(check.minRatio, 0.99f);
     EXPECT_GT(check.meanRatio, 0.999f);
   }
+}
+
+// The ground's triangles split by the maps' cover (shadowCoverage): every triangle in exactly one
+// part, the covered ones overlapping a map's square and the others not, the ground where the
+// sphere's shadow falls covered, and most of the 6 x 6 ground (the far part, which the renderer
+// draws without the shadow lookups) not. The shadow tests above and below render through the
+// split, so they fail too if it leaves a shadowed triangle out.
+TEST_F(ShadowTest, GroundOutsideTheMapsIsSplitFromTheShadowedGround) {
+  const SunScene s = writeSunScene("coverage", sunDirection(-60.0f, 55.0f), 1.0f);
+  const BakedScene bake = bakeWithSun(s);
+  const ShadowFrame frame = fitShadowFrame(bake.scene.meshes, {s.sun, std::tan(glm::radians(kSunRadiusDegrees))}, kShadowMapSize);
+  const auto ground = std::find_if(bake.scene.meshes.begin(), bake.scene.meshes.end(), [](const Mesh& m) { return m.isGround; });
+  ASSERT_NE(ground, bake.scene.meshes.end());
+  const ShadowCoverage coverage = shadowCoverage(*ground, {frame});
+  std::vector<int> seen(ground->triangleCount(), 0);
+  std::size_t covered = 0;
+  const auto boxOverlapsTheSquare = [&](std::size_t t) {
+    glm::vec2 low(1e30f), high(-1e30f);
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 p = glm::vec3(frame.shadowFromWorld * glm::vec4(ground->positions[ground->indices[3 * t + std::size_t(k)]], 1.0f));
+      low = glm::min(low, glm::vec2(p));
+      high = glm::max(high, glm::vec2(p));
+    }
+    return high.x >= 0.0f && high.y >= 0.0f && low.x <= 1.0f && low.y <= 1.0f;
+  };
+  for (const bool inside : {true, false})
+    for (const TriangleRun& run : inside ? coverage.covered : coverage.uncovered)
+      for (std::size_t t = run.first; t < run.first + run.count; ++t) {
+        ASSERT_LT(t, seen.size());
+        ++seen[t];
+        EXPECT_EQ(boxOverlapsTheSquare(t), inside) << "triangle " << t;
+        covered += inside;
+      }
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+  // The shadow's centre on the ground: the sphere's centre moved along -sun down to y = 0.
+  const glm::vec3 shadowCentre = glm::vec3(0.0f, s.sphereY, 0.0f) - s.sun * (s.sphereY / s.sun.y);
+  bool centreCovered = false;
+  for (const TriangleRun& run : coverage.covered)
+    for (std::size_t t = run.first; t < run.first + run.count; ++t) {
+      glm::vec3 c[3];
+      for (int k = 0; k < 3; ++k) c[k] = ground->positions[ground->indices[3 * t + std::size_t(k)]];
+      // Inside the triangle in x, z (barycentric signs).
+      const auto edge = [&](const glm::vec3& a, const glm::vec3& b) {
+        return (b.x - a.x) * (shadowCentre.z - a.z) - (b.z - a.z) * (shadowCentre.x - a.x);
+      };
+      const float e0 = edge(c[0], c[1]), e1 = edge(c[1], c[2]), e2 = edge(c[2], c[0]);
+      if ((e0 >= 0 && e1 >= 0 && e2 >= 0) || (e0 <= 0 && e1 <= 0 && e2 <= 0)) centreCovered = true;
+    }
+  EXPECT_TRUE(centreCovered);
+  std::cout << covered << " of " << seen.size() << " ground triangles covered, in " << coverage.covered.size()
+            << " runs\n";
+  EXPECT_GT(covered, 0u);
+  EXPECT_LT(covered, seen.size() / 2);
 }
 
 // The maps depend on the lights only: frames from other cameras render none; a turned environment
