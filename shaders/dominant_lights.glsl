@@ -21,11 +21,12 @@ uniform vec2 lightMirrorEdgeCos[kMaxEngineLights];
 // core's, computed once a frame): what groundBounceIrradiance's ground receives.
 uniform vec3 lightIrradianceUp[kMaxEngineLights];
 uniform vec3 residualShRadiance[9];
-// The residual's brute-force irradiance cube and its own SH9 (without the suns not drawn, which
-// residualShRadiance adds back), for the correction below; residualCubeCorrection 0 without them.
+// What SH9 truncates of the residual's irradiance: its brute-force irradiance cube minus its own
+// SH9 irradiance (without the suns not drawn, which residualShRadiance adds back), texel by texel
+// (engine/gl/residual_truncation.h), world space like the specular chain; residualCubeCorrection 0
+// without it.
 uniform int residualCubeCorrection;
-uniform vec3 residualCubeSh[9];
-layout(binding = kTextureUnitResidualIrradiance) uniform samplerCube residualIrradianceCube;
+layout(binding = kTextureUnitResidualIrradiance) uniform samplerCube residualTruncationCube;
 layout(binding = kTextureUnitResidualSpecular) uniform samplerCube residualSpecularCube;
 
 // residual  = fullMaterialModelWith(residual chain, AO, cone axis, E_PRT,residual)
@@ -65,8 +66,7 @@ vec3 groundBounceIrradiance(vec3 albedo, vec3 irradianceUp) {
 // which SH9 rings around: on a lone diffuse sphere this makes the residual's diffuse the cube's
 // exactly (axis n, AO 1), the `irradiance` mode's accuracy (docs/dominant-lights.md).
 vec3 residualTruncation(vec3 axis, float ao) {
-  vec3 cube = textureLod(residualIrradianceCube, rotateAboutY(axis, specularRotation), 0.0).rgb;
-  return ao * (cube - sphericalHarmonics9Irradiance(residualCubeSh, axis));
+  return ao * textureLod(residualTruncationCube, rotateAboutY(axis, specularRotation), 0.0).rgb;
 }
 
 vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 position, vec3 geometric, bool shadowed) {

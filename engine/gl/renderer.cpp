@@ -14,6 +14,7 @@
 #include "core/sh_rotation.h"
 #include "engine/gl/drawn_lights.h"
 #include "engine/gl/light_constants.h"
+#include "engine/gl/residual_truncation.h"
 #include "engine/gl/shadow_maps.h"
 #include "engine/gl/gpu_mesh.h"
 #include "engine/gl/gpu_textures.h"
@@ -53,7 +54,9 @@ struct Renderer::Impl {
   GLuint emptyVertexArray = 0;  // the fullscreen triangle needs a bound VAO but no attributes
   GlTexture latLong, specular, brdfLut, residualSpecular;
   GlTexture irradiance;  // the irradiance modes' cube; id 0 when the stages have none
-  GlTexture residualIrradiance;  // the lights modes' residual cube; id 0 when the stages have none
+  // The lights modes' residual cube minus its SH9 (residual_truncation.h); id 0 when the stages have
+  // no residual cube.
+  GlTexture residualTruncation;
   SphericalHarmonics9 sh9;
   // The lights modes' inputs (drawn_lights.h): the stages without the images.
   EnvironmentStages lightStages;
@@ -114,8 +117,8 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
   impl_->specularLevels = int(env.specular.levels.size());
   // The lights modes read the residual's chain when there is one (drawn_lights.h).
   if (!env.residualSpecular.levels.empty()) impl_->residualSpecular = uploadCubeLevels(env.residualSpecular.levels);
-  impl_->residualIrradiance = !env.residualSpecular.levels.empty() && env.residualIrradiance.size > 0
-                                  ? uploadCubeLevels({env.residualIrradiance})
+  impl_->residualTruncation = !env.residualSpecular.levels.empty() && env.residualIrradiance.size > 0
+                                  ? uploadCubeLevels({residualTruncationCube(env.residualIrradiance, env.residualSh9)})
                                   : GlTexture();
   EnvironmentStages& stages = impl_->lightStages;
   stages.sh9 = env.sh9;
@@ -175,7 +178,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       }
     }
     glBindTextureUnit(kTextureUnitResidualSpecular, drawn.residualChain ? r.residualSpecular.id() : r.specular.id());
-    glBindTextureUnit(kTextureUnitResidualIrradiance, r.residualIrradiance.id());
+    glBindTextureUnit(kTextureUnitResidualIrradiance, r.residualTruncation.id());
   }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
@@ -214,15 +217,10 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
   GLint samples = 1;
   glGetIntegerv(GL_SAMPLES, &samples);
-  // The residual cube's correction of the residual SH9 (dominant_lights.glsl): the cube and the
-  // SH9 of the same residual, turned alike; off without a cube (a bake from before it) or without
-  // a residual chain.
-  const bool cubeCorrection = lightsMode && drawn.residualChain && r.residualIrradiance.id() != 0;
-  SphericalHarmonics9 residualCubeSh;
-  if (cubeCorrection)
-    residualCubeSh = settings.envRotationDegrees == 0.0f
-                         ? r.lightStages.residualSh9
-                         : rotateShAboutY(r.lightStages.residualSh9, settings.envRotationDegrees);
+  // The residual cube's correction of the residual SH9 (dominant_lights.glsl, residual_truncation.h),
+  // turned by the extra rotation like the specular chain; off without a cube (a bake from before
+  // it) or without a residual chain.
+  const bool cubeCorrection = lightsMode && drawn.residualChain && r.residualTruncation.id() != 0;
   auto setFrameUniforms = [&](const ShaderProgram& program) {
     program.set("framebufferSamples", int(samples));
     program.set("viewProjection", viewProjection);
@@ -246,7 +244,6 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     }
     program.setArray("residualShRadiance", drawn.residualSh9.coefficients.data(), kShCoefficients);
     program.set("residualCubeCorrection", cubeCorrection ? 1 : 0);
-    if (cubeCorrection) program.setArray("residualCubeSh", residualCubeSh.coefficients.data(), kShCoefficients);
     if (mode == ShadingMode::LightsShadowed) r.shadowMaps->setUniforms(program);
   };
   glEnable(GL_DEPTH_TEST);
