@@ -106,10 +106,11 @@ TEST(NoiseSplit, HalvesAreTheRendersOfTheirSeedsAndTheClassesAddUp) {
 
 // The split by depth: the direct light's and the indirect light's shares of the noise add up to 1,
 // both are there on a ground with a sphere (light bounces between them), and the two parts'
-// estimates add up to the whole's within 40% (the rest is twice their covariance, which splitting
+// estimates add up to the whole's within 50% (the rest is twice their covariance, which splitting
 // the same paths' light in two makes positive or negative: a bounce that escapes adds to the
 // direct part what it takes from the indirect one, and since the second vertex's draws are Sobol
-// points too (pixel_sampler.h) the parts are each better stratified than their sum; 1.32 here). The direct integrator's light is all
+// points too (pixel_sampler.h) the parts are each better stratified than their sum: 1.43 here, 1.32
+// with roulette from the third bounce, whose noise was in the indirect part). The direct integrator's light is all
 // direct: nothing is indirect.
 TEST(NoiseSplit, SplitsTheNoiseByDepth) {
   const Fixture f;
@@ -117,7 +118,7 @@ TEST(NoiseSplit, SplitsTheNoiseByDepth) {
   EXPECT_GT(split.direct.relMse, 0.0);
   EXPECT_GT(split.indirect.relMse, 0.0);
   EXPECT_NEAR(split.direct.share + split.indirect.share, 1.0, 1e-12);
-  EXPECT_NEAR((split.direct.relMse + split.indirect.relMse) / split.relMse, 1.0, 0.4);
+  EXPECT_NEAR((split.direct.relMse + split.indirect.relMse) / split.relMse, 1.0, 0.5);
   EXPECT_EQ(split.direct.pixels, split.object.pixels + split.ground.pixels);
 
   IntegratorSettings direct;
