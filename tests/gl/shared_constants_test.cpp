@@ -111,7 +111,7 @@ TEST(SharedConstants, SamplersReadTheTextureUnitsTheCppBinds) {
                                "#define SHADING_MODE " + std::to_string(int(ShadingMode::LightsShadowed)));
   EXPECT_EQ(samplerUnit(shadowed, "residualSpecularCube"), GLint(kTextureUnitResidualSpecular));
   EXPECT_EQ(samplerUnit(shadowed, "shadowMoments"), GLint(kTextureUnitShadowDepth));
-  EXPECT_EQ(samplerUnit(shadowed, "residualIrradianceCube"), GLint(kTextureUnitResidualIrradiance));
+  EXPECT_EQ(samplerUnit(shadowed, "residualTruncationCube"), GLint(kTextureUnitResidualIrradiance));
   const ShaderProgram sky("fullscreen.vert", "sky.frag");
   EXPECT_EQ(samplerUnit(sky, "latLongMap"), GLint(kTextureUnitLatLong));
   const ShaderProgram present("fullscreen.vert", "present.frag");
