@@ -20,4 +20,12 @@ Material clampedToGltfRanges(const Material& material) {
   return clamped;
 }
 
+AlphaMode drawnAlphaMode(const Material& material, bool baseColorTextureRead) {
+  if (material.alphaMode == AlphaMode::Opaque || baseColorTextureRead) return material.alphaMode;
+  // BLEND keeps a point with probability alpha (u < alpha, u in [0, 1)); MASK where alpha >= cutoff.
+  const float alpha = std::clamp(material.alpha, 0.0f, 1.0f);
+  const bool alwaysPresent = material.alphaMode == AlphaMode::Blend ? alpha >= 1.0f : alpha >= material.alphaCutoff;
+  return alwaysPresent ? AlphaMode::Opaque : material.alphaMode;
+}
+
 }  // namespace iblkit

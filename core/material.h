@@ -57,6 +57,13 @@ struct GltfRangeFactors {
   glm::vec3 specularColor;
 };
 GltfRangeFactors clampedFactors(const Material& material);
+
+// The alpha mode that draws `material` exactly as its own does with the fewest tests: OPAQUE where
+// its alpha cannot take a point away (BLEND with baseColorFactor.a >= 1, MASK with it >= the
+// cutoff), when no base colour texture is read (`baseColorTextureRead` false: its alpha would
+// multiply the factor); its own mode otherwise. Exporters often mark opaque materials BLEND; the
+// engine draws them as opaque meshes, which keep the early depth test and the shadow mask.
+AlphaMode drawnAlphaMode(const Material& material, bool baseColorTextureRead);
 // The same clamp of factors given on their own (a textured hit's, SurfaceMaterial's).
 inline GltfRangeFactors clampedToGltfRanges(const GltfRangeFactors& f) {
   return {glm::clamp(f.baseColor, 0.0f, 1.0f), glm::clamp(f.metallic, 0.0f, 1.0f),

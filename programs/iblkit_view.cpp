@@ -3,7 +3,7 @@
 //   iblkit-view OUTDIR|SCENE|MODEL --headless -o IMAGE [--env MAP] [--env-intensity X] [--width W] [--height H] [--mode M]
 //               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
 //               [--bench N] [--no-sky] [--ao-rays N] [--texture-slots LIST | --no-textures]
-//               [--anisotropy A] [--lights K] [--no-shadows]
+//               [--anisotropy A] [--lights K] [--no-shadows] [--no-shadow-mask]
 //
 // OUTDIR is an iblkit-bake folder; a .json scene or a .gltf/.glb model is baked in memory first,
 // under --env MAP when given (cli/scene_arguments.h: the same MODEL --env MAP as iblkit-trace). -o .exr
@@ -75,6 +75,7 @@ struct Options {
   float anisotropy = kDefaultTextureAnisotropy;
   int lights = -1;  // --lights K; < 0: all the suns
   bool noShadows = false;
+  bool noShadowMask = false;
   // The window viewer's.
   std::filesystem::path envDir, reference, screenshot;
   std::string caseName, show;  // --case: of a report --reference; --show: the image shown first
@@ -140,22 +141,20 @@ struct FrameTimes {
   double cpuMs = 0.0, gpuMs = 0.0;
 };
 
-// Median frame times of each mode over `frames` rounds; each round renders every mode once, in
-// turn, so that load from other processes weighs on all modes alike. CPU time runs from the first
+// Median frame times of each variant (settings, most often one per mode) over `frames` rounds; each
+// round renders every variant once, in turn, so that load from other processes weighs on all alike. CPU time runs from the first
 // GL call to glFinish; GPU time is a GL_TIME_ELAPSED query around the frame (llvmpipe's is not
 // meaningful: it renders when glFinish asks).
 // `newShadowMaps`: every frame renders the shadow maps again (their cost; otherwise they are
 // rendered once, the camera does not move them).
 std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, const Camera& camera,
-                                  const FrameSettings& settings, const std::vector<ShadingMode>& modes,
-                                  int frames, bool newShadowMaps = false) {
-  std::vector<std::vector<double>> cpu(modes.size()), gpu(modes.size());
+                                  const std::vector<FrameSettings>& variants, int frames, bool newShadowMaps = false) {
+  std::vector<std::vector<double>> cpu(variants.size()), gpu(variants.size());
   GLuint query = 0;
   glCreateQueries(GL_TIME_ELAPSED, 1, &query);
   for (int frame = 0; frame < frames; ++frame)
-    for (std::size_t m = 0; m < modes.size(); ++m) {
-      FrameSettings modeSettings = settings;
-      modeSettings.mode = modes[m];
+    for (std::size_t m = 0; m < variants.size(); ++m) {
+      const FrameSettings& modeSettings = variants[m];
       if (newShadowMaps) renderer.invalidateShadowMaps();
       const auto start = std::chrono::steady_clock::now();
       glBeginQuery(GL_TIME_ELAPSED, query);
@@ -172,8 +171,18 @@ std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, cons
   glDeleteQueries(1, &query);
   checkGlErrors("benchmark");
   std::vector<FrameTimes> times;
-  for (std::size_t m = 0; m < modes.size(); ++m) times.push_back({median(cpu[m]), median(gpu[m])});
+  for (std::size_t m = 0; m < variants.size(); ++m) times.push_back({median(cpu[m]), median(gpu[m])});
   return times;
+}
+
+// `settings` in each of `modes`.
+std::vector<FrameSettings> inModes(const FrameSettings& settings, const std::vector<ShadingMode>& modes) {
+  std::vector<FrameSettings> variants;
+  for (ShadingMode mode : modes) {
+    variants.push_back(settings);
+    variants.back().mode = mode;
+  }
+  return variants;
 }
 
 // The target's colour, box-filtered down by the supersampling factor (a power of two).
@@ -208,6 +217,7 @@ int runHeadless(const Options& options) {
   settings.textureSlots = options.noTextures ? 0u : parseTextureSlots(options.textureSlots);
   settings.lightCount = options.lights;
   settings.shadows = !options.noShadows;
+  settings.shadowMask = !options.noShadowMask;
 
   const BakedScene bake = loadViewScene(options.scene.input, options.scene.environment, options.aoRays);
   // No image may replace the bake folder's files, the scene, a model or the map.
@@ -248,8 +258,8 @@ int runHeadless(const Options& options) {
     std::vector<ShadingMode> modes(std::begin(kShadingModes), std::end(kShadingModes));
     if (!allModes) modes = {settings.mode};
     // Warm-up: shader variants, caches (the output frame, when there is one, was the first).
-    benchmark(renderer, target, camera, settings, modes, options.output.empty() || allModes ? 2 : 1);
-    const std::vector<FrameTimes> times = benchmark(renderer, target, camera, settings, modes, options.bench);
+    benchmark(renderer, target, camera, inModes(settings, modes), options.output.empty() || allModes ? 2 : 1);
+    const std::vector<FrameTimes> times = benchmark(renderer, target, camera, inModes(settings, modes), options.bench);
     double unlit = 0.0, full = 0.0;
     for (std::size_t m = 0; m < modes.size(); ++m) {
       std::cout << std::fixed << std::setprecision(2) << "  " << std::left << std::setw(15)
@@ -266,10 +276,21 @@ int runHeadless(const Options& options) {
     if (allModes && shadowed != modes.end() && settings.shadows && lights > 0) {
       const double cached = times[std::size_t(shadowed - modes.begin())].cpuMs;
       const FrameTimes fresh =
-          benchmark(renderer, target, camera, settings, {ShadingMode::LightsShadowed}, options.bench, true).front();
+          benchmark(renderer, target, camera, inModes(settings, {ShadingMode::LightsShadowed}), options.bench, true)
+              .front();
       std::cout << "  lights-shadowed with its " << lights << " shadow map(s) of " << kShadowMapSize << "^2 rendered "
                 << "again each frame: cpu " << fresh.cpuMs << " ms (the maps: " << fresh.cpuMs - cached << " ms)\n";
       if (full > 0.0) std::cout << "  lights-shadowed / full = " << cached / full << '\n';
+      // The screen-space mask against the shadows in the lit pass, frames interleaved (single-sample
+      // targets only: a multisampled one shadows in the lit pass either way).
+      if (target.samples() == 1 && settings.shadowMask) {
+        std::vector<FrameSettings> pair = inModes(settings, {ShadingMode::LightsShadowed, ShadingMode::LightsShadowed});
+        pair[1].shadowMask = false;
+        const std::vector<FrameTimes> both = benchmark(renderer, target, camera, pair, options.bench);
+        std::cout << "  lights-shadowed, shadows in the lit pass (--no-shadow-mask): cpu " << both[1].cpuMs
+                  << " ms; with the screen-space mask: " << both[0].cpuMs << " ms (ratio "
+                  << both[1].cpuMs / both[0].cpuMs << ")\n";
+      }
     }
   }
 
@@ -350,6 +371,7 @@ int runWindow(Options options) {
   viewer.anisotropy = options.anisotropy;
   viewer.lightCount = options.lights;
   viewer.shadows = !options.noShadows;
+  viewer.shadowMask = !options.noShadowMask;
   // A bake folder with --env alone starts with the bake's map and switches on the worker (the
   // window opens at once); a scene or model is baked under the map before the window opens.
   EnvironmentOverride environment = options.scene.environment;
@@ -447,6 +469,9 @@ int main(int argc, char** argv) {
                  "residual's SH9 (default: all, at most " + std::to_string(kMaxEngineLights) + ")")
       ->check(CLI::Range(0, kMaxEngineLights));
   app.add_flag("--no-shadows", options.noShadows, "lights-shadowed draws its lights unshadowed (as lights)");
+  app.add_flag("--no-shadow-mask", options.noShadowMask,
+               "lights-shadowed reads the shadow maps in the lit pass, not from a screen-space mask "
+               "(single-sample targets; multisampled ones always do)");
   app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex when baking a scene in memory")
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();

@@ -4,17 +4,10 @@
 // have the terms.
 
 // The first lightCount suns (renderer.cpp: the world direction towards each, its uniform radiance,
-// its angular radius and that angle's cos and sin), and the residual: its SH9 radiance (with the suns not drawn
-// added back) and its specular chain (the same levels and rotation as the map's).
-// LIGHT_COUNT: a constant of the program (renderer.cpp compiles one per count), so that the loop
-// over the lights unrolls with constant indices.
-#ifndef LIGHT_COUNT
-#define LIGHT_COUNT kMaxEngineLights
-#endif
-const int lightCount = LIGHT_COUNT;
-uniform vec3 lightDirection[kMaxEngineLights];
+// its angular radius' cos and sin), and the residual: its SH9 radiance (with the suns not drawn
+// added back) and its specular chain (the same levels and rotation as the map's). lightCount,
+// lightDirection and lightCosSin are light_directions.glsl's (through shadow.glsl).
 uniform vec3 lightRadiance[kMaxEngineLights];
-uniform vec2 lightCosSin[kMaxEngineLights];
 // cos(1.1 r), cos(0.9 r): the edge of a mirror's reflected disk (mirroredDiskRadiance).
 uniform vec2 lightMirrorEdgeCos[kMaxEngineLights];
 // The light's irradiance on an upward normal, lightRadiance uniformDiskIrradiance(l.y, r) (the
@@ -76,14 +69,18 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 posit
   vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, axis, irradiance);
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, specularWeight, specularColor);
   vec3 irradianceUp = vec3(0.0);
+  // The lights' shadows: this pixel's texel of the frame's shadow mask (SHADOW_MASK 1, shadow.glsl),
+  // or the maps read here.
+  vec4 visibility = vec4(1.0);
+#if SHADOW_MASK
+  if (shadowed) visibility = texelFetch(shadowMask, ivec2(gl_FragCoord.xy), 0);
+#else
+  if (shadowed) visibility = shadowVisibilities(position, geometric);
+#endif
   for (int i = 0; i < lightCount; ++i) {
     vec3 l = lightDirection[i];
     vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightCosSin[i], lightMirrorEdgeCos[i]);
-    if (shadowed && maxComponent(lit) > 0.0) {
-      vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
-      lit *= shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
-    }
-    radiance += lit;
+    radiance += lit * visibility[i];
     irradianceUp += lightIrradianceUp[i];
   }
   // The lights' bounce off what occludes the vertex (groundBounceIrradiance,

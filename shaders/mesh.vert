@@ -18,6 +18,10 @@ layout(location = kAttributeTangent) in vec4 inTangent;
 
 uniform mat4 viewProjection;
 
+// The shadow mask's surface pass (shadow_surface.vert) computes the same gl_Position: its
+// fragments must be the lit pass's exactly.
+invariant gl_Position;
+
 out VertexData {
   vec3 position;
   vec3 normal;

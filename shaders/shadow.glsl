@@ -10,6 +10,20 @@
 // each read from a footprint's moments by one model (shadowBlockers), as Yang et al. 2010
 // ("Variance Soft Shadow Mapping") do with variance moments.
 // Needs shared_constants.glsl (units, kMaxEngineLights, kShadowExponent).
+//
+// The shadow mask (engine/gl/shadow_mask.h): on a single-sample target the renderer computes every
+// receiver pixel's visibilities once, in a full-screen pass (shadow_mask.frag) over the visible
+// surfaces' positions and geometric normals (shadow_surface.frag), and the lit pass reads them back
+// (SHADOW_MASK 1). A software rasteriser shades in blocks of pixels, which the small triangles of
+// a dense mesh fill poorly; the full-screen pass fills them (docs/engine.md "Shadows").
+
+#include "light_directions.glsl"
+
+#ifndef SHADOW_MASK
+#define SHADOW_MASK 0
+#endif
+// The frame's shadow mask: light i's visibility in component i (shadow_mask.frag).
+layout(binding = kTextureUnitShadowMask) uniform sampler2D shadowMask;
 
 layout(binding = kTextureUnitShadowDepth) uniform sampler2DArray shadowMoments;  // trilinear
 // Light i's map: world -> (u, v, depth) in [0, 1] (depth 0 on the side of the light).
@@ -79,3 +93,15 @@ float shadowVisibility(int i, vec3 position, vec3 g, vec3 l, float tanSigma) {
   return 1.0 - filtered.x;
 }
 
+
+// The visibility of each drawn light from `position` in component i (1 past lightCount), with
+// `geometric` the surface's geometric normal (either side: it is turned towards each light).
+vec4 shadowVisibilities(vec3 position, vec3 geometric) {
+  vec4 visibility = vec4(1.0);
+  for (int i = 0; i < lightCount; ++i) {
+    vec3 l = lightDirection[i];
+    vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
+    visibility[i] = shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
+  }
+  return visibility;
+}

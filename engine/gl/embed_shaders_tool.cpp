@@ -117,7 +117,9 @@ std::string sharedConstants() {
                         {"kTextureUnitIrradiance", kTextureUnitIrradiance},
                         {"kTextureUnitResidualSpecular", kTextureUnitResidualSpecular},
                         {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
-                        {"kTextureUnitResidualIrradiance", kTextureUnitResidualIrradiance}});
+                        {"kTextureUnitResidualIrradiance", kTextureUnitResidualIrradiance},
+                        {"kTextureUnitShadowMask", kTextureUnitShadowMask},
+                        {"kTextureUnitShadowSurface", kTextureUnitShadowSurface}});
   text += intConstants("iblkit::kMaxEngineLights, kShadowMapSize (engine/gl/light_constants.h)",
                        {{"kMaxEngineLights", kMaxEngineLights}, {"kShadowMapSize", kShadowMapSize}});
   text += "// iblkit::kShadowExponent (engine/gl/light_constants.h)\nconst float kShadowExponent = " +

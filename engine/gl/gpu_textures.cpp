@@ -17,6 +17,17 @@ GlTexture::~GlTexture() {
   if (id_) glDeleteTextures(1, &id_);
 }
 
+GLuint createTargetTexture(GLenum format, int width, int height) {
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, format, width, height);
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
 namespace {
 
 GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT) {

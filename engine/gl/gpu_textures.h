@@ -23,6 +23,10 @@ class GlTexture {
   GLuint id_ = 0;
 };
 
+// An uninitialised width x height 2D texture of `format`, one level, nearest filtering, clamped to
+// the edge: a render target's attachment. The caller owns the name (GlTexture, or its own).
+GLuint createTargetTexture(GLenum format, int width, int height);
+
 // A lat-long map as RGBA32F with image row 0 first (v = 0 at t = 0), bilinear, no mip-maps,
 // repeating in s and clamped in t: the core's sampleLatLongBilinear (environment.glsl).
 GlTexture uploadLatLong(const Image& latLong);

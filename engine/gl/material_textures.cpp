@@ -135,21 +135,29 @@ void setMaterialUniforms(const ShaderProgram& program, const Material& material,
   }
 }
 
+MaterialTextures::SlotTexture MaterialTextures::slotTexture(const Material& material, int slot, unsigned slots) const {
+  const TextureRef& ref = slotRef(material, slot);
+  if (!(slots & kSlots[std::size_t(slot)]) || !ref.present() || std::size_t(ref.texture) >= samplers_.size()) return {};
+  const auto& chains = slotColorSpace(kSlots[std::size_t(slot)]) == ColorSpace::Srgb ? srgb_ : linear_;
+  return {chains[std::size_t(ref.texture)].id(), samplers_[std::size_t(ref.texture)].id()};
+}
+
 unsigned MaterialTextures::bind(const Material& material, unsigned slots) const {
   unsigned bound = 0;
   for (int slot = 0; slot < int(kSlots.size()); ++slot) {
     const GLuint unit = kTextureUnitBaseColor + GLuint(slot);
-    const TextureRef& ref = slotRef(material, slot);
-    GLuint texture = 0, sampler = 0;
-    if ((slots & kSlots[std::size_t(slot)]) && ref.present() && std::size_t(ref.texture) < samplers_.size()) {
-      const auto& chains = slotColorSpace(kSlots[std::size_t(slot)]) == ColorSpace::Srgb ? srgb_ : linear_;
-      texture = chains[std::size_t(ref.texture)].id();
-      sampler = samplers_[std::size_t(ref.texture)].id();
-    }
-    if (texture) bound |= kSlots[std::size_t(slot)];
-    glBindTextureUnit(unit, texture ? texture : white_.id());
-    glBindSampler(unit, texture ? sampler : 0);
+    const SlotTexture t = slotTexture(material, slot, slots);
+    if (t.texture) bound |= kSlots[std::size_t(slot)];
+    glBindTextureUnit(unit, t.texture ? t.texture : white_.id());
+    glBindSampler(unit, t.texture ? t.sampler : 0);
   }
+  return bound;
+}
+
+unsigned MaterialTextures::boundSlots(const Material& material, unsigned slots) const {
+  unsigned bound = 0;
+  for (int slot = 0; slot < int(kSlots.size()); ++slot)
+    if (slotTexture(material, slot, slots).texture) bound |= kSlots[std::size_t(slot)];
   return bound;
 }
 

@@ -57,11 +57,20 @@ class MaterialTextures {
   // their samplers; returns those slots' TextureSlot bits. The other units get a 1 x 1 white
   // texture, which the shader reads but does not use.
   unsigned bind(const Material& material, unsigned slots) const;
+  // The bits bind() returns, without binding anything.
+  unsigned boundSlots(const Material& material, unsigned slots) const;
 
   std::size_t textureCount() const { return samplers_.size(); }
   float anisotropy() const { return anisotropy_; }
 
  private:
+  struct SlotTexture {
+    GLuint texture = 0, sampler = 0;
+  };
+  // The texture and sampler `material`'s slot (a kSlots index) reads with `slots` switched on;
+  // zeros when it reads none.
+  SlotTexture slotTexture(const Material& material, int slot, unsigned slots) const;
+
   std::vector<GlTexture> linear_, srgb_;  // per texture; id 0 where no slot reads it so
   std::vector<GlSampler> samplers_;       // per texture
   GlTexture white_;

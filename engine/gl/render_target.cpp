@@ -4,20 +4,10 @@
 #include <utility>
 
 #include "core/error.h"
+#include "engine/gl/gpu_textures.h"
 
 namespace iblkit {
 namespace {
-
-GLuint texture2D(GLenum format, int width, int height) {
-  GLuint texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, format, width, height);
-  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return texture;
-}
 
 GLuint multisampledTexture(GLenum format, int width, int height, int samples) {
   GLuint texture = 0;
@@ -46,11 +36,11 @@ RenderTarget::RenderTarget(int width, int height, int msaaSamples)
     throw Error("render target: " + std::to_string(samples_) + " samples requested, at most " +
                 std::to_string(maxSamples) + " supported");
 
-  resolvedColor_ = texture2D(GL_RGBA32F, width, height);
+  resolvedColor_ = createTargetTexture(GL_RGBA32F, width, height);
   glCreateFramebuffers(1, &resolveFramebuffer_);
   glNamedFramebufferTexture(resolveFramebuffer_, GL_COLOR_ATTACHMENT0, resolvedColor_, 0);
   if (samples_ == 1) {
-    depth_ = texture2D(GL_DEPTH_COMPONENT32F, width, height);
+    depth_ = createTargetTexture(GL_DEPTH_COMPONENT32F, width, height);
     glNamedFramebufferTexture(resolveFramebuffer_, GL_DEPTH_ATTACHMENT, depth_, 0);
     drawFramebuffer_ = resolveFramebuffer_;
   } else {

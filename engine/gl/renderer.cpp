@@ -16,6 +16,7 @@
 #include "engine/gl/light_constants.h"
 #include "engine/gl/residual_truncation.h"
 #include "engine/gl/shadow_maps.h"
+#include "engine/gl/shadow_mask.h"
 #include "engine/gl/gpu_mesh.h"
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/material_textures.h"
@@ -45,9 +46,9 @@ float envRotationFromBake(const EnvironmentStages& env, std::optional<float> deg
 struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;
-  // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn), compiled
-  // on first use.
-  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int>, ShaderProgram> meshPrograms;
+  // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn, shadows
+  // from the mask), compiled on first use.
+  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, bool>, ShaderProgram> meshPrograms;
   MaterialTextures materialTextures;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
@@ -61,6 +62,8 @@ struct Renderer::Impl {
   // The lights modes' inputs (drawn_lights.h): the stages without the images.
   EnvironmentStages lightStages;
   std::unique_ptr<ShadowMaps> shadowMaps;  // made on the first shadowed frame
+  std::unique_ptr<ShadowMask> shadowMask;  // made on the first shadowed single-sample frame
+  int shadowMaskFrames = 0;
   // Per mesh, the ground's triangles split by whether a map covers them (shadowCoverage; empty for
   // the objects, drawn whole), for the maps of shadowMaps->renderCount() == coverageRenders.
   std::vector<ShadowCoverage> shadowCoverage;
@@ -75,19 +78,22 @@ struct Renderer::Impl {
   // `lightCount`: the lights modes' number of drawn lights (dominant_lights.glsl's LIGHT_COUNT), a
   // constant so that the lights loop unrolls with constant indices (llvmpipe pays a loop over a
   // uniform count and its indexed uniforms per pixel); 0 in the other modes.
+  // `fromMask`: lights-shadowed reads the frame's shadow mask (shadow_mask.h) in place of the maps.
   const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode,
-                                   int lightCount) {
+                                   int lightCount, bool fromMask) {
     // The feature layers do not depend on the mode: one program each.
     if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
     if (mode != ShadingMode::Lights && mode != ShadingMode::LightsShadowed) lightCount = 0;
-    const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount);
+    if (mode != ShadingMode::LightsShadowed) fromMask = false;
+    const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount, fromMask);
     auto found = meshPrograms.find(key);
     if (found == meshPrograms.end()) {
       const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
                                   "\n#define FRAME_LAYER " + std::to_string(int(layer)) +
                                   "\n#define TEXTURED " + std::to_string(slots) +
                                   "\n#define ALPHA_MODE " + std::to_string(int(alphaMode)) +
-                                  "\n#define LIGHT_COUNT " + std::to_string(lightCount);
+                                  "\n#define LIGHT_COUNT " + std::to_string(lightCount) +
+                                  "\n#define SHADOW_MASK " + std::to_string(int(fromMask));
       found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
     }
     return found->second;
@@ -132,6 +138,8 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
 }
 
 const EnvironmentStages& Renderer::lightStages() const { return impl_->lightStages; }
+
+int Renderer::shadowMaskFrames() const { return impl_->shadowMaskFrames; }
 
 int Renderer::shadowMapRenders() const { return impl_->shadowMaps ? impl_->shadowMaps->renderCount() : 0; }
 
@@ -181,42 +189,15 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     glBindTextureUnit(kTextureUnitResidualIrradiance, r.residualTruncation.id());
   }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glViewport(0, 0, width, height);
+  GLint samples = 1;
+  glGetIntegerv(GL_SAMPLES, &samples);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-  if (settings.sampleShading) {
-    glEnable(GL_SAMPLE_SHADING);
-    glMinSampleShading(1.0f);
-  } else {
-    glDisable(GL_SAMPLE_SHADING);
-  }
-  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-
   const glm::mat4 viewProjection =
       camera.projectionMatrix(float(width) / float(height)) * camera.viewMatrix();
   const glm::vec2 latLongRotation = inverseRotation(r.rotationDegrees + settings.envRotationDegrees);
-  // The samplers are declared with these units (layout(binding), texture_unit.h).
-  glBindTextureUnit(kTextureUnitLatLong, r.latLong.id());
-  glBindTextureUnit(kTextureUnitSpecular, r.specular.id());
-  glBindTextureUnit(kTextureUnitBrdfLut, r.brdfLut.id());
-  glBindTextureUnit(kTextureUnitIrradiance, r.irradiance.id());
-
-  if (settings.drawSky && settings.layer == FrameLayer::Radiance) {
-    const ShaderProgram& sky = r.skyProgram;
-    sky.set("inverseViewProjection", glm::inverse(viewProjection));
-    sky.set("latLongRotation", latLongRotation);
-    sky.set("latLongIntensity", r.intensity);
-    sky.use();
-    glBindVertexArray(r.emptyVertexArray);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-
   // SH9 radiance turned by the extra rotation (the scene's is in the baked coefficients).
   const SphericalHarmonics9 sh =
       settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
-  GLint samples = 1;
-  glGetIntegerv(GL_SAMPLES, &samples);
   // The residual cube's correction of the residual SH9 (dominant_lights.glsl, residual_truncation.h),
   // turned by the extra rotation like the specular chain; off without a cube (a bake from before
   // it) or without a residual chain.
@@ -246,6 +227,65 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     program.set("residualCubeCorrection", cubeCorrection ? 1 : 0);
     if (mode == ShadingMode::LightsShadowed) r.shadowMaps->setUniforms(program);
   };
+  // On a single-sample target the shadows come from the frame's mask (shadow_mask.h), drawn over
+  // the receivers the lit pass draws with the shadowed program: every mesh drawn opaque
+  // (drawnAlphaMode), the ground by its covered triangles only (below). A MASK or BLEND mesh whose
+  // alpha can drop a point keeps the lookups in the lit pass (the surface pass has no alpha test).
+  const bool fromMask = mode == ShadingMode::LightsShadowed && settings.layer == FrameLayer::Radiance &&
+                        settings.shadowMask && samples <= 1 && !drawn.lights.empty();
+  if (fromMask) {
+    ++r.shadowMaskFrames;
+    if (!r.shadowMask) r.shadowMask = std::make_unique<ShadowMask>();
+    r.shadowMask->beginSurfaces(width, height);
+    r.shadowMask->surfaceProgram().set("viewProjection", viewProjection);
+    glCullFace(GL_BACK);
+    for (std::size_t i = 0; i < r.meshes.size(); ++i) {
+      const Mesh& mesh = r.scene.meshes[i];
+      const Material& material = r.scene.materials.at(std::size_t(mesh.material));
+      const unsigned slots = r.materialTextures.boundSlots(material, settings.textureSlots);
+      if (drawnAlphaMode(material, (slots & kSlotBaseColor) != 0) != AlphaMode::Opaque) continue;
+      if (material.doubleSided)
+        glDisable(GL_CULL_FACE);
+      else
+        glEnable(GL_CULL_FACE);
+      if (mesh.isGround && i < r.shadowCoverage.size())
+        r.meshes[i].draw(r.shadowCoverage[i].covered);
+      else
+        r.meshes[i].draw();
+    }
+    glDisable(GL_CULL_FACE);
+    const ShaderProgram& maskProgram = r.shadowMask->maskProgram(int(drawn.lights.size()));
+    setFrameUniforms(maskProgram);
+    r.shadowMask->computeMask(maskProgram, r.emptyVertexArray);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  }
+  glViewport(0, 0, width, height);
+  if (settings.sampleShading) {
+    glEnable(GL_SAMPLE_SHADING);
+    glMinSampleShading(1.0f);
+  } else {
+    glDisable(GL_SAMPLE_SHADING);
+  }
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  // The samplers are declared with these units (layout(binding), texture_unit.h).
+  glBindTextureUnit(kTextureUnitLatLong, r.latLong.id());
+  glBindTextureUnit(kTextureUnitSpecular, r.specular.id());
+  glBindTextureUnit(kTextureUnitBrdfLut, r.brdfLut.id());
+  glBindTextureUnit(kTextureUnitIrradiance, r.irradiance.id());
+
+  if (settings.drawSky && settings.layer == FrameLayer::Radiance) {
+    const ShaderProgram& sky = r.skyProgram;
+    sky.set("inverseViewProjection", glm::inverse(viewProjection));
+    sky.set("latLongRotation", latLongRotation);
+    sky.set("latLongIntensity", r.intensity);
+    sky.use();
+    glBindVertexArray(r.emptyVertexArray);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glCullFace(GL_BACK);
@@ -256,9 +296,11 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const Material& material = r.scene.materials.at(std::size_t(mesh.material));
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
+    // A BLEND or MASK material whose alpha cannot take a point away is drawn opaque (core/material.h).
+    const AlphaMode alphaMode = drawnAlphaMode(material, (slots & kSlotBaseColor) != 0);
     const auto use = [&](ShadingMode programMode) -> const ShaderProgram& {
-      const ShaderProgram& program =
-          r.meshProgram(programMode, settings.layer, slots, material.alphaMode, int(drawn.lights.size()));
+      const ShaderProgram& program = r.meshProgram(programMode, settings.layer, slots, alphaMode,
+                                                   int(drawn.lights.size()), fromMask && alphaMode == AlphaMode::Opaque);
       if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
         setFrameUniforms(program);
         prepared.push_back(&program);

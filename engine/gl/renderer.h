@@ -40,6 +40,11 @@ struct FrameSettings {
   // and whether lights-shadowed shadows them (false: it draws as lights).
   int lightCount = -1;
   bool shadows = true;
+  // lights-shadowed on a single-sample target: the shadows computed once per pixel in a screen-space
+  // pass (shadow_mask.h) rather than in the lit pass; the same frame to the mask's 16 bits, faster
+  // on a software rasteriser (docs/engine.md "Shadows"). Multisampled targets always shadow in the
+  // lit pass.
+  bool shadowMask = true;
 };
 
 // The envRotationDegrees that shows the environment at the absolute rotation `degrees` about +Y
@@ -82,6 +87,8 @@ class Renderer {
   // How many times the shadow maps were rendered (ShadowMaps::renderCount; 0 before the first
   // shadowed frame), and their side in texels.
   int shadowMapRenders() const;
+  // How many frames took their shadows from the screen-space mask (FrameSettings::shadowMask).
+  int shadowMaskFrames() const;
   // Drops the shadow maps, so that the next shadowed frame renders them again (the benchmark of
   // their cost; a new environment does it by itself).
   void invalidateShadowMaps();

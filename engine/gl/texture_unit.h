@@ -27,6 +27,10 @@ enum TextureUnit : unsigned {
   kTextureUnitResidualSpecular = 13,
   kTextureUnitShadowDepth = 14,
   kTextureUnitResidualIrradiance = 15,  // mesh.frag's lights modes: the residual's irradiance cube
+  // The shadow mask (shadow_mask.h): mesh.frag's lights-shadowed mode reads the mask,
+  // shadow_mask.frag the surfaces it is computed from.
+  kTextureUnitShadowMask = 16,
+  kTextureUnitShadowSurface = 17,
 };
 
 }  // namespace iblkit

@@ -175,6 +175,10 @@ void lightsSection(FrameSettings& settings, const Renderer& renderer) {
   int k = drawnLightCount(renderer.lightStages(), settings.lightCount);
   if (ImGui::SliderInt("lights K", &k, 0, available)) settings.lightCount = k;
   ImGui::Checkbox("shadows", &settings.shadows);
+  ImGui::SameLine();
+  ImGui::Checkbox("screen-space mask", &settings.shadowMask);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("single-sample frames: the shadows computed once per pixel before the lit pass");
   if (settings.mode != ShadingMode::Lights && settings.mode != ShadingMode::LightsShadowed)
     ImGui::TextDisabled("(used by the lights and lights-shadowed modes)");
 }

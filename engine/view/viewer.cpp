@@ -59,6 +59,7 @@ class Viewer {
     settings_.textureSlots = options.textureSlots;
     settings_.lightCount = options.lightCount;
     settings_.shadows = options.shadows;
+    settings_.shadowMask = options.shadowMask;
     // The reference decides the size (same camera, same pixels) unless --width/--height do.
     int width = bake_.scene.width, height = bake_.scene.height;
     if (!options.references.empty()) {

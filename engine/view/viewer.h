@@ -39,6 +39,7 @@ struct ViewerOptions {
   unsigned textureSlots = kAllTextureSlots;       // FrameSettings::textureSlots at start
   int lightCount = -1;                            // FrameSettings::lightCount at start (< 0: all)
   bool shadows = true;                            // FrameSettings::shadows at start
+  bool shadowMask = true;                         // FrameSettings::shadowMask at start
   float anisotropy = kDefaultTextureAnisotropy;  // Renderer's textureAnisotropy
   std::filesystem::path envDir = "assets/hdri";
   std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)

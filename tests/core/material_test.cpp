@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace iblkit {
@@ -55,6 +57,30 @@ TEST(ClampedToGltfRanges, InfiniteFactorsGoToTheRangeEnds) {
   EXPECT_EQ(c.metallic, 1.0f);
   EXPECT_EQ(c.roughness, 0.0f);
   EXPECT_EQ(c.specularColor, glm::vec3(0.0f));
+}
+
+// drawnAlphaMode: OPAQUE exactly where the material's own test keeps every point (BLEND keeps a
+// point where u < alpha for u in [0, 1), MASK where alpha >= cutoff), checked against
+// surfacePresent's rule over u; a base colour texture's alpha keeps the mode.
+TEST(DrawnAlphaMode, OpaqueOnlyWhereTheAlphaTestKeepsEveryPoint) {
+  for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
+    for (float alpha : {-0.5f, 0.0f, 0.3f, 0.5f, 0.99999f, 1.0f, 1.5f}) {
+      Material m;
+      m.alphaMode = mode;
+      m.alpha = alpha;
+      m.alphaCutoff = 0.5f;
+      // u over [0, 1) on a fine grid and its largest float, with the engine's clamp of alpha to [0, 1].
+      const float a = std::clamp(alpha, 0.0f, 1.0f);
+      bool everyPoint = true;
+      for (int k = 0; k <= 4096; ++k) {
+        const float u = k < 4096 ? float(k) / 4096.0f : std::nextafter(1.0f, 0.0f);
+        const bool present = mode == AlphaMode::Mask ? a >= m.alphaCutoff : mode == AlphaMode::Blend ? u < a : true;
+        everyPoint = everyPoint && present;
+      }
+      const AlphaMode drawn = drawnAlphaMode(m, false);
+      EXPECT_EQ(drawn, everyPoint ? AlphaMode::Opaque : mode) << int(mode) << " alpha " << alpha;
+      EXPECT_EQ(drawnAlphaMode(m, true), mode) << int(mode) << " alpha " << alpha;
+    }
 }
 
 }  // namespace

@@ -9,8 +9,8 @@
 namespace iblkit {
 namespace {
 
-// mesh.frag includes the generated constants and four files (material.glsl includes the constants
-// again, under their include guard): each is preceded by "#line 1 N" and
+// mesh.frag includes the generated constants and seven files (material.glsl includes the constants
+// again, under their include guard; shadow.glsl includes light_directions.glsl): each is preceded by "#line 1 N" and
 // followed by the line after the #include in file 0, so compiler messages map back to the
 // original files.
 TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
@@ -21,7 +21,7 @@ TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
   EXPECT_NE(source.find("#line 1 4\n"), std::string::npos);
   for (const EmbeddedShader& shader : embeddedShaders())
     if (shader.name == "mesh.frag") {
-      ASSERT_EQ(shader.files.size(), 9u);
+      ASSERT_EQ(shader.files.size(), 10u);
       EXPECT_EQ(shader.files[0], "shaders/mesh.frag");
       EXPECT_EQ(shader.files[1], "generated/shared_constants.glsl");
       EXPECT_EQ(shader.files[2], "shaders/environment.glsl");
@@ -30,7 +30,8 @@ TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
       EXPECT_EQ(shader.files[5], "shaders/material.glsl");
       EXPECT_EQ(shader.files[6], "shaders/lights.glsl");
       EXPECT_EQ(shader.files[7], "shaders/shadow.glsl");
-      EXPECT_EQ(shader.files[8], "shaders/dominant_lights.glsl");
+      EXPECT_EQ(shader.files[8], "shaders/light_directions.glsl");  // included by shadow.glsl
+      EXPECT_EQ(shader.files[9], "shaders/dominant_lights.glsl");
     }
 }
 

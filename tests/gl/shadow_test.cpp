@@ -333,6 +333,64 @@ TEST_F(ShadowTest, ShadowMapsAreRenderedOnlyWhenALightChanges) {
   checkGlErrors("shadow map renders");
 }
 
+// The screen-space shadow mask (shadow_mask.h, FrameSettings::shadowMask) gives the frame that the
+// shadows computed in the lit pass give: single-sample frames of a sphere and a double-sided wall
+// under a high and a grazing sun agree to a relative 1e-3 at every pixel, the lit ground and both
+// shadows included (a mask a pixel off, or another surface's, differs by the whole shadow at its
+// edges). The wall is OPAQUE, MASK with alpha 1 (drawn opaque, drawnAlphaMode: a receiver of the
+// mask too) or BLEND with alpha 0.6 (it keeps its shadows in the lit pass, and the receivers seen
+// through its uncovered pixels read the mask). Frames of 4 samples keep the lit pass's shadows.
+TEST_F(ShadowTest, ShadowMaskGivesTheLitPassShadows) {
+  for (const char* alphaMode : {"OPAQUE", "MASK", "BLEND"})
+    for (float elevation : {50.0f, 12.0f}) {
+      const std::string name = std::string("mask_") + alphaMode + "_" + std::to_string(int(elevation));
+      const nlohmann::json models = {{{"shape", "sphere"}, {"translation", {0.6, 0.7, 0.0}}, {"scale", 0.5}},
+                                     {{"file", "wall.gltf"}, {"translation", {-0.6, 0.5, 0.3}}}};
+      const SunScene s = writeSunScene(name, sunDirection(150.0f, elevation), 0.7f, models);
+      test::GltfBuilder builder;
+      builder.addQuadNode(0.5f);
+      builder.document()["materials"] = {
+          {{"pbrMetallicRoughness",
+            {{"baseColorFactor", {0.8, 0.8, 0.8, std::string(alphaMode) == "BLEND" ? 0.6 : 1.0}}, {"metallicFactor", 0.0}}},
+           {"doubleSided", true},
+           {"alphaMode", alphaMode}}};
+      builder.write(s.dir / "wall.gltf", test::GltfBuilder::Storage::BinFile);
+      const BakedScene bake = bakeWithSun(s);
+      Renderer renderer(bake);
+      const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+      auto frame = [&](ShadingMode mode, bool mask, int samples) {
+        RenderTarget target(kWidth, kHeight, samples);
+        FrameSettings settings;
+        settings.mode = mode;
+        settings.drawSky = false;
+        settings.shadowMask = mask;
+        renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+        return target.readColor();
+      };
+      const Image inLitPass = frame(ShadingMode::LightsShadowed, false, 1);
+      EXPECT_EQ(renderer.shadowMaskFrames(), 0);
+      const Image fromMask = frame(ShadingMode::LightsShadowed, true, 1);
+      EXPECT_EQ(renderer.shadowMaskFrames(), 1);
+      frame(ShadingMode::LightsShadowed, true, 4);
+      EXPECT_EQ(renderer.shadowMaskFrames(), 1);
+      const Image unshadowed = frame(ShadingMode::Lights, true, 1);
+      checkGlErrors("shadow mask frames");
+      int shadowed = 0;
+      double worst = 0.0;
+      for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+          const glm::vec3 a(inLitPass.at(x, y)), b(fromMask.at(x, y));
+          const float lit = luminance(glm::vec3(unshadowed.at(x, y)));
+          if (luminance(a) < 0.5f * lit) ++shadowed;
+          worst = std::max(worst, double(glm::length(a - b) / std::max(glm::length(a), 1e-3f)));
+        }
+      std::cout << alphaMode << " wall, sun " << elevation << " degrees up: " << shadowed
+                << " shadowed pixels, largest relative difference " << worst << '\n';
+      EXPECT_GT(shadowed, 1000);
+      EXPECT_LT(worst, 1e-3);
+    }
+}
+
 // K below the number of suns: a sun not drawn as a light keeps its diffuse light in the residual's
 // SH9 (SH is linear). With K = 0 the open ground, far from the sphere, gets the map's SH9 irradiance
 // (sky + sun) from the residual alone: within 2% of K = 1's residual + disk light.

@@ -1,0 +1,91 @@
+#include "engine/gl/shadow_mask.h"
+
+#include <string>
+
+#include "core/error.h"
+#include "engine/gl/light_constants.h"
+#include "engine/gl/texture_unit.h"
+
+namespace iblkit {
+namespace {
+
+// One visibility per component of the mask's RGBA texel (shadow.glsl's shadowVisibilities).
+static_assert(kMaxEngineLights <= 4, "the shadow mask holds at most 4 lights");
+
+GlTexture texture2D(GLenum format, int width, int height) {
+  return GlTexture(createTargetTexture(format, width, height));
+}
+
+void requireComplete(GLuint framebuffer) {
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error("shadow mask: framebuffer incomplete (status " + std::to_string(status) + ")");
+}
+
+}  // namespace
+
+ShadowMask::ShadowMask() {
+  glCreateFramebuffers(1, &surfaceFramebuffer_);
+  glCreateFramebuffers(1, &maskFramebuffer_);
+}
+
+ShadowMask::~ShadowMask() {
+  if (surfaceFramebuffer_) glDeleteFramebuffers(1, &surfaceFramebuffer_);
+  if (maskFramebuffer_) glDeleteFramebuffers(1, &maskFramebuffer_);
+}
+
+void ShadowMask::beginSurfaces(int width, int height) {
+  if (width != width_ || height != height_) {
+    surface_ = texture2D(GL_RGBA32UI, width, height);
+    depthStencil_ = texture2D(GL_DEPTH32F_STENCIL8, width, height);
+    mask_ = texture2D(GL_RGBA16, width, height);
+    glNamedFramebufferTexture(surfaceFramebuffer_, GL_COLOR_ATTACHMENT0, surface_.id(), 0);
+    glNamedFramebufferTexture(surfaceFramebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
+    glNamedFramebufferTexture(maskFramebuffer_, GL_COLOR_ATTACHMENT0, mask_.id(), 0);
+    glNamedFramebufferTexture(maskFramebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
+    requireComplete(surfaceFramebuffer_);
+    requireComplete(maskFramebuffer_);
+    width_ = width;
+    height_ = height;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, surfaceFramebuffer_);
+  glViewport(0, 0, width, height);
+  glDisable(GL_SAMPLE_SHADING);
+  glClearNamedFramebufferfi(surfaceFramebuffer_, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glStencilMask(0xff);
+  surfaceProgram_.use();
+}
+
+const ShaderProgram& ShadowMask::maskProgram(int lightCount) {
+  auto found = maskPrograms_.find(lightCount);
+  if (found == maskPrograms_.end())
+    found = maskPrograms_
+                .emplace(lightCount, ShaderProgram("fullscreen.vert", "shadow_mask.frag",
+                                                   "#define LIGHT_COUNT " + std::to_string(lightCount)))
+                .first;
+  return found->second;
+}
+
+void ShadowMask::computeMask(const ShaderProgram& program, GLuint emptyVertexArray) {
+  glBindFramebuffer(GL_FRAMEBUFFER, maskFramebuffer_);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glBindTextureUnit(kTextureUnitShadowSurface, surface_.id());
+  program.use();
+  glBindVertexArray(emptyVertexArray);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_STENCIL_TEST);
+  glBindTextureUnit(kTextureUnitShadowSurface, 0);
+  glBindTextureUnit(kTextureUnitShadowMask, mask_.id());
+}
+
+}  // namespace iblkit

@@ -1,0 +1,62 @@
+#pragma once
+// The frame's shadow mask (docs/engine.md "Shadows"): the lights-shadowed mode's visibilities
+// computed once per pixel in screen space, the "screen-space shadow mask" of forward renderers.
+// A software rasteriser such as llvmpipe shades in blocks of 4x4 pixels; a dense mesh's triangles
+// cover a few pixels each and fill them poorly, so the shadow lookups, the costliest term of the
+// mode, cost several times their share on the objects. Two passes before the lit one:
+// - surfaces: the receivers (the opaque meshes the lit pass draws with the shadowed program),
+//   with a position-only vertex shader (shadow_surface.vert, mesh.vert's invariant gl_Position)
+//   and a tiny fragment shader (shadow_surface.frag) writing each visible pixel's world position
+//   and geometric normal, and stencil 1;
+// - mask: a full-screen triangle, stencil-tested, computing shadow.glsl's shadowVisibilities for
+//   every light there (shadow_mask.frag) into an RGBA16 texture, light i in component i;
+// then the lit pass reads its pixel's texel (mesh.frag with SHADOW_MASK 1). Its fragments are the
+// surface pass's (the same invariant gl_Position, depth test and culling), so the
+// value is the one the lit pass would have computed, to the mask's 16 bits.
+// Single-sample targets only: a multisampled frame shades a pixel's samples from different
+// surfaces at its edges, and keeps reading the maps in the lit pass.
+#include <epoxy/gl.h>
+
+#include <map>
+
+#include "engine/gl/gpu_textures.h"
+#include "engine/gl/shader_program.h"
+
+namespace iblkit {
+
+class ShadowMask {
+ public:
+  ShadowMask();  // needs a current OpenGL 4.5 context
+  ~ShadowMask();
+  ShadowMask(const ShadowMask&) = delete;
+  ShadowMask& operator=(const ShadowMask&) = delete;
+
+  // Starts the surface pass of a width x height frame: (re)allocates the targets when the size
+  // changed, binds the surface framebuffer with viewport, depth test (GL_LESS) and stencil (write
+  // 1 where a fragment passes) set, and clears depth and stencil (the surfaces are read only where
+  // the stencil is 1). The caller then draws the receivers with
+  // surfaceProgram() (its viewProjection set), culling as the lit pass does.
+  void beginSurfaces(int width, int height);
+  const ShaderProgram& surfaceProgram() const { return surfaceProgram_; }
+
+  // The mask pass's program for `lightCount` lights (compiled on first use); the caller sets its
+  // lights' and shadow maps' uniforms (light_directions.glsl, shadow.glsl).
+  const ShaderProgram& maskProgram(int lightCount);
+  // Runs the mask pass with `program` (from maskProgram, uniforms set) over the stencilled pixels,
+  // drawing a full-screen triangle with `emptyVertexArray` bound, then binds the mask to
+  // kTextureUnitShadowMask. Leaves the mask framebuffer bound, stencil and depth test off.
+  void computeMask(const ShaderProgram& program, GLuint emptyVertexArray);
+
+  GLuint maskTexture() const { return mask_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  int width_ = 0, height_ = 0;
+  GlTexture surface_, depthStencil_, mask_;
+  GLuint surfaceFramebuffer_ = 0, maskFramebuffer_ = 0;
+  ShaderProgram surfaceProgram_{"shadow_surface.vert", "shadow_surface.frag"};
+  std::map<int, ShaderProgram> maskPrograms_;
+};
+
+}  // namespace iblkit

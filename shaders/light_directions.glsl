@@ -1,0 +1,13 @@
+// The engine's disk lights as the shadows need them (renderer.cpp sets them): the world direction
+// towards each and the cos and sin of its angular radius. dominant_lights.glsl adds the rest.
+// LIGHT_COUNT: a constant of the program (renderer.cpp compiles one per count), so that the loops
+// over the lights unroll with constant indices.
+#ifndef LIGHT_DIRECTIONS_GLSL
+#define LIGHT_DIRECTIONS_GLSL
+#ifndef LIGHT_COUNT
+#define LIGHT_COUNT kMaxEngineLights
+#endif
+const int lightCount = LIGHT_COUNT;
+uniform vec3 lightDirection[kMaxEngineLights];
+uniform vec2 lightCosSin[kMaxEngineLights];
+#endif
