@@ -20,6 +20,11 @@ Material clampedToGltfRanges(const Material& material) {
   return clamped;
 }
 
+bool hasSpecularLayer(const Material& material) {
+  const GltfRangeFactors f = clampedFactors(material);
+  return f.specular > 0.0f || f.metallic > 0.0f;
+}
+
 AlphaMode drawnAlphaMode(const Material& material, bool baseColorTextureRead) {
   if (material.alphaMode == AlphaMode::Opaque || baseColorTextureRead) return material.alphaMode;
   // BLEND keeps a point with probability alpha (u < alpha, u in [0, 1)); MASK where alpha >= cutoff.

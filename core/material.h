@@ -64,6 +64,12 @@ GltfRangeFactors clampedFactors(const Material& material);
 // multiply the factor); its own mode otherwise. Exporters often mark opaque materials BLEND; the
 // engine draws them as opaque meshes, which keep the early depth test and the shadow mask.
 AlphaMode drawnAlphaMode(const Material& material, bool baseColorTextureRead);
+
+// Whether `material` has a specular layer: false when its specular and metallic factors are 0
+// (after clampedToGltfRanges), so that f0 = f90 = 0 whatever its textures (metallicRoughness
+// multiplies the factor) and the BRDF is Lambert's, diffuse weight 1. The engine compiles its
+// programs without the specular terms for such materials (the bundled scenes' ground and bunny).
+bool hasSpecularLayer(const Material& material);
 // The same clamp of factors given on their own (a textured hit's, SurfaceMaterial's).
 inline GltfRangeFactors clampedToGltfRanges(const GltfRangeFactors& f) {
   return {glm::clamp(f.baseColor, 0.0f, 1.0f), glm::clamp(f.metallic, 0.0f, 1.0f),

@@ -5,6 +5,13 @@ float maxComponent(vec3 v) { return max(v.r, max(v.g, v.b)); }
 
 // BrdfLobes of core/brdf.h: the material's lobes in the form the formulas use, its factors already
 // clamped to their glTF ranges (clampedToGltfRanges, on the CPU).
+// SPECULAR_LAYER 0: a program for materials without a specular layer (specular and metallic
+// factors 0, core/material.h hasSpecularLayer): f0 = f90 = 0, so the specular terms are compiled
+// out (mesh.frag, lights.glsl) and the diffuse weight is 1.
+#ifndef SPECULAR_LAYER
+#define SPECULAR_LAYER 1
+#endif
+
 struct BrdfLobes {
   vec3 baseColor;
   float metallic;

@@ -67,7 +67,7 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 posit
   vec3 axis = visibilityConeAxis(n, ao);
   if (residualCubeCorrection != 0) irradiance = max(irradiance + residualTruncation(axis, ao), vec3(0.0));
   vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, axis, irradiance);
-  BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, specularWeight, specularColor);
+  BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, SPECULAR_WEIGHT, specularColor);
   vec3 irradianceUp = vec3(0.0);
   // The lights' shadows: this pixel's texel of the frame's shadow mask (SHADOW_MASK 1, shadow.glsl),
   // or the maps read here.

@@ -111,6 +111,7 @@ vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, v
   if (dot(n, v) <= 0.0) return vec3(0.0);
   float irradiance = uniformDiskIrradiance(dot(n, l), cosSin);
   vec3 result = irradiance > 0.0 ? brdfDiffuse(lobes, v, l) * radiance * irradiance : vec3(0.0);
+#if SPECULAR_LAYER
   if (maxComponent(lobes.f90) > 0.0) {
     float spread = 0.5 * cosSin.y / max(cosSin.x, 1e-4);
     float widened = min(sqrt(lobes.alpha * lobes.alpha + spread * spread), 1.0);
@@ -119,5 +120,6 @@ vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, v
     result += towardsLobe >= 1.0 ? lobe
                                  : mix(mirroredDiskRadiance(lobes, n, v, l, radiance, edgeCos), lobe, towardsLobe);
   }
+#endif
   return result;
 }

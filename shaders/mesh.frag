@@ -45,6 +45,13 @@ uniform bool isGround;
 // The material's other factors (material.glsl has those its textures multiply), clamped to the
 // glTF ranges on the CPU (clampedToGltfRanges).
 uniform float specularWeight;
+// The lobes' specular factor: 0 in a program without a specular layer (brdf.glsl's SPECULAR_LAYER),
+// a constant the compiler folds.
+#if SPECULAR_LAYER
+#define SPECULAR_WEIGHT specularWeight
+#else
+#define SPECULAR_WEIGHT 0.0
+#endif
 uniform vec3 specularColor;
 // TextureSlot bits that are present and switched on (renderer.cpp), and whether the material is
 // double-sided (the back face then shades with the normal and tangent negated).
@@ -87,13 +94,19 @@ vec3 fullMaterialModelWith(samplerCube prefilteredCube, SurfaceMaterial m, vec3 
   float roughness = m.roughness;
   float NoV = clamp(dot(n, v), 1e-4, 1.0);
   vec3 r = reflect(-v, n);
-  BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, roughness, specularWeight, specularColor);
+  BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, roughness, SPECULAR_WEIGHT, specularColor);
+#if SPECULAR_LAYER
   vec3 dfg = textureLod(brdfLut, vec2(NoV, roughness), 0.0).rgb;
   vec3 specularAlbedo = splitSumKaris(lobes.f0, lobes.f90, dfg.xy) * energyCompensationFdezAguera(lobes.f0, dfg.z);
   float lod = roughness * (specularLevels - 1.0);
   vec3 prefiltered = textureLod(prefilteredCube, rotateAboutY(r, specularRotation), lod).rgb;
   float specularOcclusion = specularOcclusionCone(bent, ao, r, lobes.alpha);
   vec3 specular = prefiltered * specularAlbedo * multiBounceAoJimenez(specularOcclusion, lobes.f0);
+#else
+  // f0 = f90 = 0: no specular, and diffuseWeight is 1 whatever the table's weights.
+  vec3 dfg = vec3(0.0);
+  vec3 specular = vec3(0.0);
+#endif
   // The baked transfer already holds the visibility (one bounce of shadowing); the multi-bounce
   // fit adds the light interreflected inside the occluded region, as a ratio to plain AO.
   vec3 bounce = multiBounceAoJimenez(ao, albedo) / max(ao, 1e-3);
@@ -135,6 +148,9 @@ void main() {
   inputs.tangent = tangentLength2 > 0.0 ? vec4(side * vertexIn.tangent.xyz * inversesqrt(tangentLength2), vertexIn.tangent.w < 0.0 ? -1.0 : 1.0) : vec4(0.0);
   inputs.slots = textureSlots;
   SurfaceMaterial m = evaluateSurfaceMaterial(inputs);
+#if !SPECULAR_LAYER
+  m.metallic = 0.0;  // the factor is 0 (hasSpecularLayer), so the texture's product is too
+#endif
   vec3 n = shadingNormal(m.normal, geometric, v);
   // Alpha (docs/engine.md "Alpha"), in every layer: MASK exact, BLEND as coverage of the samples.
   // Compiled in for those modes only (ALPHA_MODE, renderer.cpp): a shader that may discard or

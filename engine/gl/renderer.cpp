@@ -37,6 +37,13 @@ bool usesIrradianceCube(ShadingMode mode) {
   return mode == ShadingMode::Irradiance || mode == ShadingMode::IrradianceAoBent;
 }
 
+// The modes that evaluate the material's BRDF lobes (mesh.frag's fullMaterialModel and
+// dominantLightsModel); the others read the albedo alone, or the mirror direction.
+bool usesMaterialBrdf(ShadingMode mode) {
+  return mode == ShadingMode::Full || mode == ShadingMode::FullGltfAo || mode == ShadingMode::FullBothAo ||
+         mode == ShadingMode::Lights || mode == ShadingMode::LightsShadowed;
+}
+
 }  // namespace
 
 float envRotationFromBake(const EnvironmentStages& env, std::optional<float> degrees) {
@@ -47,8 +54,8 @@ struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;
   // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn, shadows
-  // from the mask), compiled on first use.
-  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, bool>, ShaderProgram> meshPrograms;
+  // from the mask, specular layer), compiled on first use.
+  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, bool, bool>, ShaderProgram> meshPrograms;
   MaterialTextures materialTextures;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
@@ -79,13 +86,17 @@ struct Renderer::Impl {
   // constant so that the lights loop unrolls with constant indices (llvmpipe pays a loop over a
   // uniform count and its indexed uniforms per pixel); 0 in the other modes.
   // `fromMask`: lights-shadowed reads the frame's shadow mask (shadow_mask.h) in place of the maps.
+  // `specularLayer`: false compiles the specular terms out (hasSpecularLayer, brdf.glsl's
+  // SPECULAR_LAYER); the same frame, cheaper, for Lambert materials such as the ground. Only the
+  // modes with the material's BRDF have the two variants.
   const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode,
-                                   int lightCount, bool fromMask) {
+                                   int lightCount, bool fromMask, bool specularLayer) {
     // The feature layers do not depend on the mode: one program each.
     if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
     if (mode != ShadingMode::Lights && mode != ShadingMode::LightsShadowed) lightCount = 0;
     if (mode != ShadingMode::LightsShadowed) fromMask = false;
-    const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount, fromMask);
+    if (!usesMaterialBrdf(mode)) specularLayer = true;
+    const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount, fromMask, specularLayer);
     auto found = meshPrograms.find(key);
     if (found == meshPrograms.end()) {
       const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
@@ -93,7 +104,8 @@ struct Renderer::Impl {
                                   "\n#define TEXTURED " + std::to_string(slots) +
                                   "\n#define ALPHA_MODE " + std::to_string(int(alphaMode)) +
                                   "\n#define LIGHT_COUNT " + std::to_string(lightCount) +
-                                  "\n#define SHADOW_MASK " + std::to_string(int(fromMask));
+                                  "\n#define SHADOW_MASK " + std::to_string(int(fromMask)) +
+                                  "\n#define SPECULAR_LAYER " + std::to_string(int(specularLayer));
       found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
     }
     return found->second;
@@ -299,8 +311,9 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     // A BLEND or MASK material whose alpha cannot take a point away is drawn opaque (core/material.h).
     const AlphaMode alphaMode = drawnAlphaMode(material, (slots & kSlotBaseColor) != 0);
     const auto use = [&](ShadingMode programMode) -> const ShaderProgram& {
-      const ShaderProgram& program = r.meshProgram(programMode, settings.layer, slots, alphaMode,
-                                                   int(drawn.lights.size()), fromMask && alphaMode == AlphaMode::Opaque);
+      const ShaderProgram& program =
+          r.meshProgram(programMode, settings.layer, slots, alphaMode, int(drawn.lights.size()),
+                        fromMask && alphaMode == AlphaMode::Opaque, hasSpecularLayer(material));
       if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
         setFrameUniforms(program);
         prepared.push_back(&program);

@@ -1,6 +1,10 @@
 #include "core/material.h"
+#include "core/brdf.h"
 
 #include <gtest/gtest.h>
+
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtx/component_wise.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -80,6 +84,21 @@ TEST(DrawnAlphaMode, OpaqueOnlyWhereTheAlphaTestKeepsEveryPoint) {
       const AlphaMode drawn = drawnAlphaMode(m, false);
       EXPECT_EQ(drawn, everyPoint ? AlphaMode::Opaque : mode) << int(mode) << " alpha " << alpha;
       EXPECT_EQ(drawnAlphaMode(m, true), mode) << int(mode) << " alpha " << alpha;
+    }
+}
+
+// hasSpecularLayer: false exactly where brdfLobes gives f0 = f90 = 0 (specular and metallic
+// factors 0 after the glTF clamp), whatever the other factors.
+TEST(HasSpecularLayer, FalseExactlyWhereTheLobesHaveNoFresnel) {
+  for (float specular : {-1.0f, 0.0f, 1e-30f, 0.5f, 1.0f})
+    for (float metallic : {-0.5f, 0.0f, 1e-30f, 1.0f}) {
+      Material m;
+      m.baseColor = glm::vec3(0.8f, 0.4f, 0.2f);
+      m.specular = specular;
+      m.metallic = metallic;
+      const BrdfLobes lobes = brdfLobes(m);
+      const bool fresnel = glm::compMax(lobes.f0) > 0.0f || glm::compMax(lobes.f90) > 0.0f;
+      EXPECT_EQ(hasSpecularLayer(m), fresnel) << "specular " << specular << " metallic " << metallic;
     }
 }
 

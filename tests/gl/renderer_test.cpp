@@ -324,6 +324,65 @@ TEST(Renderer, LightsModeResidualDiffuseIsTheResidualCubes) {
   }
 }
 
+// A material without a specular layer (specular and metallic 0, hasSpecularLayer false) is drawn
+// by programs with the specular terms compiled out (SPECULAR_LAYER 0): the frame equals the one
+// the programs with them give, which a specular factor of 1e-30 selects (its specular is 1e-30 of
+// the light, its diffuse weight 1 in float), to 1e-5 at every pixel, in every mode with the BRDF
+// and under a map with a sun (the lights modes draw it as a disk light).
+TEST(Renderer, LambertProgramsGiveTheFrameOfTheSpecularPrograms) {
+  test::glContext();
+  const glm::vec3 sun = glm::normalize(glm::vec3(0.4f, 0.7f, 0.6f));
+  const EnvironmentMap map = EnvironmentMap::fromImage(
+      latLongFromRadiance(128, 64, 2,
+                          [&](const glm::vec3& d) {
+                            if (glm::dot(d, sun) > std::cos(glm::radians(4.0f))) return glm::vec3(750.0f, 725.0f, 650.0f);
+                            return d.y > 0.0f ? glm::vec3(0.6f, 0.8f, 1.0f) : glm::vec3(0.02f, 0.02f, 0.02f);
+                          }),
+      "sun over a hard horizon");
+  Material clay = lambertWhite();
+  clay.baseColor = glm::vec3(0.7f, 0.5f, 0.3f);
+  clay.roughness = 0.3f;
+  BakedScene bake = test::makeTestBake({.sphereMaterial = clay, .ground = true});
+  EnvironmentStageOptions options = kViewerEnvironmentStages;
+  options.specularSamples = 16;
+  options.lutSamples = 16;
+  options.lutSize = 8;
+  bake.env = computeEnvironmentStages(map, options);
+  ASSERT_EQ(bake.env.lights.suns.size(), 1u);
+  for (Material& m : bake.scene.materials) m.specular = 0.0f, m.metallic = 0.0f;
+  ASSERT_FALSE(hasSpecularLayer(bake.scene.materials[0]));
+  Renderer renderer(bake);
+  RenderTarget target(kWidth, kHeight, 1);
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  for (ShadingMode mode : {ShadingMode::Full, ShadingMode::FullGltfAo, ShadingMode::FullBothAo, ShadingMode::Lights,
+                           ShadingMode::LightsShadowed}) {
+    FrameSettings settings;
+    settings.mode = mode;
+    settings.drawSky = false;
+    auto frame = [&](float specular) {
+      for (std::size_t i = 0; i < bake.scene.materials.size(); ++i) {
+        Material m = bake.scene.materials[i];
+        m.specular = specular;
+        renderer.setMaterial(int(i), m);
+      }
+      renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+      return target.readColor();
+    };
+    const Image lambert = frame(0.0f), specular = frame(1e-30f);
+    checkGlErrors(std::string(shadingModeName(mode)));
+    double worst = 0.0, brightest = 0.0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        const glm::vec3 a(lambert.at(x, y)), b(specular.at(x, y));
+        brightest = std::max(brightest, double(glm::length(b)));
+        worst = std::max(worst, double(glm::length(a - b) / std::max(glm::length(b), 1e-4f)));
+      }
+    std::cout << shadingModeName(mode) << ": largest relative difference " << worst << '\n';
+    EXPECT_GT(brightest, 0.1) << shadingModeName(mode);
+    EXPECT_LT(worst, 1e-5) << shadingModeName(mode);
+  }
+}
+
 // Every mode gives finite radiance everywhere and light on every object pixel (the sphere touches
 // the ground, so the occluded modes are nearly black at the contact point, not black); occlusion only
 // darkens (sh-ao <= sh on average), and multisampling gives fractional coverage at the silhouette.
