@@ -274,27 +274,37 @@ TEST(Renderer, ShAndIrradianceModesDifferByTheSh9Truncation) {
             << " of it on average, at most " << maxDeviation << " of the brightest pixel\n";
 }
 
-// The lights modes' residual diffuse corrects SH9's truncation with the residual's own irradiance
-// cube (dominant_lights.glsl, residualTruncation): on a lone Lambert sphere under a sun over a sky
-// with a hard horizon (a step SH9 rings around), `lights` is the map's brute-force irradiance
-// within the cube's resolution. Without the residual cube (a bake from before it) the residual
-// is SH9's, several times further off.
-TEST(Renderer, LightsModeResidualDiffuseIsTheResidualCubes) {
+// A sun of radius 4 degrees over a sky with a hard horizon (a step SH9 rings around).
+EnvironmentMap sunOverHardHorizon() {
   const glm::vec3 sun = glm::normalize(glm::vec3(0.4f, 0.7f, 0.6f));
-  const EnvironmentMap map = EnvironmentMap::fromImage(
+  return EnvironmentMap::fromImage(
       latLongFromRadiance(128, 64, 2,
                           [&](const glm::vec3& d) {
                             if (glm::dot(d, sun) > std::cos(glm::radians(4.0f))) return glm::vec3(750.0f, 725.0f, 650.0f);
                             return d.y > 0.0f ? glm::vec3(0.6f, 0.8f, 1.0f) : glm::vec3(0.02f, 0.02f, 0.02f);
                           }),
       "sun over a hard horizon");
-  const Material white = lambertWhite();
-  BakedScene bake = test::makeTestBake({.sphereMaterial = white, .aoRays = 256});
+}
+
+// The viewer's environment stages of `map` with fewer samples (the tests' budget).
+EnvironmentStages quickStages(const EnvironmentMap& map) {
   EnvironmentStageOptions options = kViewerEnvironmentStages;
   options.specularSamples = 16;
   options.lutSamples = 16;
   options.lutSize = 8;
-  bake.env = computeEnvironmentStages(map, options);
+  return computeEnvironmentStages(map, options);
+}
+
+// The lights modes' residual diffuse corrects SH9's truncation with the residual's own irradiance
+// cube (dominant_lights.glsl, residualTruncation): on a lone Lambert sphere under a sun over a sky
+// with a hard horizon (a step SH9 rings around), `lights` is the map's brute-force irradiance
+// within the cube's resolution. Without the residual cube (a bake from before it) the residual
+// is SH9's, several times further off.
+TEST(Renderer, LightsModeResidualDiffuseIsTheResidualCubes) {
+  const EnvironmentMap map = sunOverHardHorizon();
+  const Material white = lambertWhite();
+  BakedScene bake = test::makeTestBake({.sphereMaterial = white, .aoRays = 256});
+  bake.env = quickStages(map);
   ASSERT_EQ(bake.env.lights.suns.size(), 1u);
   ASSERT_EQ(bake.env.residualIrradiance.size, 16);
   FrameSettings settings;
@@ -331,23 +341,12 @@ TEST(Renderer, LightsModeResidualDiffuseIsTheResidualCubes) {
 // and under a map with a sun (the lights modes draw it as a disk light).
 TEST(Renderer, LambertProgramsGiveTheFrameOfTheSpecularPrograms) {
   test::glContext();
-  const glm::vec3 sun = glm::normalize(glm::vec3(0.4f, 0.7f, 0.6f));
-  const EnvironmentMap map = EnvironmentMap::fromImage(
-      latLongFromRadiance(128, 64, 2,
-                          [&](const glm::vec3& d) {
-                            if (glm::dot(d, sun) > std::cos(glm::radians(4.0f))) return glm::vec3(750.0f, 725.0f, 650.0f);
-                            return d.y > 0.0f ? glm::vec3(0.6f, 0.8f, 1.0f) : glm::vec3(0.02f, 0.02f, 0.02f);
-                          }),
-      "sun over a hard horizon");
+  const EnvironmentMap map = sunOverHardHorizon();
   Material clay = lambertWhite();
   clay.baseColor = glm::vec3(0.7f, 0.5f, 0.3f);
   clay.roughness = 0.3f;
   BakedScene bake = test::makeTestBake({.sphereMaterial = clay, .ground = true});
-  EnvironmentStageOptions options = kViewerEnvironmentStages;
-  options.specularSamples = 16;
-  options.lutSamples = 16;
-  options.lutSize = 8;
-  bake.env = computeEnvironmentStages(map, options);
+  bake.env = quickStages(map);
   ASSERT_EQ(bake.env.lights.suns.size(), 1u);
   for (Material& m : bake.scene.materials) m.specular = 0.0f, m.metallic = 0.0f;
   ASSERT_FALSE(hasSpecularLayer(bake.scene.materials[0]));
