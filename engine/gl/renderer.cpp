@@ -37,6 +37,20 @@ bool usesIrradianceCube(ShadingMode mode) {
   return mode == ShadingMode::Irradiance || mode == ShadingMode::IrradianceAoBent;
 }
 
+// glTF 2.0 section 3.9.5 (doubleSided): false culls back faces; true shades both sides.
+void cullFor(const Material& material) {
+  if (material.doubleSided)
+    glDisable(GL_CULL_FACE);
+  else
+    glEnable(GL_CULL_FACE);
+}
+
+// The alpha mode `material` is drawn with, its texture slots `slots` bound (drawnAlphaMode: a MASK
+// or BLEND material whose alpha cannot take a point away is drawn opaque).
+AlphaMode drawnAlphaMode(const Material& material, unsigned slots) {
+  return drawnAlphaMode(material, (slots & kSlotBaseColor) != 0);
+}
+
 // The modes that evaluate the material's BRDF lobes (mesh.frag's fullMaterialModel and
 // dominantLightsModel); the others read the albedo alone, or the mirror direction.
 bool usesMaterialBrdf(ShadingMode mode) {
@@ -254,12 +268,9 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     for (std::size_t i = 0; i < r.meshes.size(); ++i) {
       const Mesh& mesh = r.scene.meshes[i];
       const Material& material = r.scene.materials.at(std::size_t(mesh.material));
-      const unsigned slots = r.materialTextures.boundSlots(material, settings.textureSlots);
-      if (drawnAlphaMode(material, (slots & kSlotBaseColor) != 0) != AlphaMode::Opaque) continue;
-      if (material.doubleSided)
-        glDisable(GL_CULL_FACE);
-      else
-        glEnable(GL_CULL_FACE);
+      if (drawnAlphaMode(material, r.materialTextures.boundSlots(material, settings.textureSlots)) != AlphaMode::Opaque)
+        continue;
+      cullFor(material);
       if (mesh.isGround && i < r.shadowCoverage.size())
         r.meshes[i].draw(r.shadowCoverage[i].covered);
       else
@@ -308,8 +319,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const Material& material = r.scene.materials.at(std::size_t(mesh.material));
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
-    // A BLEND or MASK material whose alpha cannot take a point away is drawn opaque (core/material.h).
-    const AlphaMode alphaMode = drawnAlphaMode(material, (slots & kSlotBaseColor) != 0);
+    const AlphaMode alphaMode = drawnAlphaMode(material, slots);
     const auto use = [&](ShadingMode programMode) -> const ShaderProgram& {
       const ShaderProgram& program =
           r.meshProgram(programMode, settings.layer, slots, alphaMode, int(drawn.lights.size()),
@@ -326,11 +336,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       setMaterialUniforms(program, material, slots);
       return program;
     };
-    // glTF 2.0 section 3.9.5 (doubleSided): false culls back faces; true shades both sides.
-    if (material.doubleSided)
-      glDisable(GL_CULL_FACE);
-    else
-      glEnable(GL_CULL_FACE);
+    cullFor(material);
     // The ground outside every map is lit by all lights (the maps' border): drawn by the lights
     // program, without the shadow lookups, which every pixel would otherwise pay (llvmpipe runs
     // both sides of a branch).
