@@ -70,17 +70,19 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 posit
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, SPECULAR_WEIGHT, specularColor);
   vec3 irradianceUp = vec3(0.0);
   // The lights' shadows: this pixel's texel of the frame's shadow mask (SHADOW_MASK 1, shadow.glsl),
-  // or the maps read here.
-  vec4 visibility = vec4(1.0);
+  // or the maps read here where the light's term is not 0.
 #if SHADOW_MASK
-  if (shadowed) visibility = texelFetch(shadowMask, ivec2(gl_FragCoord.xy), 0);
-#else
-  if (shadowed) visibility = shadowVisibilities(position, geometric);
+  vec4 visibility = shadowed ? texelFetch(shadowMask, ivec2(gl_FragCoord.xy), 0) : vec4(1.0);
 #endif
   for (int i = 0; i < lightCount; ++i) {
     vec3 l = lightDirection[i];
     vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightCosSin[i], lightMirrorEdgeCos[i]);
-    radiance += lit * visibility[i];
+#if SHADOW_MASK
+    lit *= visibility[i];
+#else
+    if (shadowed && maxComponent(lit) > 0.0) lit *= lightVisibility(i, position, geometric);
+#endif
+    radiance += lit;
     irradianceUp += lightIrradianceUp[i];
   }
   // The lights' bounce off what occludes the vertex (groundBounceIrradiance,

@@ -94,14 +94,17 @@ float shadowVisibility(int i, vec3 position, vec3 g, vec3 l, float tanSigma) {
 }
 
 
-// The visibility of each drawn light from `position` in component i (1 past lightCount), with
-// `geometric` the surface's geometric normal (either side: it is turned towards each light).
+// The visibility of drawn light i from `position`, with `geometric` the surface's geometric normal
+// (either side: it is turned towards the light).
+float lightVisibility(int i, vec3 position, vec3 geometric) {
+  vec3 l = lightDirection[i];
+  vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
+  return shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
+}
+
+// lightVisibility of each drawn light in component i (1 past lightCount): the mask's texel.
 vec4 shadowVisibilities(vec3 position, vec3 geometric) {
   vec4 visibility = vec4(1.0);
-  for (int i = 0; i < lightCount; ++i) {
-    vec3 l = lightDirection[i];
-    vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
-    visibility[i] = shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
-  }
+  for (int i = 0; i < lightCount; ++i) visibility[i] = lightVisibility(i, position, geometric);
   return visibility;
 }
