@@ -7,6 +7,12 @@
 #include "engine/gl/gpu_textures.h"
 
 namespace iblkit {
+
+void requireCompleteFramebuffer(GLuint framebuffer, std::string_view owner) {
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error(std::string(owner) + ": framebuffer incomplete (status " + std::to_string(status) + ")");
+}
 namespace {
 
 GLuint multisampledTexture(GLenum format, int width, int height, int samples) {
@@ -14,12 +20,6 @@ GLuint multisampledTexture(GLenum format, int width, int height, int samples) {
   glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &texture);
   glTextureStorage2DMultisample(texture, samples, format, width, height, GL_TRUE);
   return texture;
-}
-
-void requireComplete(GLuint framebuffer) {
-  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw Error("render target: framebuffer incomplete (status " + std::to_string(status) + ")");
 }
 
 }  // namespace
@@ -49,9 +49,9 @@ RenderTarget::RenderTarget(int width, int height, int msaaSamples)
     glCreateFramebuffers(1, &drawFramebuffer_);
     glNamedFramebufferTexture(drawFramebuffer_, GL_COLOR_ATTACHMENT0, msaaColor_, 0);
     glNamedFramebufferTexture(drawFramebuffer_, GL_DEPTH_ATTACHMENT, msaaDepth_, 0);
-    requireComplete(drawFramebuffer_);
+    requireCompleteFramebuffer(drawFramebuffer_, "render target");
   }
-  requireComplete(resolveFramebuffer_);
+  requireCompleteFramebuffer(resolveFramebuffer_, "render target");
 }
 
 RenderTarget::RenderTarget(RenderTarget&& other) noexcept { *this = std::move(other); }

@@ -3,9 +3,14 @@
 // multisampled (resolved into a single-sample RGBA32F texture for reading and display).
 #include <epoxy/gl.h>
 
+#include <string_view>
+
 #include "core/image.h"
 
 namespace iblkit {
+
+// Throws Error("<owner>: framebuffer incomplete (status N)") unless `framebuffer` is complete.
+void requireCompleteFramebuffer(GLuint framebuffer, std::string_view owner);
 
 class RenderTarget {
  public:

@@ -2,27 +2,14 @@
 
 #include <string>
 
-#include "core/error.h"
 #include "engine/gl/light_constants.h"
+#include "engine/gl/render_target.h"
 #include "engine/gl/texture_unit.h"
 
 namespace iblkit {
-namespace {
 
 // One visibility per component of the mask's RGBA texel (shadow.glsl's shadowVisibilities).
 static_assert(kMaxEngineLights <= 4, "the shadow mask holds at most 4 lights");
-
-GlTexture texture2D(GLenum format, int width, int height) {
-  return GlTexture(createTargetTexture(format, width, height));
-}
-
-void requireComplete(GLuint framebuffer) {
-  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw Error("shadow mask: framebuffer incomplete (status " + std::to_string(status) + ")");
-}
-
-}  // namespace
 
 ShadowMask::ShadowMask() {
   glCreateFramebuffers(1, &surfaceFramebuffer_);
@@ -36,15 +23,15 @@ ShadowMask::~ShadowMask() {
 
 void ShadowMask::beginSurfaces(int width, int height) {
   if (width != width_ || height != height_) {
-    surface_ = texture2D(GL_RGBA32UI, width, height);
-    depthStencil_ = texture2D(GL_DEPTH32F_STENCIL8, width, height);
-    mask_ = texture2D(GL_RGBA16, width, height);
+    surface_ = GlTexture(createTargetTexture(GL_RGBA32UI, width, height));
+    depthStencil_ = GlTexture(createTargetTexture(GL_DEPTH32F_STENCIL8, width, height));
+    mask_ = GlTexture(createTargetTexture(GL_RGBA16, width, height));
     glNamedFramebufferTexture(surfaceFramebuffer_, GL_COLOR_ATTACHMENT0, surface_.id(), 0);
     glNamedFramebufferTexture(surfaceFramebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
     glNamedFramebufferTexture(maskFramebuffer_, GL_COLOR_ATTACHMENT0, mask_.id(), 0);
     glNamedFramebufferTexture(maskFramebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
-    requireComplete(surfaceFramebuffer_);
-    requireComplete(maskFramebuffer_);
+    requireCompleteFramebuffer(surfaceFramebuffer_, "shadow mask");
+    requireCompleteFramebuffer(maskFramebuffer_, "shadow mask");
     width_ = width;
     height_ = height;
   }

@@ -47,10 +47,6 @@ class ShadowMask {
   // kTextureUnitShadowMask. Leaves the mask framebuffer bound, stencil and depth test off.
   void computeMask(const ShaderProgram& program, GLuint emptyVertexArray);
 
-  GLuint maskTexture() const { return mask_.id(); }
-  int width() const { return width_; }
-  int height() const { return height_; }
-
  private:
   int width_ = 0, height_ = 0;
   GlTexture surface_, depthStencil_, mask_;
