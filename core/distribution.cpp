@@ -66,6 +66,16 @@ PiecewiseConstant1D::PiecewiseConstant1D(std::span<const float> f) : f_(f.begin(
 
 int PiecewiseConstant1D::searchCell(float u) const {
   // The last cell whose CDF start is <= u: its CDF end is > u, so it has non-zero probability.
+  // A short table (the oriented environment's rows of cells) is counted, not searched: the CDF
+  // is non-decreasing with cdf_[0] = 0 <= u < 1 = cdf_[n], so the number of inner entries at or
+  // below u is the cell upper_bound finds, and the count has no branch to mispredict (the compiler
+  // vectorises it).
+  const int n = size();
+  if (n <= kCountedCells) {
+    int count = 0;
+    for (int i = 1; i < n; ++i) count += cdf_[static_cast<std::size_t>(i)] <= u;
+    return count;
+  }
   // Searched between the guide entries one cell below and two above u's (a margin for the
   // rounding of u * n): every CDF value before the first is <= u and the one after the last is
   // > u, so the result is that of a search over the whole CDF.
@@ -83,13 +93,19 @@ PiecewiseConstant1D::SearchRange PiecewiseConstant1D::searchRange(float u) const
 
 int PiecewiseConstant1D::prefetchSample(float u, int stage) const {
   u = std::clamp(u, 0.0f, kOneMinusEpsilon);
-  if (stage <= 0) {
+  if (size() <= kCountedCells) {
+    // Counted tables read their whole CDF: bring it in first, then nothing until the cell's value.
+    if (stage <= 0) {
+      for (std::size_t i = 0; i < cdf_.size(); i += 16) __builtin_prefetch(&cdf_[i]);
+      return -1;
+    }
+    if (stage == 1) return -1;
+  } else if (stage <= 0) {
     const int n = size(), g = cellOf(u, n);
     __builtin_prefetch(&guide_[static_cast<std::size_t>(std::max(g - 1, 0))]);
     __builtin_prefetch(&guide_[static_cast<std::size_t>(std::min(g + 2, n))]);
     return -1;
-  }
-  if (stage == 1) {
+  } else if (stage == 1) {
     const SearchRange range = searchRange(u);
     __builtin_prefetch(&cdf_[static_cast<std::size_t>(range.first)]);
     __builtin_prefetch(&cdf_[static_cast<std::size_t>(range.last - 1)]);

@@ -53,6 +53,9 @@ class PiecewiseConstant1D {
   struct SearchRange {
     int first = 0, last = 0;  // the CDF entries sample() searches, [first, last)
   };
+  // Tables of at most this many cells are searched by counting (searchCell), longer ones through
+  // the guide table.
+  static constexpr int kCountedCells = 64;
   SearchRange searchRange(float u) const;  // u in [0, 1)
   int searchCell(float u) const;           // the cell sample(u) picks, u in [0, 1)
 

@@ -58,12 +58,13 @@ static_assert(offsetof(RayQueryContext, context) == 0);
 // the AlphaFilter says are not there. Embree passes N candidates (1 for rtcIntersect1).
 void filterCandidates(const RTCFilterFunctionNArguments* args) {
   const auto* filter = static_cast<const AlphaFilter*>(args->geometryUserPtr);
-  const RayQuery& query = *reinterpret_cast<const RayQueryContext*>(args->context)->query;
+  const auto* context = reinterpret_cast<const RayQueryContext*>(args->context);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
     RTCRayN* ray = args->ray;
     RTCHitN* hit = args->hit;
     const unsigned n = args->N;
+    const RayQuery& query = context->perRay ? context->query[RTCRayN_id(ray, n, i)] : *context->query;
     const glm::vec3 origin(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
     const glm::vec3 direction(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
     const glm::vec3 ng(RTCHitN_Ng_x(hit, n, i), RTCHitN_Ng_y(hit, n, i), RTCHitN_Ng_z(hit, n, i));
@@ -73,6 +74,23 @@ void filterCandidates(const RTCFilterFunctionNArguments* args) {
                         direction, ng, query))
       args->valid[i] = 0;
   }
+}
+
+// A Hit from Embree's answer (geomId RTC_INVALID_GEOMETRY_ID: none).
+Hit hitFrom(unsigned geomId, unsigned primId, float t, float u, float v, const glm::vec3& ng) {
+  Hit hit;
+  if (geomId == RTC_INVALID_GEOMETRY_ID) return hit;
+  hit.hit = true;
+  hit.t = t;
+  hit.geomId = geomId;
+  hit.primId = primId;
+  hit.barycentrics = glm::vec2(u, v);
+  // Embree's Ng is unnormalised (its length is twice the triangle's area, scaled by Embree's
+  // internal precision). Dividing by the largest component first keeps the tiny Ng of a minute
+  // triangle from underflowing when squared in the normalisation.
+  const float largest = std::max({std::abs(ng.x), std::abs(ng.y), std::abs(ng.z)});
+  hit.geometricNormal = glm::normalize(ng / largest);
+  return hit;
 }
 
 struct GeometryRelease {
@@ -187,20 +205,44 @@ Hit RayScene::intersect(const Ray& ray, float tmin, float tmax, const RayQuery& 
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_.get(), &context.context, &query);
 
-  Hit hit;
-  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-  hit.hit = true;
-  hit.t = query.ray.tfar;
-  hit.geomId = query.hit.geomID;
-  hit.primId = query.hit.primID;
-  hit.barycentrics = glm::vec2(query.hit.u, query.hit.v);
-  // Embree's Ng is unnormalised (its length is twice the triangle's area, scaled by Embree's
-  // internal precision). Dividing by the largest component first keeps the tiny Ng of a minute
-  // triangle from underflowing when squared in the normalisation.
-  const glm::vec3 ng(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
-  const float largest = std::max({std::abs(ng.x), std::abs(ng.y), std::abs(ng.z)});
-  hit.geometricNormal = glm::normalize(ng / largest);
-  return hit;
+  return hitFrom(query.hit.geomID, query.hit.primID, query.ray.tfar, query.hit.u, query.hit.v,
+                 glm::vec3(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z));
+}
+
+void RayScene::intersectCoherent(std::span<const Ray> rays, float tmin, float tmax, const RayQuery& rayQuery,
+                                 std::span<Hit> hits) const {
+  requireCommitted("intersect");
+  if (hits.size() != rays.size()) throw std::invalid_argument("RayScene::intersectCoherent: rays and hits differ in number");
+  constexpr std::size_t kWidth = 8;
+  RayQueryContext context(rayQuery);
+  context.context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  for (std::size_t first = 0; first < rays.size(); first += kWidth) {
+    const std::size_t count = std::min(kWidth, rays.size() - first);
+    alignas(32) int valid[kWidth];
+    alignas(32) RTCRayHit8 query;
+    for (std::size_t k = 0; k < kWidth; ++k) {
+      valid[k] = k < count ? -1 : 0;
+      const Ray& ray = rays[first + std::min(k, count - 1)];
+      query.ray.org_x[k] = ray.origin.x;
+      query.ray.org_y[k] = ray.origin.y;
+      query.ray.org_z[k] = ray.origin.z;
+      query.ray.dir_x[k] = ray.direction.x;
+      query.ray.dir_y[k] = ray.direction.y;
+      query.ray.dir_z[k] = ray.direction.z;
+      query.ray.tnear[k] = tmin;
+      query.ray.tfar[k] = tmax;
+      query.ray.time[k] = 0.0f;
+      query.ray.mask[k] = ~0u;
+      query.ray.id[k] = 0;
+      query.ray.flags[k] = 0;
+      query.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+      query.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect8(valid, scene_.get(), &context.context, &query);
+    for (std::size_t k = 0; k < count; ++k)
+      hits[first + k] = hitFrom(query.hit.geomID[k], query.hit.primID[k], query.ray.tfar[k], query.hit.u[k],
+                                query.hit.v[k], glm::vec3(query.hit.Ng_x[k], query.hit.Ng_y[k], query.hit.Ng_z[k]));
+  }
 }
 
 bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float tmax,
@@ -220,6 +262,40 @@ bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tmin, float
   rtcOccluded1(scene_.get(), &context.context, &query);
   // Embree marks an occluded ray by setting tfar to -infinity.
   return query.tfar == -std::numeric_limits<float>::infinity();
+}
+
+void RayScene::occluded(std::span<const OcclusionQuery> rays, std::span<std::uint8_t> blocked) const {
+  requireCommitted("occluded");
+  if (blocked.size() != rays.size()) throw std::invalid_argument("RayScene::occluded: rays and results differ in number");
+  constexpr std::size_t kWidth = 8;
+  RayQuery queries[kWidth];
+  RayQueryContext context(queries[0]);
+  context.perRay = true;
+  for (std::size_t first = 0; first < rays.size(); first += kWidth) {
+    const std::size_t count = std::min(kWidth, rays.size() - first);
+    alignas(32) int valid[kWidth];
+    alignas(32) RTCRay8 query;
+    for (std::size_t k = 0; k < kWidth; ++k) {
+      valid[k] = k < count ? -1 : 0;
+      const OcclusionQuery& ray = rays[first + std::min(k, count - 1)];
+      queries[k] = ray.query;
+      query.org_x[k] = ray.origin.x;
+      query.org_y[k] = ray.origin.y;
+      query.org_z[k] = ray.origin.z;
+      query.dir_x[k] = ray.direction.x;
+      query.dir_y[k] = ray.direction.y;
+      query.dir_z[k] = ray.direction.z;
+      query.tnear[k] = ray.tmin;
+      query.tfar[k] = ray.tmax;
+      query.time[k] = 0.0f;
+      query.mask[k] = ~0u;
+      query.id[k] = static_cast<unsigned>(k);
+      query.flags[k] = 0;
+    }
+    rtcOccluded8(valid, scene_.get(), &context.context, &query);
+    for (std::size_t k = 0; k < count; ++k)
+      blocked[first + k] = query.tfar[k] == -std::numeric_limits<float>::infinity();
+  }
 }
 
 glm::vec3 RayScene::surfacePoint(const Hit& hit) const {

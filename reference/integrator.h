@@ -37,6 +37,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/brdf.h"
 #include "core/enum_names.h"
@@ -140,14 +141,15 @@ class Integrator {
   // single-sided materials.
   CameraSample trace(const Ray& cameraRay, PixelSampler& sampler, const RayCone& cone = {}) const;
 
-  // trace() for a batch of camera rays, each with its own sampler: out[i] is exactly
-  // trace(cameraRays[i], samplers[i], cone), bit for bit (each path draws the same numbers in the
-  // same order and does the same arithmetic), but the paths advance together, vertex by vertex:
-  // all closest-hit queries of a depth, then all escapes, then all vertices, whose environment
-  // samples and lookups are prefetched for the whole batch before any is read (software
-  // prefetches in stages, EnvironmentSampler::prefetchSample), so their cache misses overlap
-  // instead of each path waiting for its own. The three spans have the same size (any; the
-  // renderer passes kTraceBatch).
+  // trace() for a batch of camera rays, each with its own sampler: out[i] is
+  // trace(cameraRays[i], samplers[i], cone) (each path draws the same numbers in the same order
+  // and does the same arithmetic), but the paths advance together, vertex by vertex: all
+  // closest-hit queries of a depth (the camera rays in Embree's coherent packets, RayScene::
+  // intersectCoherent, the bounce rays one by one), then all escapes, then all vertices, whose
+  // environment samples and lookups are prefetched for the whole batch before any is read
+  // (software prefetches in stages, EnvironmentSampler::prefetchSample), then all light samples,
+  // whose shadow rays go to Embree in packets (the batch RayScene::occluded), then all bounces.
+  // The three spans have the same size (any; the renderer passes kTraceBatch).
   void traceBatch(std::span<const Ray> cameraRays, std::span<PixelSampler> samplers, const RayCone& cone,
                   std::span<CameraSample> out) const;
 
@@ -173,10 +175,14 @@ class Integrator {
                       const glm::vec3& wi) const;
   BrdfSample sampleReflection(const BrdfAtPoint* brdf, const glm::vec3& baseColor, const glm::vec3& n,
                               const glm::vec3& wo, glm::vec2 u, float uLobe) const;
-  // RayScene::intersect / occluded, logged when a recorder is set.
+  // RayScene::intersect, logged when a recorder is set.
   Hit intersect(const Ray& ray, const RayQuery& query) const;
-  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tmax, const RayQuery& query) const;
+  // RayScene::occluded for each of `rays` into blocked[k] (resized), logged when a recorder is set.
+  void occluded(std::span<const OcclusionQuery> rays, std::vector<std::uint8_t>& blocked) const;
   struct Path;
+  // The camera rays of a batch (all alive, one cone) into their paths' hits: RayScene::
+  // intersectCoherent, logged when a recorder is set.
+  void intersectCameraRays(std::span<Path> paths) const;
   // The paths of a batch of the radiance integrators (path, direct), advanced together.
   void traceRadiance(std::span<Path> paths, std::span<PixelSampler> samplers, std::span<CameraSample> out) const;
   void traceOcclusion(const Ray& ray, PixelSampler& sampler, const RayCone& cone, CameraSample& result) const;

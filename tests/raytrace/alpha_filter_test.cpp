@@ -71,6 +71,39 @@ TEST(AlphaFilter, MaskIsExactForOcclusionAndClosestHit) {
     }
 }
 
+// The batch form of occluded gives each shadow ray its own query: through a BLEND strip of alphas
+// 0 .. 252, a ray with a wide cone reads a coarse level of the alpha (about their mean), a ray with
+// none the finest, so the rays through the clear texels are blocked only with the wide cone;
+// interleaved in one batch, each ray gets what it gets alone.
+TEST(AlphaFilter, BatchedShadowRaysEachSeeTheirOwnCone) {
+  FilteredScene s;
+  Material blend;
+  blend.alphaMode = AlphaMode::Blend;
+  blend.doubleSided = true;
+  s.scene.materials = {blend};
+  s.scene.materials[0].baseColorTexture = test::addTexture(
+      s.scene, test::generatedImage(8, 1, [](int x, int) { return glm::u8vec4(255, 255, 255, 36 * x); }),
+      TextureSampler{});  // trilinear: the cone picks the level
+  s.scene.meshes = {test::texturedQuad(0.0f, 1.0f, 0.0f, 0)};
+  s.scene.meshes[0].tangents.clear();
+  s.build();
+  ASSERT_EQ(s.filter->needs(0), unsigned(AlphaFilter::kAlphaTest));
+  std::vector<OcclusionQuery> rays;
+  std::vector<std::uint8_t> alone;
+  for (int i = 0; i < 64; ++i)
+    for (const float width : {0.0f, 4.0f}) {
+      const RayQuery query{RayKind::Secondary, RayCone{width, 0.0f, {}}};
+      rays.push_back({glm::vec3((i + 0.5f) / 64.0f, 0.3f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 0.0f, kInfinity, query});
+      alone.push_back(s.rays.occluded(rays.back().origin, rays.back().direction, 0.0f, kInfinity, query));
+    }
+  int onlyWide = 0;
+  for (std::size_t k = 0; k < alone.size(); k += 2) onlyWide += !alone[k] && alone[k + 1];
+  ASSERT_GT(onlyWide, 2) << "the cone must matter for this test to see the queries";
+  std::vector<std::uint8_t> batched(rays.size(), 2);
+  s.rays.occluded(rays, batched);
+  EXPECT_EQ(batched, alone);
+}
+
 // An alpha exactly at the cutoff is there (glTF: "rendered fully opaque if alpha >= cutoff").
 TEST(AlphaFilter, AlphaAtTheCutoffIsThere) {
   FilteredScene s;

@@ -293,5 +293,60 @@ TEST(RayScene, ConcurrentQueriesMatchSerialOnes) {
   EXPECT_LT(hits, rays.size() * 4 / 5);
 }
 
+// The packet forms answer what the single queries answer, for batches of any size (partial
+// packets included): intersectCoherent's hits and the batch occluded's verdicts, ray by ray.
+TEST(RayScene, BatchQueriesMatchSingleOnes) {
+  const ProceduralMesh ball = uvSphere(glm::vec3(0.0f), 1.0f, 24, 48);
+  const ProceduralMesh ground = plane(glm::vec3(0.0f, -1.0f, 0.0f), 6.0f);
+  RayScene scene;
+  scene.addTriangleMesh(ball.positions, ball.indices);
+  scene.addTriangleMesh(ground.positions, ground.indices);
+  scene.commit();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+  for (const std::size_t size : {1u, 7u, 8u, 9u, 1001u}) {
+    std::vector<Ray> rays(size);
+    std::vector<OcclusionQuery> shadows(size);
+    for (std::size_t i = 0; i < size; ++i) {
+      // Camera-like rays from one point (coherent), and shadow rays of varied extent.
+      rays[i] = {{0.0f, 0.5f, 4.0f}, glm::normalize(glm::vec3(0.3f * uniform(rng), 0.3f * uniform(rng), -1.0f))};
+      shadows[i] = {{3.0f * uniform(rng), 3.0f * uniform(rng), 3.0f * uniform(rng)},
+                    {uniform(rng), uniform(rng), uniform(rng)}, 0.0f, 1.0f + uniform(rng), {}};
+    }
+    std::vector<Hit> hits(size);
+    scene.intersectCoherent(rays, 0.0f, kInfinity, {}, hits);
+    std::vector<std::uint8_t> blocked(size, 2);
+    scene.occluded(shadows, blocked);
+    std::size_t hitCount = 0, blockedCount = 0;
+    for (std::size_t i = 0; i < size; ++i) {
+      const Hit one = scene.intersect(rays[i], 0.0f, kInfinity);
+      ASSERT_EQ(hits[i].hit, one.hit) << size << " " << i;
+      hitCount += one.hit;
+      EXPECT_EQ(hits[i].geomId, one.geomId);
+      EXPECT_EQ(hits[i].primId, one.primId);
+      // Equal on this machine's kernels; Embree does not promise its packet and single-ray
+      // kernels round alike, so the test allows their rounding.
+      if (one.hit) {
+        EXPECT_NEAR(hits[i].t, one.t, 1e-5f * one.t);
+      }
+      EXPECT_NEAR(glm::distance(hits[i].barycentrics, one.barycentrics), 0.0f, 1e-5f);
+      EXPECT_NEAR(glm::distance(hits[i].geometricNormal, one.geometricNormal), 0.0f, 1e-5f);
+      const OcclusionQuery& s = shadows[i];
+      const bool single = scene.occluded(s.origin, s.direction, s.tmin, s.tmax);
+      EXPECT_EQ(blocked[i], single ? 1 : 0) << size << " " << i;
+      blockedCount += single;
+    }
+    if (size > 100) {
+      // Both answers occur, so the comparison covers both.
+      EXPECT_GT(hitCount, size / 5);
+      EXPECT_LT(hitCount, size * 4 / 5);
+      EXPECT_GT(blockedCount, size / 20);
+      EXPECT_LT(blockedCount, size * 19 / 20);
+    }
+  }
+  std::vector<Hit> wrong(2);
+  EXPECT_THROW(scene.intersectCoherent(std::vector<Ray>(3), 0.0f, kInfinity, {}, wrong), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace iblkit
