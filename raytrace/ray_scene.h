@@ -165,6 +165,9 @@ class RayScene {
 
   std::unique_ptr<RTCDeviceTy, DeviceRelease> device_;
   std::unique_ptr<RTCSceneTy, SceneRelease> scene_;
+  // Embree traces 16-wide packets natively on this machine (AVX-512): the packet queries use them,
+  // else 8-wide ones.
+  bool nativePacket16_ = false;
   std::vector<MeshBuffers> meshes_;
   std::shared_ptr<const AlphaFilter> filter_;
   Bounds bounds_;

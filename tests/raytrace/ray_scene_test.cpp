@@ -304,7 +304,7 @@ TEST(RayScene, BatchQueriesMatchSingleOnes) {
   scene.commit();
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-  for (const std::size_t size : {1u, 7u, 8u, 9u, 1001u}) {
+  for (const std::size_t size : {1u, 7u, 8u, 9u, 15u, 16u, 17u, 1001u}) {
     std::vector<Ray> rays(size);
     std::vector<OcclusionQuery> shadows(size);
     for (std::size_t i = 0; i < size; ++i) {
