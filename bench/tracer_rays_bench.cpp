@@ -264,18 +264,19 @@ void BM_Render(benchmark::State& state) {
   state.counters["rays"] = static_cast<double>(t.rays.size());
 }
 
-void BM_Replay(benchmark::State& state) {
-  const Tracer& t = tracer(static_cast<SceneVariant>(state.range(1)));
-  const RTCScene scene = t.scene->rays().embreeScene();
+// Replays `units` units of work (rays, or runs of rays) on state.range(0) threads, `grain` units per
+// task; hitsIn(i) traces unit i and returns its hits. Reports the recorded rays per second and the
+// fraction of them that hit.
+template <class HitsIn>
+void replayInArena(benchmark::State& state, const Tracer& t, std::size_t units, std::size_t grain, const HitsIn& hitsIn) {
   tbb::task_arena arena(static_cast<int>(state.range(0)));
   std::size_t hits = 0;
   for (auto _ : state) {
     hits = arena.execute([&] {
       return tbb::parallel_reduce(
-          tbb::blocked_range<std::size_t>(0, t.rays.size(), 1024), std::size_t(0),
+          tbb::blocked_range<std::size_t>(0, units, grain), std::size_t(0),
           [&](const tbb::blocked_range<std::size_t>& range, std::size_t count) {
-            for (std::size_t i = range.begin(); i != range.end(); ++i)
-              count += replay(scene, t.rays[i]) ? 1 : 0;
+            for (std::size_t i = range.begin(); i != range.end(); ++i) count += hitsIn(i);
             return count;
           },
           std::plus<>());
@@ -285,6 +286,13 @@ void BM_Replay(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * t.rays.size()));
   state.counters["rays"] = static_cast<double>(t.rays.size());
   state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(t.rays.size());
+}
+
+void BM_Replay(benchmark::State& state) {
+  const Tracer& t = tracer(static_cast<SceneVariant>(state.range(1)));
+  const RTCScene scene = t.scene->rays().embreeScene();
+  replayInArena(state, t, t.rays.size(), 1024,
+                [&](std::size_t i) -> std::size_t { return replay(scene, t.rays[i]) ? 1 : 0; });
 }
 
 // The recorded rays as the render traces them: each run of camera rays (one batch's, one query)
@@ -342,23 +350,8 @@ std::size_t replayRun(const RayScene& scene, const std::vector<RecordedRay>& ray
 void BM_ReplayBatched(benchmark::State& state) {
   const Tracer& t = tracer(static_cast<SceneVariant>(state.range(1)));
   const std::vector<ReplayRun> runs = replayRuns(t.rays);
-  tbb::task_arena arena(static_cast<int>(state.range(0)));
-  std::size_t hits = 0;
-  for (auto _ : state) {
-    hits = arena.execute([&] {
-      return tbb::parallel_reduce(
-          tbb::blocked_range<std::size_t>(0, runs.size(), 256), std::size_t(0),
-          [&](const tbb::blocked_range<std::size_t>& range, std::size_t count) {
-            for (std::size_t i = range.begin(); i != range.end(); ++i) count += replayRun(t.scene->rays(), t.rays, runs[i]);
-            return count;
-          },
-          std::plus<>());
-    });
-    benchmark::DoNotOptimize(hits);
-  }
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * t.rays.size()));
-  state.counters["rays"] = static_cast<double>(t.rays.size());
-  state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(t.rays.size());
+  replayInArena(state, t, runs.size(), 256,
+                [&](std::size_t i) -> std::size_t { return replayRun(t.scene->rays(), t.rays, runs[i]); });
 }
 
 void BM_RenderTextured(benchmark::State& state) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 #include "core/error.h"
 #include "raytrace/ray_offset.h"
@@ -233,27 +234,21 @@ namespace {
 
 // Embree's packet types and calls by width.
 template <int W>
-struct Packet;
-template <>
-struct Packet<8> {
-  using RayHit = RTCRayHit8;
-  using Ray = RTCRay8;
+struct Packet {
+  static_assert(W == 8 || W == 16, "Embree packets used here are 8 or 16 wide");
+  using RayHit = std::conditional_t<W == 8, RTCRayHit8, RTCRayHit16>;
+  using Ray = std::conditional_t<W == 8, RTCRay8, RTCRay16>;
   static void intersect(const int* valid, RTCScene scene, RTCIntersectContext* context, RayHit* query) {
-    rtcIntersect8(valid, scene, context, query);
+    if constexpr (W == 8)
+      rtcIntersect8(valid, scene, context, query);
+    else
+      rtcIntersect16(valid, scene, context, query);
   }
   static void occluded(const int* valid, RTCScene scene, RTCIntersectContext* context, Ray* query) {
-    rtcOccluded8(valid, scene, context, query);
-  }
-};
-template <>
-struct Packet<16> {
-  using RayHit = RTCRayHit16;
-  using Ray = RTCRay16;
-  static void intersect(const int* valid, RTCScene scene, RTCIntersectContext* context, RayHit* query) {
-    rtcIntersect16(valid, scene, context, query);
-  }
-  static void occluded(const int* valid, RTCScene scene, RTCIntersectContext* context, Ray* query) {
-    rtcOccluded16(valid, scene, context, query);
+    if constexpr (W == 8)
+      rtcOccluded8(valid, scene, context, query);
+    else
+      rtcOccluded16(valid, scene, context, query);
   }
 };
 

@@ -246,13 +246,18 @@ TEST(RayScene, MovedSceneKeepsWorking) {
   EXPECT_EQ(assigned.meshCount(), 1u);
 }
 
-TEST(RayScene, ConcurrentQueriesMatchSerialOnes) {
+// A unit ball on a 12 x 12 ground under it, committed: the scene of the concurrency and batch tests.
+void addBallOnGround(RayScene& scene) {
   const ProceduralMesh ball = uvSphere(glm::vec3(0.0f), 1.0f, 24, 48);
   const ProceduralMesh ground = plane(glm::vec3(0.0f, -1.0f, 0.0f), 6.0f);
-  RayScene scene;
   scene.addTriangleMesh(ball.positions, ball.indices);
   scene.addTriangleMesh(ground.positions, ground.indices);
   scene.commit();
+}
+
+TEST(RayScene, ConcurrentQueriesMatchSerialOnes) {
+  RayScene scene;
+  addBallOnGround(scene);
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
   std::vector<Ray> rays(20000);
@@ -296,12 +301,8 @@ TEST(RayScene, ConcurrentQueriesMatchSerialOnes) {
 // The packet forms answer what the single queries answer, for batches of any size (partial
 // packets included): intersectCoherent's hits and the batch occluded's verdicts, ray by ray.
 TEST(RayScene, BatchQueriesMatchSingleOnes) {
-  const ProceduralMesh ball = uvSphere(glm::vec3(0.0f), 1.0f, 24, 48);
-  const ProceduralMesh ground = plane(glm::vec3(0.0f, -1.0f, 0.0f), 6.0f);
   RayScene scene;
-  scene.addTriangleMesh(ball.positions, ball.indices);
-  scene.addTriangleMesh(ground.positions, ground.indices);
-  scene.commit();
+  addBallOnGround(scene);
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
   for (const std::size_t size : {1u, 7u, 8u, 9u, 15u, 16u, 17u, 1001u}) {
