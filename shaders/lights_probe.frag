@@ -3,7 +3,8 @@
 // core/disk_irradiance.cpp and core/brdf.cpp): texel x of `materialA` holds (baseColor, metallic),
 // of `materialB` (specularColor, specular), of `directionO` (wo, roughness), of `directionI` (wi or
 // the light's direction, angular radius); the normal is +Z. `quantity` selects the output:
-// 0 (uniformDiskIrradiance(wi.z, radius)), 1 evalBrdf(n, wo, wi), 2 diskLightRadiance of radiance 1.
+// 0 (uniformDiskIrradiance(wi.z, radius)), 1 evalBrdf(n, wo, wi), 2 diskLightRadiance of radiance 1,
+// 3 sunDiskIrradiance(wi.z, sin(radius)).
 
 #include "shared_constants.glsl"
 #include "environment.glsl"
@@ -29,6 +30,7 @@ void main() {
   BrdfLobes lobes = brdfLobes(a.rgb, a.w, o.w, b.w, b.rgb);
   vec3 n = vec3(0.0, 0.0, 1.0);
   if (quantity == 0) fragColor = vec4(uniformDiskIrradiance(i.z, i.w));
+  else if (quantity == 3) fragColor = vec4(sunDiskIrradiance(i.z, sin(i.w)));
   else if (quantity == 1) fragColor = vec4(evalBrdf(lobes, n, o.xyz, i.xyz), 1.0);
   else fragColor = vec4(diskLightRadiance(lobes, n, o.xyz, i.xyz, vec3(1.0), vec2(cos(i.w), sin(i.w)),
                                              vec2(cos(1.1 * i.w), cos(0.9 * i.w))), 1.0);
