@@ -56,21 +56,33 @@ Material material(glm::vec3 baseColor, float metallic, float roughness) {
   return m;
 }
 
-// Across the horizon and above it, small and large disks: the GLSL formula is the C++ one.
-TEST(LightsGlsl, DiskIrradianceMatchesTheCore) {
-  std::vector<Case> cases;
-  for (float radiusDegrees : {0.27f, 3.0f, 10.0f, 30.0f, 60.0f})
-    for (int k = 0; k <= 80; ++k) {
-      const float cosTheta = -1.0f + 2.0f * float(k) / 80.0f;
-      cases.push_back({Material{}, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, cosTheta), glm::radians(radiusDegrees)});
-    }
-  const std::vector<glm::vec4> gpu = probe(cases, 0);
+// A disk of angular radius radiusDegrees at cos theta from the normal (+Z), for quantities 0 and 3.
+Case diskCase(float cosTheta, float radiusDegrees) {
+  return {Material{}, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, cosTheta), glm::radians(radiusDegrees)};
+}
+
+// The GLSL disk irradiance `quantity` (0 or 3) against the core's exact uniformDiskIrradiance: the
+// largest difference over `cases`, relative to the head-on irradiance pi sin^2 r.
+float worstAgainstCoreDiskIrradiance(const std::vector<Case>& cases, int quantity) {
+  const std::vector<glm::vec4> gpu = probe(cases, quantity);
   float worst = 0.0f;
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const float expected = uniformDiskIrradiance(cases[k].wi.z, cases[k].radius);
     const float headOn = kPi * std::pow(std::sin(cases[k].radius), 2.0f);
     worst = std::max(worst, std::abs(gpu[k].x - expected) / headOn);
   }
+  return worst;
+}
+
+// Across the horizon and above it, small and large disks: the GLSL formula is the C++ one.
+TEST(LightsGlsl, DiskIrradianceMatchesTheCore) {
+  std::vector<Case> cases;
+  for (float radiusDegrees : {0.27f, 3.0f, 10.0f, 30.0f, 60.0f})
+    for (int k = 0; k <= 80; ++k) {
+      const float cosTheta = -1.0f + 2.0f * float(k) / 80.0f;
+      cases.push_back(diskCase(cosTheta, radiusDegrees));
+    }
+  const float worst = worstAgainstCoreDiskIrradiance(cases, 0);
   std::cout << "disk irradiance: worst |GLSL - C++| / (pi sin^2 r) = " << worst << '\n';
   // The largest differences are at the horizon of the smallest disks, where the formula cancels
   // (llvmpipe's acos and atan are not the C library's).
@@ -88,20 +100,14 @@ TEST(LightsGlsl, SunDiskIrradianceMatchesTheCore) {
     const float s = std::sin(glm::radians(radiusDegrees));
     for (int k = 0; k <= 200; ++k) {
       const float inBand = -1.5f * s + 3.0f * s * float(k) / 200.0f;
-      cases.push_back({Material{}, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, inBand), glm::radians(radiusDegrees)});
+      cases.push_back(diskCase(inBand, radiusDegrees));
     }
     for (int k = 0; k <= 40; ++k) {
       const float cosTheta = -1.0f + 2.0f * float(k) / 40.0f;
-      cases.push_back({Material{}, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, cosTheta), glm::radians(radiusDegrees)});
+      cases.push_back(diskCase(cosTheta, radiusDegrees));
     }
   }
-  const std::vector<glm::vec4> gpu = probe(cases, 3);
-  float worst = 0.0f;
-  for (std::size_t k = 0; k < cases.size(); ++k) {
-    const float expected = uniformDiskIrradiance(cases[k].wi.z, cases[k].radius);
-    const float headOn = kPi * std::pow(std::sin(cases[k].radius), 2.0f);
-    worst = std::max(worst, std::abs(gpu[k].x - expected) / headOn);
-  }
+  const float worst = worstAgainstCoreDiskIrradiance(cases, 3);
   std::cout << "sun disk irradiance: worst |GLSL - C++| / (pi sin^2 r) = " << worst << '\n';
   EXPECT_LT(worst, 6e-4f);
 }
