@@ -113,6 +113,11 @@ class EntryReader {
     light.angularRadius = finite(member(entry, "angularRadius", what), what + ".angularRadius");
     if (!(light.angularRadius >= 0.0f && light.angularRadius <= pi * (1.0f + 1e-6f)))
       bad(what + ".angularRadius", "expected an angle in [0, pi]");
+    // The engine's suns are disks of at most kMaxSunAngularRadius (sun extraction keeps no wider
+    // one): its horizon-band irradiance (shaders/lights.glsl sunDiskIrradiance) and its shadow
+    // maps' blocker search hold up to there. A hand edit past it is refused, not drawn wrong.
+    if (kind == EnvironmentLightKind::Sun && light.angularRadius > kMaxSunAngularRadius * (1.0f + 1e-6f))
+      bad(what + ".angularRadius", "wider than a sun (at most 10 degrees, 0.1745 radians)");
     const json& texels = member(entry, "texels", what);
     if (!texels.is_array() || texels.size() != 4) bad(what + ".texels", "expected [x0, y0, x1, y1]");
     light.x0 = integer(texels[0], what + ".texels");

@@ -14,19 +14,16 @@ uniform vec2 lightMirrorEdgeCos[kMaxEngineLights];
 // core's, computed once a frame): what groundBounceIrradiance's ground receives.
 uniform vec3 lightIrradianceUp[kMaxEngineLights];
 uniform vec3 residualShRadiance[9];
-// What SH9 truncates of the residual's irradiance: its brute-force irradiance cube minus its own
-// SH9 irradiance (without the suns not drawn, which residualShRadiance adds back), texel by texel
-// (engine/gl/residual_truncation.h), world space like the specular chain; residualCubeCorrection 0
-// without it.
+// 1 where mesh.vert reads SH9's truncation of the residual (residualTruncationAt), 0 without the
+// residual's cube.
 uniform int residualCubeCorrection;
-layout(binding = kTextureUnitResidualIrradiance) uniform samplerCube residualTruncationCube;
 layout(binding = kTextureUnitResidualSpecular) uniform samplerCube residualSpecularCube;
 
 // residual  = fullMaterialModelWith(residual chain, AO, cone axis, E_PRT,residual)
 // + sum_i diskLightRadiance(light i) V_i   (V_i = 1, or the shadow map's visibility with `shadowed`)
 // The residual's diffuse is `full`'s: the baked transfer dotted with the residual's SH9 (PRT, the
 // visibility in the transfer), plus SH9's truncation of the residual from its cube
-// (residualTruncation, below). (The residual's SH9 along the bent normal times AO, the sh-ao-bent formula, measured
+// (mesh.vert residualTruncationAt). (The residual's SH9 along the bent normal times AO, the sh-ao-bent formula, measured
 // worse than `full` on the soft maps: bunny under forest, mean FLIP 0.043 against 0.034.)
 // A light's first bounce off what occludes the vertex (docs/dominant-lights.md, "Bounce light").
 // The reference's sunlit ground lights the object from below, and the object lights the ground
@@ -53,19 +50,13 @@ vec3 groundBounceIrradiance(vec3 albedo, vec3 irradianceUp) {
   return occluded * albedo / kPi * irradianceUp;
 }
 
-// What SH9 truncates of the residual's irradiance: the residual's cube minus its SH9 irradiance,
-// along the visibility cone's axis and scaled by AO (the sh-ao-bent approximation, for this
-// high-frequency part only; `axis` = visibilityConeAxis(n, ao)). A studio map's residual keeps the softboxes past the K drawn lights,
-// which SH9 rings around: on a lone diffuse sphere this makes the residual's diffuse the cube's
-// exactly (axis n, AO 1), the `irradiance` mode's accuracy (docs/dominant-lights.md).
-vec3 residualTruncation(vec3 axis, float ao) {
-  return ao * textureLod(residualTruncationCube, rotateAboutY(axis, specularRotation), 0.0).rgb;
-}
-
-vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 position, vec3 geometric, bool shadowed) {
+// `truncation`: SH9's truncation of the residual's irradiance at this point, AO times the residual
+// cube along the visibility cone's axis, which mesh.vert evaluates per vertex (residualTruncationAt).
+vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 truncation, vec3 position, vec3 geometric,
+                         bool shadowed) {
   vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, residualShRadiance);
   vec3 axis = visibilityConeAxis(n, ao);
-  if (residualCubeCorrection != 0) irradiance = max(irradiance + residualTruncation(axis, ao), vec3(0.0));
+  if (residualCubeCorrection != 0) irradiance = max(irradiance + truncation, vec3(0.0));
   vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, axis, irradiance);
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, SPECULAR_WEIGHT, specularColor);
   vec3 irradianceUp = vec3(0.0);

@@ -9,6 +9,7 @@
 #include "material.glsl"
 #include "lights.glsl"
 #include "shadow.glsl"
+#include "visibility_cone.glsl"
 
 in VertexData {
   vec3 position;
@@ -21,6 +22,9 @@ in VertexData {
   vec2 texcoord0;
   vec2 texcoord1;
   vec4 tangent;
+  // The lights modes' residual truncation (mesh.vert) of the front and of the back face.
+  vec3 residualTruncationFront;
+  vec3 residualTruncationBack;
 }
 vertexIn;
 
@@ -120,15 +124,8 @@ vec3 fullMaterialModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 bent, v
   return fullMaterialModelWith(specularCube, m, n, v, ao, bent, irradiance);
 }
 
-// The axis of the visibility cone: the baked bent normal, turned towards n as the AO nears 1. An
-// unoccluded vertex sees its whole hemisphere, a 90-degree cone about n; its bent normal is n only
-// on average, and with few bake rays a tilted one would cut off part of that hemisphere. A fully
-// occluded vertex (no bent normal, zero length) keeps n.
-vec3 visibilityConeAxis(vec3 n, float ao) {
-  float length2 = dot(vertexIn.bentNormal, vertexIn.bentNormal);
-  vec3 bent = length2 > 1e-8 ? vertexIn.bentNormal * inversesqrt(length2) : n;
-  return normalize(mix(bent, n, ao));
-}
+// visibility_cone.glsl's axis from the pixel's interpolated bent normal.
+vec3 visibilityConeAxis(vec3 n, float ao) { return visibilityConeAxis(vertexIn.bentNormal, n, ao); }
 
 #include "dominant_lights.glsl"
 
@@ -194,7 +191,9 @@ void main() {
     vec3 bent = normalize(vertexIn.bentNormal);
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, bent) * ao;
   } else if (mode == kShadingModeLights || mode == kShadingModeLightsShadowed) {
-    radiance = dominantLightsModel(m, n, v, ao, vertexIn.position, geometric, mode == kShadingModeLightsShadowed);
+    vec3 truncation = side < 0.0 ? vertexIn.residualTruncationBack : vertexIn.residualTruncationFront;
+    radiance = dominantLightsModel(m, n, v, ao, truncation, vertexIn.position, geometric,
+                                   mode == kShadingModeLightsShadowed);
   } else if (mode == kShadingModeFullGltfAo) {
     // The asset's AO in place of the baked visibility: unshadowed SH9 irradiance times it, the
     // specular cone about n (glTF's occlusion has no direction).

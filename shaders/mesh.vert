@@ -3,6 +3,8 @@
 // GpuMesh's (engine/gl/gpu_mesh_attribute.h, through the generated shared_constants.glsl).
 
 #include "shared_constants.glsl"
+#include "environment.glsl"
+#include "visibility_cone.glsl"
 
 layout(location = kAttributePosition) in vec3 inPosition;
 layout(location = kAttributeNormal) in vec3 inNormal;
@@ -17,6 +19,39 @@ layout(location = kAttributeTexcoord1) in vec2 inTexcoord1;
 layout(location = kAttributeTangent) in vec4 inTangent;
 
 uniform mat4 viewProjection;
+
+#ifndef SHADING_MODE
+#define SHADING_MODE kShadingModeFull
+#endif
+#ifndef FRAME_LAYER
+#define FRAME_LAYER kFrameLayerRadiance
+#endif
+// The lights modes' residual diffuse (dominant_lights.glsl): what SH9 truncates of the residual's
+// irradiance, its brute-force irradiance cube minus its own SH9 irradiance (without the suns not
+// drawn, which residualShRadiance adds back), texel by texel (engine/gl/residual_truncation.h),
+// world space like the specular chain and turned by specularRotation with it; residualCubeCorrection
+// 0 without it.
+const bool residualTruncationRead = (SHADING_MODE == kShadingModeLights || SHADING_MODE == kShadingModeLightsShadowed) &&
+                                    FRAME_LAYER == kFrameLayerRadiance;
+uniform int residualCubeCorrection;
+uniform vec2 specularRotation;
+layout(binding = kTextureUnitResidualIrradiance) uniform samplerCube residualTruncationCube;
+
+// SH9's truncation at a vertex of normal n: AO times the residual cube along the visibility cone's
+// axis (the sh-ao-bent approximation, for this high-frequency part only). Per vertex, like the
+// baked transfer whose SH9 irradiance it corrects (the truncation is a smooth function of the
+// direction and of the vertex's AO and bent normal, which are per vertex themselves): a pixel of a
+// dense mesh would pay the axis and the cube lookup several times over, for llvmpipe shades blocks
+// of pixels that a mesh's small triangles fill poorly (docs/engine.md "Lights"). A studio map's
+// residual keeps the softboxes past the K drawn lights, which SH9 rings around: on a lone diffuse
+// sphere this makes the residual's diffuse the cube's (axis n, AO 1), the `irradiance` mode's
+// accuracy to the mesh's interpolation (docs/dominant-lights.md).
+vec3 residualTruncationAt(vec3 n) {
+  if (!residualTruncationRead || residualCubeCorrection == 0) return vec3(0.0);
+  float ao = clamp(inAo, 0.0, 1.0);
+  vec3 axis = visibilityConeAxis(inBentNormal, n, ao);
+  return ao * textureLod(residualTruncationCube, rotateAboutY(axis, specularRotation), 0.0).rgb;
+}
 
 // The shadow mask's surface pass (shadow_surface.vert) computes the same gl_Position: its
 // fragments must be the lit pass's exactly.
@@ -33,6 +68,10 @@ out VertexData {
   vec2 texcoord0;
   vec2 texcoord1;
   vec4 tangent;
+  // residualTruncationAt of the front face (the normal) and of a double-sided material's back face
+  // (the normal negated, mesh.frag's `side`).
+  vec3 residualTruncationFront;
+  vec3 residualTruncationBack;
 }
 vertexOut;
 
@@ -47,5 +86,8 @@ void main() {
   vertexOut.texcoord0 = inTexcoord0;
   vertexOut.texcoord1 = inTexcoord1;
   vertexOut.tangent = inTangent;
+  vec3 normal = normalize(inNormal);
+  vertexOut.residualTruncationFront = residualTruncationAt(normal);
+  vertexOut.residualTruncationBack = residualTruncationAt(-normal);
   gl_Position = viewProjection * vec4(inPosition, 1.0);
 }

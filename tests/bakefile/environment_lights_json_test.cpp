@@ -122,6 +122,8 @@ TEST(EnvironmentLightsJson, BadFilesAreOneLineErrorsNamingTheFileAndTheEntry) {
        "suns[0].solidAngle: expected a solid angle in (0, 4 pi]"},
       {"\"angularRadius\": ", "\"angularRadius\": -1, \"x\": ",
        "suns[0].angularRadius: expected an angle in [0, pi]"},
+      {"\"angularRadius\": ", "\"angularRadius\": 0.2, \"x\": ",
+       "suns[0].angularRadius: wider than a sun (at most 10 degrees, 0.1745 radians)"},
       {"\"texels\": [299, 55, 515, 64]", "\"texels\": [299, 55, 299, 64]", "suns[0].texels: empty rectangle"},
       {"\"texels\": [299, 55, 515, 64]", "\"texels\": [299, 55, 515]",
        "suns[0].texels: expected [x0, y0, x1, y1]"},

@@ -21,7 +21,7 @@ TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
   EXPECT_NE(source.find("#line 1 4\n"), std::string::npos);
   for (const EmbeddedShader& shader : embeddedShaders())
     if (shader.name == "mesh.frag") {
-      ASSERT_EQ(shader.files.size(), 10u);
+      ASSERT_EQ(shader.files.size(), 11u);
       EXPECT_EQ(shader.files[0], "shaders/mesh.frag");
       EXPECT_EQ(shader.files[1], "generated/shared_constants.glsl");
       EXPECT_EQ(shader.files[2], "shaders/environment.glsl");
@@ -31,7 +31,8 @@ TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
       EXPECT_EQ(shader.files[6], "shaders/lights.glsl");
       EXPECT_EQ(shader.files[7], "shaders/shadow.glsl");
       EXPECT_EQ(shader.files[8], "shaders/light_directions.glsl");  // included by shadow.glsl
-      EXPECT_EQ(shader.files[9], "shaders/dominant_lights.glsl");
+      EXPECT_EQ(shader.files[9], "shaders/visibility_cone.glsl");
+      EXPECT_EQ(shader.files[10], "shaders/dominant_lights.glsl");
     }
 }
 
@@ -42,13 +43,14 @@ TEST(ShaderProgram, UnknownShaderIsAnError) {
 }
 
 // Compile errors name the original file and line, in the stage and in an included file (a define
-// breaks the source on purpose: mesh.frag line 41 reads SHADING_MODE, environment.glsl line 7
-// declares rotateAboutY).
+// breaks the source on purpose: mesh.frag line 45 reads SHADING_MODE, environment.glsl line 7
+// declares rotateAboutY; shadow_surface.vert, unlike mesh.vert, does not read SHADING_MODE, so
+// the error is the fragment stage's).
 TEST(ShaderProgram, CompileErrorsNameTheShaderFileAndLine) {
   test::glContext();
   const std::string inStage = test::errorMessage(
-      [] { ShaderProgram("mesh.vert", "mesh.frag", "#define SHADING_MODE undefinedName"); });
-  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:41: ", 0), 0u) << inStage;
+      [] { ShaderProgram("shadow_surface.vert", "mesh.frag", "#define SHADING_MODE undefinedName"); });
+  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:45: ", 0), 0u) << inStage;
   const std::string inInclude =
       test::errorMessage([] { ShaderProgram("fullscreen.vert", "sky.frag", "#define rotateAboutY 1"); });
   EXPECT_EQ(inInclude.rfind("shaders/environment.glsl:7: ", 0), 0u) << inInclude;
