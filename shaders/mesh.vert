@@ -40,9 +40,9 @@ layout(binding = kTextureUnitResidualIrradiance) uniform samplerCube residualTru
 // SH9's truncation at a vertex of normal n: AO times the residual cube along the visibility cone's
 // axis (the sh-ao-bent approximation, for this high-frequency part only). Per vertex, like the
 // baked transfer whose SH9 irradiance it corrects (the truncation is a smooth function of the
-// direction and of the vertex's AO and bent normal, which are per vertex themselves): a pixel of a
-// dense mesh would pay the axis and the cube lookup several times over, for llvmpipe shades blocks
-// of pixels that a mesh's small triangles fill poorly (docs/engine.md "Lights"). A studio map's
+// direction and of the vertex's AO and bent normal, which are per vertex themselves): per pixel,
+// the axis needs the shading normal, which a Lambert material with no light drawn does not
+// otherwise compute (21 ms of a 1280 x 720 frame on llvmpipe, docs/benchmarks.md). A studio map's
 // residual keeps the softboxes past the K drawn lights, which SH9 rings around: on a lone diffuse
 // sphere this makes the residual's diffuse the cube's (axis n, AO 1), the `irradiance` mode's
 // accuracy to the mesh's interpolation (docs/dominant-lights.md).
