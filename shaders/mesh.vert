@@ -19,6 +19,7 @@ layout(location = kAttributeTexcoord1) in vec2 inTexcoord1;
 layout(location = kAttributeTangent) in vec4 inTangent;
 
 uniform mat4 viewProjection;
+uniform bool doubleSided;  // mesh.frag's: the material's back faces are drawn
 
 #ifndef SHADING_MODE
 #define SHADING_MODE kShadingModeFull
@@ -88,6 +89,7 @@ void main() {
   vertexOut.tangent = inTangent;
   vec3 normal = normalize(inNormal);
   vertexOut.residualTruncationFront = residualTruncationAt(normal);
-  vertexOut.residualTruncationBack = residualTruncationAt(-normal);
+  // A single-sided material's back faces are culled: no second lookup.
+  vertexOut.residualTruncationBack = doubleSided ? residualTruncationAt(-normal) : vertexOut.residualTruncationFront;
   gl_Position = viewProjection * vec4(inPosition, 1.0);
 }

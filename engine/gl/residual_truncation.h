@@ -3,8 +3,8 @@
 // texel of the residual's brute-force irradiance cube, the cube's value minus the residual SH9's
 // irradiance along the texel's centre direction, clamped at 0 as sphericalHarmonics9Irradiance
 // (shaders/sh9.glsl) clamps it. The lights modes add AO times this cube along the visibility
-// cone's axis (dominant_lights.glsl residualTruncation): one lookup, instead of a lookup of the
-// irradiance cube and an SH9 evaluation per pixel, which cost about 9 ms of a 1280 x 720 frame on
+// cone's axis (mesh.vert residualTruncationAt, per vertex): one lookup, instead of a lookup of the
+// irradiance cube and an SH9 evaluation, which cost about 9 ms of a 1280 x 720 frame on
 // llvmpipe (docs/benchmarks.md). The SH9 is smooth, so interpolating it with the cube's bilinear
 // filter moves the result by well under its own truncation error.
 #include "core/cube_map.h"

@@ -61,6 +61,11 @@ Case diskCase(float cosTheta, float radiusDegrees) {
   return {Material{}, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, cosTheta), glm::radians(radiusDegrees)};
 }
 
+// diskCase at steps + 1 evenly spaced cosines from `low` to `high`.
+void appendDiskSweep(std::vector<Case>& cases, float radiusDegrees, float low, float high, int steps) {
+  for (int k = 0; k <= steps; ++k) cases.push_back(diskCase(low + (high - low) * float(k) / float(steps), radiusDegrees));
+}
+
 // The GLSL disk irradiance `quantity` (0 or 3) against the core's exact uniformDiskIrradiance: the
 // largest difference over `cases`, relative to the head-on irradiance pi sin^2 r.
 float worstAgainstCoreDiskIrradiance(const std::vector<Case>& cases, int quantity) {
@@ -77,11 +82,7 @@ float worstAgainstCoreDiskIrradiance(const std::vector<Case>& cases, int quantit
 // Across the horizon and above it, small and large disks: the GLSL formula is the C++ one.
 TEST(LightsGlsl, DiskIrradianceMatchesTheCore) {
   std::vector<Case> cases;
-  for (float radiusDegrees : {0.27f, 3.0f, 10.0f, 30.0f, 60.0f})
-    for (int k = 0; k <= 80; ++k) {
-      const float cosTheta = -1.0f + 2.0f * float(k) / 80.0f;
-      cases.push_back(diskCase(cosTheta, radiusDegrees));
-    }
+  for (float radiusDegrees : {0.27f, 3.0f, 10.0f, 30.0f, 60.0f}) appendDiskSweep(cases, radiusDegrees, -1.0f, 1.0f, 80);
   const float worst = worstAgainstCoreDiskIrradiance(cases, 0);
   std::cout << "disk irradiance: worst |GLSL - C++| / (pi sin^2 r) = " << worst << '\n';
   // The largest differences are at the horizon of the smallest disks, where the formula cancels
@@ -98,14 +99,8 @@ TEST(LightsGlsl, SunDiskIrradianceMatchesTheCore) {
   std::vector<Case> cases;
   for (float radiusDegrees : {0.27f, 1.0f, 3.0f, 10.0f}) {
     const float s = std::sin(glm::radians(radiusDegrees));
-    for (int k = 0; k <= 200; ++k) {
-      const float inBand = -1.5f * s + 3.0f * s * float(k) / 200.0f;
-      cases.push_back(diskCase(inBand, radiusDegrees));
-    }
-    for (int k = 0; k <= 40; ++k) {
-      const float cosTheta = -1.0f + 2.0f * float(k) / 40.0f;
-      cases.push_back(diskCase(cosTheta, radiusDegrees));
-    }
+    appendDiskSweep(cases, radiusDegrees, -1.5f * s, 1.5f * s, 200);
+    appendDiskSweep(cases, radiusDegrees, -1.0f, 1.0f, 40);
   }
   const float worst = worstAgainstCoreDiskIrradiance(cases, 3);
   std::cout << "sun disk irradiance: worst |GLSL - C++| / (pi sin^2 r) = " << worst << '\n';

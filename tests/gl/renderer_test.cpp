@@ -296,7 +296,7 @@ EnvironmentStages quickStages(const EnvironmentMap& map) {
 }
 
 // The lights modes' residual diffuse corrects SH9's truncation with the residual's own irradiance
-// cube (dominant_lights.glsl, residualTruncation): on a lone Lambert sphere under a sun over a sky
+// cube (mesh.vert, residualTruncationAt): on a lone Lambert sphere under a sun over a sky
 // with a hard horizon (a step SH9 rings around), `lights` is the map's brute-force irradiance
 // within the cube's resolution. Without the residual cube (a bake from before it) the residual
 // is SH9's, several times further off.
