@@ -4,6 +4,7 @@
 //               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
 //               [--bench N] [--no-sky] [--ao-rays N] [--texture-slots LIST | --no-textures]
 //               [--anisotropy A] [--lights K] [--no-shadows] [--no-shadow-mask]
+//               [--shadow-mask-resolution half|full]
 //
 // OUTDIR is an iblkit-bake folder; a .json scene or a .gltf/.glb model is baked in memory first,
 // under --env MAP when given (cli/scene_arguments.h: the same MODEL --env MAP as iblkit-trace). -o .exr
@@ -76,6 +77,7 @@ struct Options {
   int lights = -1;  // --lights K; < 0: all the suns
   bool noShadows = false;
   bool noShadowMask = false;
+  std::string shadowMaskResolution = "half";
   // The window viewer's.
   std::filesystem::path envDir, reference, screenshot;
   std::string caseName, show;  // --case: of a report --reference; --show: the image shown first
@@ -84,6 +86,9 @@ struct Options {
   int frames = 0;
   bool noPanel = false;
 };
+
+// --shadow-mask-resolution: FrameSettings::shadowMaskDivisor.
+int shadowMaskDivisor(const std::string& resolution) { return resolution == "full" ? 1 : 2; }
 
 std::string lowerExtension(const fs::path& file) {
   std::string extension = file.extension().string();
@@ -218,6 +223,7 @@ int runHeadless(const Options& options) {
   settings.lightCount = options.lights;
   settings.shadows = !options.noShadows;
   settings.shadowMask = !options.noShadowMask;
+  settings.shadowMaskDivisor = shadowMaskDivisor(options.shadowMaskResolution);
 
   const BakedScene bake = loadViewScene(options.scene.input, options.scene.environment, options.aoRays);
   // No image may replace the bake folder's files, the scene, a model or the map.
@@ -290,6 +296,15 @@ int runHeadless(const Options& options) {
         std::cout << "  lights-shadowed, shadows in the lit pass (--no-shadow-mask): cpu " << both[1].cpuMs
                   << " ms; with the screen-space mask: " << both[0].cpuMs << " ms (ratio "
                   << both[1].cpuMs / both[0].cpuMs << ")\n";
+        // The mask at the frame's resolution against the half-resolution one, interleaved too.
+        std::vector<FrameSettings> sizes =
+            inModes(settings, {ShadingMode::LightsShadowed, ShadingMode::LightsShadowed});
+        sizes[0].shadowMaskDivisor = 2;
+        sizes[1].shadowMaskDivisor = 1;
+        const std::vector<FrameTimes> bySize = benchmark(renderer, target, camera, sizes, options.bench);
+        std::cout << "  lights-shadowed, mask at full resolution: cpu " << bySize[1].cpuMs
+                  << " ms; at half resolution: " << bySize[0].cpuMs << " ms (ratio "
+                  << bySize[1].cpuMs / bySize[0].cpuMs << ")\n";
       }
     }
   }
@@ -372,6 +387,7 @@ int runWindow(Options options) {
   viewer.lightCount = options.lights;
   viewer.shadows = !options.noShadows;
   viewer.shadowMask = !options.noShadowMask;
+  viewer.shadowMaskDivisor = shadowMaskDivisor(options.shadowMaskResolution);
   // A bake folder with --env alone starts with the bake's map and switches on the worker (the
   // window opens at once); a scene or model is baked under the map before the window opens.
   EnvironmentOverride environment = options.scene.environment;
@@ -472,6 +488,11 @@ int main(int argc, char** argv) {
   app.add_flag("--no-shadow-mask", options.noShadowMask,
                "lights-shadowed reads the shadow maps in the lit pass, not from a screen-space mask "
                "(single-sample targets; multisampled ones always do)");
+  app.add_option("--shadow-mask-resolution", options.shadowMaskResolution,
+                 "the screen-space shadow mask's resolution: half (a mask pixel per 2 x 2 frame pixels, upsampled "
+                 "with its depths) or full (each pixel's own visibilities)")
+      ->check(CLI::IsMember({"half", "full"}))
+      ->capture_default_str();
   app.add_option("--ao-rays", options.aoRays, "visibility rays per vertex when baking a scene in memory")
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();

@@ -14,7 +14,8 @@
 // The shadow mask (engine/gl/shadow_mask.h): on a single-sample target the renderer computes every
 // receiver pixel's visibilities once, in a full-screen pass (shadow_mask.frag) over the visible
 // surfaces' positions and geometric normals (shadow_surface.frag), and the lit pass reads them back
-// (SHADOW_MASK 1). A software rasteriser shades in blocks of pixels, which the small triangles of
+// (SHADOW_MASK 1: its own texel of a mask at the frame's resolution; 2: a coarser mask upsampled,
+// upsampledShadowMask). A software rasteriser shades in blocks of pixels, which the small triangles of
 // a dense mesh fill poorly; the full-screen pass fills them (docs/engine.md "Shadows").
 
 #include "light_directions.glsl"
@@ -24,6 +25,53 @@
 #endif
 // The frame's shadow mask: light i's visibility in component i (shadow_mask.frag).
 layout(binding = kTextureUnitShadowMask) uniform sampler2D shadowMask;
+// SHADOW_MASK 2: the mask is coarser than the frame. Its pixels' window depths (the surface pass's
+// depth buffer; 1 where no receiver was drawn), and mask pixels per frame pixel along x and y.
+layout(binding = kTextureUnitShadowMaskDepth) uniform sampler2D shadowMaskDepth;
+uniform vec2 shadowMaskScale;
+
+#if SHADOW_MASK == 2
+// This pixel's visibilities from a coarser mask, upsampled with its depth (shadow_mask.h): the 4
+// mask pixels around the pixel's centre with their bilinear weights, each kept only where its
+// depth is the lit pixel's surface's there. A planar surface's window depth is affine in screen
+// position, so the lit pixel's own depth extrapolated along its screen gradient predicts each
+// mask pixel's depth exactly on the same plane (and to second order on a curved one); a mask
+// pixel off by more than kMaskDepthTolerance pixels' worth of that gradient (plus a floor for the
+// depth's rounding) shows another surface (an occluder's silhouette, the ground behind it) and
+// is dropped. Where all 4 are dropped (a sliver no mask pixel landed on), the one of nearest
+// depth. `depthGradient`: dFdx and dFdy of gl_FragCoord.z, taken by the caller in uniform
+// control flow.
+const float kMaskDepthTolerance = 1.5;
+const float kMaskDepthFloor = 2e-6;
+vec4 upsampledShadowMask(vec2 depthGradient) {
+  vec2 q = gl_FragCoord.xy * shadowMaskScale - 0.5;
+  vec2 base = floor(q);
+  vec2 f = q - base;
+  ivec2 last = textureSize(shadowMaskDepth, 0) - 1;
+  float tolerance = kMaskDepthTolerance * (abs(depthGradient.x) + abs(depthGradient.y)) + kMaskDepthFloor;
+  vec4 sum = vec4(0.0);
+  float weightSum = 0.0;
+  vec4 nearest = vec4(1.0);
+  float nearestError = 1e30;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 corner = ivec2(k & 1, k >> 1);
+    ivec2 texel = clamp(ivec2(base) + corner, ivec2(0), last);
+    // The mask pixel's centre in frame pixels, relative to this pixel's centre.
+    vec2 offset = (vec2(texel) + 0.5) / shadowMaskScale - gl_FragCoord.xy;
+    float error = abs(texelFetch(shadowMaskDepth, texel, 0).r - (gl_FragCoord.z + dot(depthGradient, offset)));
+    vec4 visibility = texelFetch(shadowMask, texel, 0);
+    vec2 w2 = mix(1.0 - f, f, vec2(corner));
+    float weight = error <= tolerance ? w2.x * w2.y : 0.0;
+    sum += weight * visibility;
+    weightSum += weight;
+    if (error < nearestError) {
+      nearestError = error;
+      nearest = visibility;
+    }
+  }
+  return weightSum > 1e-4 ? sum / weightSum : nearest;
+}
+#endif
 
 layout(binding = kTextureUnitShadowDepth) uniform sampler2DArray shadowMoments;  // trilinear
 // Light i's map: world -> (u, v, depth) in [0, 1] (depth 0 on the side of the light).

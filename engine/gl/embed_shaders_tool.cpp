@@ -119,7 +119,8 @@ std::string sharedConstants() {
                         {"kTextureUnitShadowDepth", kTextureUnitShadowDepth},
                         {"kTextureUnitResidualIrradiance", kTextureUnitResidualIrradiance},
                         {"kTextureUnitShadowMask", kTextureUnitShadowMask},
-                        {"kTextureUnitShadowSurface", kTextureUnitShadowSurface}});
+                        {"kTextureUnitShadowSurface", kTextureUnitShadowSurface},
+                        {"kTextureUnitShadowMaskDepth", kTextureUnitShadowMaskDepth}});
   text += intConstants("iblkit::kMaxEngineLights, kShadowMapSize (engine/gl/light_constants.h)",
                        {{"kMaxEngineLights", kMaxEngineLights}, {"kShadowMapSize", kShadowMapSize}});
   text += "// iblkit::kShadowExponent (engine/gl/light_constants.h)\nconst float kShadowExponent = " +

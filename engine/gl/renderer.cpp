@@ -69,7 +69,7 @@ struct Renderer::Impl {
   std::vector<GpuMesh> meshes;
   // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn, shadows
   // from the mask, specular layer), compiled on first use.
-  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, bool, bool>, ShaderProgram> meshPrograms;
+  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, int, bool>, ShaderProgram> meshPrograms;
   MaterialTextures materialTextures;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
@@ -99,16 +99,18 @@ struct Renderer::Impl {
   // `lightCount`: the lights modes' number of drawn lights (dominant_lights.glsl's LIGHT_COUNT), a
   // constant so that the lights loop unrolls with constant indices (llvmpipe pays a loop over a
   // uniform count and its indexed uniforms per pixel); 0 in the other modes.
-  // `fromMask`: lights-shadowed reads the frame's shadow mask (shadow_mask.h) in place of the maps.
+  // `fromMask`: lights-shadowed reads the frame's shadow mask (shadow_mask.h) in place of the maps:
+  // 0 not, 1 its own texel of a mask at the frame's resolution, 2 a coarser mask upsampled
+  // (shadow.glsl's SHADOW_MASK).
   // `specularLayer`: false compiles the specular terms out (hasSpecularLayer, brdf.glsl's
   // SPECULAR_LAYER); the same frame, cheaper, for Lambert materials such as the ground. Only the
   // modes with the material's BRDF have the two variants.
   const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode,
-                                   int lightCount, bool fromMask, bool specularLayer) {
+                                   int lightCount, int fromMask, bool specularLayer) {
     // The feature layers do not depend on the mode: one program each.
     if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
     if (mode != ShadingMode::Lights && mode != ShadingMode::LightsShadowed) lightCount = 0;
-    if (mode != ShadingMode::LightsShadowed) fromMask = false;
+    if (mode != ShadingMode::LightsShadowed) fromMask = 0;
     if (!usesMaterialBrdf(mode)) specularLayer = true;
     const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount, fromMask, specularLayer);
     auto found = meshPrograms.find(key);
@@ -118,7 +120,7 @@ struct Renderer::Impl {
                                   "\n#define TEXTURED " + std::to_string(slots) +
                                   "\n#define ALPHA_MODE " + std::to_string(int(alphaMode)) +
                                   "\n#define LIGHT_COUNT " + std::to_string(lightCount) +
-                                  "\n#define SHADOW_MASK " + std::to_string(int(fromMask)) +
+                                  "\n#define SHADOW_MASK " + std::to_string(fromMask) +
                                   "\n#define SPECULAR_LAYER " + std::to_string(int(specularLayer));
       found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
     }
@@ -262,7 +264,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   if (fromMask) {
     ++r.shadowMaskFrames;
     if (!r.shadowMask) r.shadowMask = std::make_unique<ShadowMask>();
-    r.shadowMask->beginSurfaces(width, height);
+    r.shadowMask->beginSurfaces(width, height, settings.shadowMaskDivisor);
     r.shadowMask->surfaceProgram().set("viewProjection", viewProjection);
     glCullFace(GL_BACK);
     for (std::size_t i = 0; i < r.meshes.size(); ++i) {
@@ -282,6 +284,9 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     r.shadowMask->computeMask(maskProgram, r.emptyVertexArray);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   }
+  // How the lit pass reads the mask (meshProgram's fromMask), and the mask's pixels per frame pixel.
+  const int maskReading = !fromMask ? 0 : settings.shadowMaskDivisor == 1 ? 1 : 2;
+  const glm::vec2 maskScale = fromMask ? glm::vec2(r.shadowMask->scaleX(), r.shadowMask->scaleY()) : glm::vec2(1.0f);
   glViewport(0, 0, width, height);
   if (settings.sampleShading) {
     glEnable(GL_SAMPLE_SHADING);
@@ -323,9 +328,10 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const auto use = [&](ShadingMode programMode) -> const ShaderProgram& {
       const ShaderProgram& program =
           r.meshProgram(programMode, settings.layer, slots, alphaMode, int(drawn.lights.size()),
-                        fromMask && alphaMode == AlphaMode::Opaque, hasSpecularLayer(material));
+                        fromMask && alphaMode == AlphaMode::Opaque ? maskReading : 0, hasSpecularLayer(material));
       if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
         setFrameUniforms(program);
+        program.set("shadowMaskScale", maskScale);
         prepared.push_back(&program);
       }
       if (current != &program) {

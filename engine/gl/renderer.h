@@ -45,6 +45,10 @@ struct FrameSettings {
   // on a software rasteriser (docs/engine.md "Shadows"). Multisampled targets always shadow in the
   // lit pass.
   bool shadowMask = true;
+  // The mask's pixel, in frame pixels on a side: 1 (the lit pass's own visibilities) or 2 (a
+  // quarter of the lookups, upsampled with the mask's depths; penumbrae interpolated over 2
+  // pixels, shadow_mask.h).
+  int shadowMaskDivisor = 2;
 };
 
 // The envRotationDegrees that shows the environment at the absolute rotation `degrees` about +Y

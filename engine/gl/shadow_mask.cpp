@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "core/error.h"
 #include "engine/gl/light_constants.h"
 #include "engine/gl/render_target.h"
 #include "engine/gl/texture_unit.h"
@@ -21,11 +22,16 @@ ShadowMask::~ShadowMask() {
   if (maskFramebuffer_) glDeleteFramebuffers(1, &maskFramebuffer_);
 }
 
-void ShadowMask::beginSurfaces(int width, int height) {
-  if (width != width_ || height != height_) {
-    surface_ = GlTexture(createTargetTexture(GL_RGBA32UI, width, height));
-    depthStencil_ = GlTexture(createTargetTexture(GL_DEPTH32F_STENCIL8, width, height));
-    mask_ = GlTexture(createTargetTexture(GL_RGBA16, width, height));
+void ShadowMask::beginSurfaces(int width, int height, int divisor) {
+  if (divisor != 1 && divisor != 2)
+    throw Error("shadow mask: divisor " + std::to_string(divisor) + " (1 or 2 expected)");
+  const int maskWidth = (width + divisor - 1) / divisor, maskHeight = (height + divisor - 1) / divisor;
+  if (width != width_ || height != height_ || maskWidth != maskWidth_ || maskHeight != maskHeight_) {
+    surface_ = GlTexture(createTargetTexture(GL_RGBA32UI, maskWidth, maskHeight));
+    depthStencil_ = GlTexture(createTargetTexture(GL_DEPTH32F_STENCIL8, maskWidth, maskHeight));
+    // Sampled as depth by the lit pass (the default mode, set for clarity).
+    glTextureParameteri(depthStencil_.id(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+    mask_ = GlTexture(createTargetTexture(GL_RGBA16, maskWidth, maskHeight));
     glNamedFramebufferTexture(surfaceFramebuffer_, GL_COLOR_ATTACHMENT0, surface_.id(), 0);
     glNamedFramebufferTexture(surfaceFramebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
     glNamedFramebufferTexture(maskFramebuffer_, GL_COLOR_ATTACHMENT0, mask_.id(), 0);
@@ -34,9 +40,11 @@ void ShadowMask::beginSurfaces(int width, int height) {
     requireCompleteFramebuffer(maskFramebuffer_, "shadow mask");
     width_ = width;
     height_ = height;
+    maskWidth_ = maskWidth;
+    maskHeight_ = maskHeight;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, surfaceFramebuffer_);
-  glViewport(0, 0, width, height);
+  glViewport(0, 0, maskWidth_, maskHeight_);
   glDisable(GL_SAMPLE_SHADING);
   glClearNamedFramebufferfi(surfaceFramebuffer_, GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glEnable(GL_DEPTH_TEST);
@@ -60,7 +68,13 @@ const ShaderProgram& ShadowMask::maskProgram(int lightCount) {
 
 void ShadowMask::computeMask(const ShaderProgram& program, GLuint emptyVertexArray) {
   glBindFramebuffer(GL_FRAMEBUFFER, maskFramebuffer_);
-  glViewport(0, 0, width_, height_);
+  glViewport(0, 0, maskWidth_, maskHeight_);
+  // A coarser mask is read around a pixel's own texel too, where a pixel without a receiver may
+  // be the nearest (upsampledShadowMask's fallback): lit, not last frame's value.
+  if (maskWidth_ != width_ || maskHeight_ != height_) {
+    const GLfloat lit[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearNamedFramebufferfv(maskFramebuffer_, GL_COLOR, 0, lit);
+  }
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glEnable(GL_STENCIL_TEST);
@@ -73,6 +87,7 @@ void ShadowMask::computeMask(const ShaderProgram& program, GLuint emptyVertexArr
   glDisable(GL_STENCIL_TEST);
   glBindTextureUnit(kTextureUnitShadowSurface, 0);
   glBindTextureUnit(kTextureUnitShadowMask, mask_.id());
+  glBindTextureUnit(kTextureUnitShadowMaskDepth, depthStencil_.id());
 }
 
 }  // namespace iblkit

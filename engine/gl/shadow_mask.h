@@ -10,9 +10,16 @@
 //   and geometric normal, and stencil 1;
 // - mask: a full-screen triangle, stencil-tested, computing shadow.glsl's shadowVisibilities for
 //   every light there (shadow_mask.frag) into an RGBA16 texture, light i in component i;
-// then the lit pass reads its pixel's texel (mesh.frag with SHADOW_MASK 1). Its fragments are the
-// surface pass's (the same invariant gl_Position, depth test and culling), so the
-// value is the one the lit pass would have computed, to the mask's 16 bits.
+// then the lit pass reads the mask (mesh.frag with SHADOW_MASK 1 or 2).
+// - At the frame's resolution (divisor 1), the lit pass reads its pixel's texel. Its fragments
+//   are the surface pass's (the same invariant gl_Position, depth test and culling), so the value
+//   is the one the lit pass would have computed, to the mask's 16 bits.
+// - At a coarser resolution (divisor 2: a mask pixel per 2 x 2 frame pixels, a quarter of the
+//   lookups and of both passes' pixels), the lit pass upsamples it with its depth
+//   (shadow.glsl's upsampledShadowMask): the bilinear weights of the 4 nearest mask pixels, each
+//   kept only where that pixel's depth lies on the lit pixel's surface (its depth extrapolated
+//   along the lit pixel's own depth gradient), else the one of nearest depth. Penumbrae are
+//   interpolated; an edge between two surfaces stays sharp.
 // Single-sample targets only: a multisampled frame shades a pixel's samples from different
 // surfaces at its edges, and keeps reading the maps in the lit pass.
 #include <epoxy/gl.h>
@@ -31,12 +38,16 @@ class ShadowMask {
   ShadowMask(const ShadowMask&) = delete;
   ShadowMask& operator=(const ShadowMask&) = delete;
 
-  // Starts the surface pass of a width x height frame: (re)allocates the targets when the size
+  // Starts the surface pass of a width x height frame with a mask of ceil(width / divisor) x
+  // ceil(height / divisor) pixels (divisor 1 or 2): (re)allocates the targets when the size
   // changed, binds the surface framebuffer with viewport, depth test (GL_LESS) and stencil (write
-  // 1 where a fragment passes) set, and clears depth and stencil (the surfaces are read only where
-  // the stencil is 1). The caller then draws the receivers with
+  // 1 where a fragment passes) set, and clears depth (to 1, the far plane) and stencil (the
+  // surfaces are read only where the stencil is 1). The caller then draws the receivers with
   // surfaceProgram() (its viewProjection set), culling as the lit pass does.
-  void beginSurfaces(int width, int height);
+  void beginSurfaces(int width, int height, int divisor);
+  // Mask pixels per frame pixel along x and y (1 at divisor 1): the lit pass's shadowMaskScale.
+  float scaleX() const { return float(maskWidth_) / float(width_); }
+  float scaleY() const { return float(maskHeight_) / float(height_); }
   const ShaderProgram& surfaceProgram() const { return surfaceProgram_; }
 
   // The mask pass's program for `lightCount` lights (compiled on first use); the caller sets its
@@ -44,11 +55,12 @@ class ShadowMask {
   const ShaderProgram& maskProgram(int lightCount);
   // Runs the mask pass with `program` (from maskProgram, uniforms set) over the stencilled pixels,
   // drawing a full-screen triangle with `emptyVertexArray` bound, then binds the mask to
-  // kTextureUnitShadowMask. Leaves the mask framebuffer bound, stencil and depth test off.
+  // kTextureUnitShadowMask and its depths to kTextureUnitShadowMaskDepth. Leaves the mask
+  // framebuffer bound, stencil and depth test off.
   void computeMask(const ShaderProgram& program, GLuint emptyVertexArray);
 
  private:
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, maskWidth_ = 0, maskHeight_ = 0;
   GlTexture surface_, depthStencil_, mask_;
   GLuint surfaceFramebuffer_ = 0, maskFramebuffer_ = 0;
   ShaderProgram surfaceProgram_{"shadow_surface.vert", "shadow_surface.frag"};

@@ -31,6 +31,9 @@ enum TextureUnit : unsigned {
   // shadow_mask.frag the surfaces it is computed from.
   kTextureUnitShadowMask = 16,
   kTextureUnitShadowSurface = 17,
+  // The mask's depths (window z of its pixels' surfaces), which mesh.frag's lights-shadowed mode
+  // reads to upsample a mask coarser than the frame (shadow.glsl's upsampledShadowMask).
+  kTextureUnitShadowMaskDepth = 18,
 };
 
 }  // namespace iblkit

@@ -179,6 +179,11 @@ void lightsSection(FrameSettings& settings, const Renderer& renderer) {
   ImGui::Checkbox("screen-space mask", &settings.shadowMask);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("single-sample frames: the shadows computed once per pixel before the lit pass");
+  bool halfMask = settings.shadowMaskDivisor == 2;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("half-res", &halfMask)) settings.shadowMaskDivisor = halfMask ? 2 : 1;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the mask at half resolution, upsampled with its depths (a quarter of the shadow lookups)");
   if (settings.mode != ShadingMode::Lights && settings.mode != ShadingMode::LightsShadowed)
     ImGui::TextDisabled("(used by the lights and lights-shadowed modes)");
 }

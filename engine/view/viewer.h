@@ -40,6 +40,7 @@ struct ViewerOptions {
   int lightCount = -1;                            // FrameSettings::lightCount at start (< 0: all)
   bool shadows = true;                            // FrameSettings::shadows at start
   bool shadowMask = true;                         // FrameSettings::shadowMask at start
+  int shadowMaskDivisor = 2;                      // FrameSettings::shadowMaskDivisor at start
   float anisotropy = kDefaultTextureAnisotropy;  // Renderer's textureAnisotropy
   std::filesystem::path envDir = "assets/hdri";
   std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)
