@@ -344,6 +344,8 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
                 "iblkit-view: -o: only with --headless (the window saves screenshots: --screenshot)", out, 2);
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --lights 9",
                 "iblkit-view: --lights: Value 9 not in range 0 to 4", out, 2);
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --shadow-mask-resolution quarter",
+                "iblkit-view: --shadow-mask-resolution: quarter not in {half,full}", out, 2);
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --no-such-option",
                 "iblkit-view: The following argument was not expected: --no-such-option", out, 2);
 }
