@@ -52,8 +52,8 @@ vec3 groundBounceIrradiance(vec3 albedo, vec3 irradianceUp) {
 
 // `truncation`: SH9's truncation of the residual's irradiance at this point, AO times the residual
 // cube along the visibility cone's axis, which mesh.vert evaluates per vertex (residualTruncationAt).
-vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 truncation, vec3 position, vec3 geometric,
-                         bool shadowed) {
+vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 truncation, vec4 vertexLightIrradiance,
+                         vec3 position, vec3 geometric, bool shadowed) {
   vec3 irradiance = irradiancePrtSloan(vertexIn.transfer012, vertexIn.transfer345, vertexIn.transfer678, residualShRadiance);
   vec3 axis = visibilityConeAxis(n, ao);
   if (residualCubeCorrection != 0) irradiance = max(irradiance + truncation, vec3(0.0));
@@ -71,7 +71,11 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 trunc
 #endif
   for (int i = 0; i < lightCount; ++i) {
     vec3 l = lightDirection[i];
+#if VERTEX_LIGHTS
+    vec3 lit = (1.0 - lobes.metallic) * lobes.baseColor / kPi * lightRadiance[i] * vertexLightIrradiance[i];
+#else
     vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightCosSin[i], lightMirrorEdgeCos[i]);
+#endif
 #if SHADOW_MASK
     lit *= visibility[i];
 #else
@@ -82,7 +86,11 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 trunc
   }
   // The lights' bounce off what occludes the vertex (groundBounceIrradiance,
   // linear in the irradiance: the lights' sum at once).
-  radiance += diffuseWeight(lobes, schlickWeights(clamp(dot(n, v), 0.0, 1.0))) * m.baseColor / kPi *
-              groundBounceIrradiance(m.baseColor, irradianceUp);
+#if VERTEX_LIGHTS
+  float bounceWeight = 1.0 - lobes.metallic;
+#else
+  float bounceWeight = diffuseWeight(lobes, schlickWeights(clamp(dot(n, v), 0.0, 1.0)));
+#endif
+  radiance += bounceWeight * m.baseColor / kPi * groundBounceIrradiance(m.baseColor, irradianceUp);
   return radiance;
 }

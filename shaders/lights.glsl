@@ -1,3 +1,17 @@
+// VERTEX_LIGHTS 1 (renderer.cpp): a program of the lights modes for a mesh whose vertices share one
+// normal and whose triangles face along it (a plane such as the ground; hasConstantNormal), with a
+// material without a specular layer and without a normal texture. Its lights' terms are then the
+// Lambert diffuse, (1 - metallic) baseColor / pi L sunDiskIrradiance(n.l, r), and n.l is one value
+// over the mesh: mesh.vert evaluates the irradiance per vertex (lightIrradianceAt) and the pixel
+// needs no shading normal for it. The same frame (bunny_esplanade's ground: relMSE 3e-15 against
+// the per-pixel terms), except within 0.57 degrees of the plane's horizon, where the pixel's
+// normal would be turned towards the viewer (shadingNormalFacingViewer). Curved meshes keep the
+// per-pixel terms: interpolating the irradiance there moved the bunny's terminators (FLIP 0.014,
+// docs/benchmarks.md).
+#ifndef VERTEX_LIGHTS
+#define VERTEX_LIGHTS 0
+#endif
+
 // Disk lights with the core's BRDF (core/brdf.h: glTF 2.0 Appendix B with KHR_materials_specular):
 // the engine's dominant lights (docs/dominant-lights.md, engine section; docs/engine.md "Lights").
 // Needs environment.glsl (kPi) and brdf.glsl (BrdfLobes, diffuseWeight, maxComponent).

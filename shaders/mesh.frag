@@ -25,6 +25,8 @@ in VertexData {
   // The lights modes' residual truncation (mesh.vert) of the front and of the back face.
   vec3 residualTruncationFront;
   vec3 residualTruncationBack;
+  vec4 lightIrradianceFront;
+  vec4 lightIrradianceBack;
 }
 vertexIn;
 
@@ -192,7 +194,8 @@ void main() {
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, bent) * ao;
   } else if (mode == kShadingModeLights || mode == kShadingModeLightsShadowed) {
     vec3 truncation = side < 0.0 ? vertexIn.residualTruncationBack : vertexIn.residualTruncationFront;
-    radiance = dominantLightsModel(m, n, v, ao, truncation, vertexIn.position, geometric,
+    vec4 lightIrradiance = side < 0.0 ? vertexIn.lightIrradianceBack : vertexIn.lightIrradianceFront;
+    radiance = dominantLightsModel(m, n, v, ao, truncation, lightIrradiance, vertexIn.position, geometric,
                                    mode == kShadingModeLightsShadowed);
   } else if (mode == kShadingModeFullGltfAo) {
     // The asset's AO in place of the baked visibility: unshadowed SH9 irradiance times it, the

@@ -5,6 +5,9 @@
 #include "shared_constants.glsl"
 #include "environment.glsl"
 #include "visibility_cone.glsl"
+#include "brdf.glsl"
+#include "light_directions.glsl"
+#include "lights.glsl"
 
 layout(location = kAttributePosition) in vec3 inPosition;
 layout(location = kAttributeNormal) in vec3 inNormal;
@@ -73,8 +76,21 @@ out VertexData {
   // (the normal negated, mesh.frag's `side`).
   vec3 residualTruncationFront;
   vec3 residualTruncationBack;
+  // VERTEX_LIGHTS (lights.glsl): each drawn light's sunDiskIrradiance at the vertex, light i in
+  // component i, of the front face and of a double-sided material's back face.
+  vec4 lightIrradianceFront;
+  vec4 lightIrradianceBack;
 }
 vertexOut;
+
+// The drawn lights' disk irradiance (per unit radiance) on the normal n, light i in component i.
+vec4 lightIrradianceAt(vec3 n) {
+  vec4 irradiance = vec4(0.0);
+#if VERTEX_LIGHTS
+  for (int i = 0; i < lightCount; ++i) irradiance[i] = sunDiskIrradiance(dot(n, lightDirection[i]), lightCosSin[i].y);
+#endif
+  return irradiance;
+}
 
 void main() {
   vertexOut.position = inPosition;
@@ -91,5 +107,7 @@ void main() {
   vertexOut.residualTruncationFront = residualTruncationAt(normal);
   // A single-sided material's back faces are culled: no second lookup.
   vertexOut.residualTruncationBack = doubleSided ? residualTruncationAt(-normal) : vertexOut.residualTruncationFront;
+  vertexOut.lightIrradianceFront = lightIrradianceAt(normal);
+  vertexOut.lightIrradianceBack = doubleSided ? lightIrradianceAt(-normal) : vertexOut.lightIrradianceFront;
   gl_Position = viewProjection * vec4(inPosition, 1.0);
 }

@@ -51,6 +51,22 @@ AlphaMode drawnAlphaMode(const Material& material, unsigned slots) {
   return drawnAlphaMode(material, (slots & kSlotBaseColor) != 0);
 }
 
+// Whether every vertex of `mesh` has the same normal and every triangle faces along it (a plane
+// such as the scene's ground): its disk lights' irradiance is then one value over the mesh, which
+// the vertex shader evaluates as exactly as the pixel would (VERTEX_LIGHTS, lights.glsl).
+bool hasConstantNormal(const Mesh& mesh) {
+  if (mesh.normals.empty()) return false;
+  const glm::vec3 n = mesh.normals.front();
+  for (const glm::vec3& m : mesh.normals)
+    if (m != n) return false;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
+                    c = mesh.positions[mesh.indices[t + 2]];
+    if (!(glm::dot(glm::cross(b - a, c - a), n) > 0.0f)) return false;
+  }
+  return true;
+}
+
 // The modes that evaluate the material's BRDF lobes (mesh.frag's fullMaterialModel and
 // dominantLightsModel); the others read the albedo alone, or the mirror direction.
 bool usesMaterialBrdf(ShadingMode mode) {
@@ -67,9 +83,10 @@ float envRotationFromBake(const EnvironmentStages& env, std::optional<float> deg
 struct Renderer::Impl {
   Scene scene;
   std::vector<GpuMesh> meshes;
+  std::vector<bool> constantNormal;  // hasConstantNormal per mesh
   // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn, shadows
   // from the mask, specular layer), compiled on first use.
-  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, int, bool>, ShaderProgram> meshPrograms;
+  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, int, bool, bool>, ShaderProgram> meshPrograms;
   MaterialTextures materialTextures;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
@@ -105,14 +122,17 @@ struct Renderer::Impl {
   // `specularLayer`: false compiles the specular terms out (hasSpecularLayer, brdf.glsl's
   // SPECULAR_LAYER); the same frame, cheaper, for Lambert materials such as the ground. Only the
   // modes with the material's BRDF have the two variants.
+  // `constantNormal`: the mesh's normal is one (hasConstantNormal); with a Lambert material and no
+  // normal texture the lights modes take the lights' irradiance from the vertices (VERTEX_LIGHTS).
   const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode,
-                                   int lightCount, int fromMask, bool specularLayer) {
+                                   int lightCount, int fromMask, bool specularLayer, bool constantNormal) {
     // The feature layers do not depend on the mode: one program each.
     if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
     if (mode != ShadingMode::Lights && mode != ShadingMode::LightsShadowed) lightCount = 0;
     if (mode != ShadingMode::LightsShadowed) fromMask = 0;
     if (!usesMaterialBrdf(mode)) specularLayer = true;
-    const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount, fromMask, specularLayer);
+    const bool vertexLights = lightCount > 0 && !specularLayer && constantNormal && (slots & kSlotNormal) == 0;
+    const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount, fromMask, specularLayer, vertexLights);
     auto found = meshPrograms.find(key);
     if (found == meshPrograms.end()) {
       const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
@@ -121,7 +141,8 @@ struct Renderer::Impl {
                                   "\n#define ALPHA_MODE " + std::to_string(int(alphaMode)) +
                                   "\n#define LIGHT_COUNT " + std::to_string(lightCount) +
                                   "\n#define SHADOW_MASK " + std::to_string(fromMask) +
-                                  "\n#define SPECULAR_LAYER " + std::to_string(int(specularLayer));
+                                  "\n#define SPECULAR_LAYER " + std::to_string(int(specularLayer)) +
+                                  "\n#define VERTEX_LIGHTS " + std::to_string(int(vertexLights));
       found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
     }
     return found->second;
@@ -130,7 +151,10 @@ struct Renderer::Impl {
 
 Renderer::Renderer(const BakedScene& bake, float textureAnisotropy) : impl_(std::make_unique<Impl>()) {
   impl_->scene = bake.scene;
-  for (const Mesh& mesh : bake.scene.meshes) impl_->meshes.emplace_back(mesh);
+  for (const Mesh& mesh : bake.scene.meshes) {
+    impl_->meshes.emplace_back(mesh);
+    impl_->constantNormal.push_back(hasConstantNormal(mesh));
+  }
   impl_->materialTextures = MaterialTextures(bake.scene, textureAnisotropy);
   glCreateVertexArrays(1, &impl_->emptyVertexArray);
   setEnvironment(bake.env);
@@ -328,7 +352,8 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const auto use = [&](ShadingMode programMode) -> const ShaderProgram& {
       const ShaderProgram& program =
           r.meshProgram(programMode, settings.layer, slots, alphaMode, int(drawn.lights.size()),
-                        fromMask && alphaMode == AlphaMode::Opaque ? maskReading : 0, hasSpecularLayer(material));
+                        fromMask && alphaMode == AlphaMode::Opaque ? maskReading : 0, hasSpecularLayer(material),
+                        r.constantNormal[i]);
       if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
         setFrameUniforms(program);
         program.set("shadowMaskScale", maskScale);

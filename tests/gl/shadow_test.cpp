@@ -20,6 +20,7 @@
 
 #include "baker/bake_in_memory.h"
 #include "baker/environment_stages.h"
+#include "core/disk_irradiance.h"
 #include "core/image_io.h"
 #include "core/latlong.h"
 #include "engine/gl/render_target.h"
@@ -431,6 +432,50 @@ TEST_F(ShadowTest, ShadowMaskGivesTheLitPassShadows) {
       // 3852 with every mask pixel kept).
       if (sunBehindCamera) EXPECT_LE(objectsOff, objects / 1000);
     }
+}
+
+// The Lambert ground's lights term (a mesh of one normal: its disk irradiance comes from the vertices,
+// VERTEX_LIGHTS, renderer.cpp's hasConstantNormal) against the core's formula: doubling the sun's
+// radiance adds albedo / pi L E_disk(n.l, r) on the open ground, E_disk the core's
+// uniformDiskIrradiance, within 1% (the bounce term off the open ground's occluders, also linear
+// in the light, is below that). A wrong radius or normal in the vertex shader's irradiance is off
+// by far more (cos r for sin r: 19x).
+TEST_F(ShadowTest, OpenGroundTakesTheDiskIrradianceOfTheCore) {
+  const glm::vec3 sun = sunDirection(-90.0f, 35.0f);
+  const SunScene s = writeSunScene("ground_lights", sun, 1.0f);
+  // A Lambert ground (specular 0): the materials whose lights term is the diffuse alone.
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(s.scene));
+  scene["ground"]["material"] = {{"baseColor", {0.6, 0.5, 0.4}}, {"specular", 0.0}};
+  std::ofstream(s.scene) << scene.dump(2);
+  BakedScene bake = bakeWithSun(s);
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  auto openGround = [&](float radianceScale) {
+    BakedScene scaled = bake;
+    scaled.env.lights.suns[0].radiance *= radianceScale;
+    scaled.env.lights.suns[0].irradiance *= radianceScale;
+    Renderer renderer(scaled);
+    FrameSettings settings;
+    settings.mode = ShadingMode::Lights;
+    settings.drawSky = false;
+    RenderTarget target(kWidth, kHeight, 1);
+    renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+    const Image frame = target.readColor();
+    glm::dvec3 sum(0.0);
+    int count = 0;
+    for (int y = kHeight - 20; y < kHeight - 5; ++y)
+      for (int x = 5; x < 40; ++x, ++count) sum += glm::dvec3(glm::vec3(frame.at(x, y)));
+    return sum / double(count);
+  };
+  const glm::dvec3 added = openGround(2.0f) - openGround(1.0f);
+  glm::vec3 albedo(0.0f);
+  for (const Mesh& mesh : bake.scene.meshes)
+    if (mesh.isGround) albedo = bake.scene.materials.at(std::size_t(mesh.material)).baseColor;
+  const double expected = double(luminance(albedo)) / glm::pi<double>() * kSunRadiance *
+                          double(uniformDiskIrradiance(sun.y, glm::radians(kSunRadiusDegrees)));
+  std::cout << "open ground, the sun's term: " << luminance(glm::vec3(added)) << " against the core's " << expected
+            << '\n';
+  EXPECT_GT(expected, 0.0);
+  EXPECT_NEAR(luminance(glm::vec3(added)) / expected, 1.0, 0.01);
 }
 
 // K below the number of suns: a sun not drawn as a light keeps its diffuse light in the residual's
