@@ -25,8 +25,10 @@ in VertexData {
   // The lights modes' residual truncation (mesh.vert) of the front and of the back face.
   vec3 residualTruncationFront;
   vec3 residualTruncationBack;
+#if VERTEX_LIGHTS
   vec4 lightIrradianceFront;
   vec4 lightIrradianceBack;
+#endif
 }
 vertexIn;
 
@@ -194,7 +196,11 @@ void main() {
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, bent) * ao;
   } else if (mode == kShadingModeLights || mode == kShadingModeLightsShadowed) {
     vec3 truncation = side < 0.0 ? vertexIn.residualTruncationBack : vertexIn.residualTruncationFront;
+#if VERTEX_LIGHTS
     vec4 lightIrradiance = side < 0.0 ? vertexIn.lightIrradianceBack : vertexIn.lightIrradianceFront;
+#else
+    vec4 lightIrradiance = vec4(0.0);  // not read: the lights' terms are the pixel's
+#endif
     radiance = dominantLightsModel(m, n, v, ao, truncation, lightIrradiance, vertexIn.position, geometric,
                                    mode == kShadingModeLightsShadowed);
   } else if (mode == kShadingModeFullGltfAo) {

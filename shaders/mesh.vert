@@ -77,18 +77,19 @@ out VertexData {
   vec3 residualTruncationFront;
   vec3 residualTruncationBack;
   // VERTEX_LIGHTS (lights.glsl): each drawn light's sunDiskIrradiance at the vertex, light i in
-  // component i, of the front face and of a double-sided material's back face.
+  // component i, of the front face and of a double-sided material's back face. Only in those
+  // programs: the other programs interpolate nothing more per pixel.
+#if VERTEX_LIGHTS
   vec4 lightIrradianceFront;
   vec4 lightIrradianceBack;
+#endif
 }
 vertexOut;
 
 // The drawn lights' disk irradiance (per unit radiance) on the normal n, light i in component i.
 vec4 lightIrradianceAt(vec3 n) {
   vec4 irradiance = vec4(0.0);
-#if VERTEX_LIGHTS
   for (int i = 0; i < lightCount; ++i) irradiance[i] = sunDiskIrradiance(dot(n, lightDirection[i]), lightCosSin[i].y);
-#endif
   return irradiance;
 }
 
@@ -107,7 +108,9 @@ void main() {
   vertexOut.residualTruncationFront = residualTruncationAt(normal);
   // A single-sided material's back faces are culled: no second lookup.
   vertexOut.residualTruncationBack = doubleSided ? residualTruncationAt(-normal) : vertexOut.residualTruncationFront;
+#if VERTEX_LIGHTS
   vertexOut.lightIrradianceFront = lightIrradianceAt(normal);
   vertexOut.lightIrradianceBack = doubleSided ? lightIrradianceAt(-normal) : vertexOut.lightIrradianceFront;
+#endif
   gl_Position = viewProjection * vec4(inPosition, 1.0);
 }

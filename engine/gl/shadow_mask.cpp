@@ -43,6 +43,7 @@ void ShadowMask::beginSurfaces(int width, int height, int divisor) {
     maskWidth_ = maskWidth;
     maskHeight_ = maskHeight;
   }
+  divisor_ = divisor;
   glBindFramebuffer(GL_FRAMEBUFFER, surfaceFramebuffer_);
   glViewport(0, 0, maskWidth_, maskHeight_);
   glDisable(GL_SAMPLE_SHADING);
@@ -71,7 +72,7 @@ void ShadowMask::computeMask(const ShaderProgram& program, GLuint emptyVertexArr
   glViewport(0, 0, maskWidth_, maskHeight_);
   // A coarser mask is read around a pixel's own texel too, where a pixel without a receiver may
   // be the nearest (upsampledShadowMask's fallback): lit, not last frame's value.
-  if (maskWidth_ != width_ || maskHeight_ != height_) {
+  if (divisor_ > 1) {
     const GLfloat lit[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     glClearNamedFramebufferfv(maskFramebuffer_, GL_COLOR, 0, lit);
   }

@@ -60,7 +60,7 @@ class ShadowMask {
   void computeMask(const ShaderProgram& program, GLuint emptyVertexArray);
 
  private:
-  int width_ = 0, height_ = 0, maskWidth_ = 0, maskHeight_ = 0;
+  int width_ = 0, height_ = 0, divisor_ = 1, maskWidth_ = 0, maskHeight_ = 0;
   GlTexture surface_, depthStencil_, mask_;
   GLuint surfaceFramebuffer_ = 0, maskFramebuffer_ = 0;
   ShaderProgram surfaceProgram_{"shadow_surface.vert", "shadow_surface.frag"};
