@@ -53,6 +53,7 @@ struct Options {
   float textureFootprint = kDefaultTextureFootprint;
   PassArguments passes;  // --pass, --passes, --sum, --merge (cli/pass_arguments.h, docs/cluster.md)
   int cameraLightSamples = 1;
+  std::string groundOcclusion = "on";
   std::filesystem::path noiseSplit;  // --noise-split: the halves' noise as JSON
 };
 
@@ -128,6 +129,7 @@ int run(const Options& options, const CLI::App& app) {
   integratorSettings.aoDistance = options.aoDistance;
   requireInRange("--camera-light-samples", options.cameraLightSamples, 1, kMaxSplitLightDraws);
   integratorSettings.cameraLightSamples = options.cameraLightSamples;
+  integratorSettings.groundOcclusion = options.groundOcclusion == "on";
   if (!options.noiseSplit.empty() && options.samplesPerPixel % 2 != 0)
     failUsage("--noise-split", "needs an even --spp (half of it for each half)");
   const PixelFilterKind filter = parsePixelFilter(options.filter);
@@ -269,6 +271,10 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "random seed");
   app.add_option("--camera-light-samples", options.cameraLightSamples,
                  "environment light samples at the camera ray's first hit (splitting, 1..64)");
+  app.add_option("--ground-occlusion", options.groundOcclusion,
+                 "mis on a horizontal Lambert ground: its exact unoccluded light minus the objects' "
+                 "shadow, sampled in their cone (on, default), or plain next-event estimation (off)")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--noise-split", options.noiseSplit,
                  "render two independent halves (seeds 2s, 2s+1) and write their noise estimate (JSON)");
   app.add_option("--threads", options.threads, "worker threads (0: all)");

@@ -19,6 +19,11 @@ namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
+// The ground's vertices that ground occlusion takes: a shading and a geometric normal within
+// 4.5e-4 radians of +Y (a plane's interpolated normals are +Y to the rounding; a normal texture's
+// are not), where the upper hemisphere of E_up is the surface's own.
+constexpr float kUpCosine = 1.0f - 1e-7f;
+
 // Veach's power heuristic (Veach 1997, eq. 9.13) with exponent beta = 1.5: the weight of the
 // strategy whose density (times its sample count) is pdfA against one of density pdfB,
 // pdfA^1.5 / (pdfA^1.5 + pdfB^1.5). The two weights of a direction add up to 1 for any beta, so
@@ -63,6 +68,11 @@ Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environme
       environmentSampler_(environmentSampler),
       settings_(settings),
       medianCut_(medianCut) {
+  // Ground occlusion replaces the light and BRDF strategies of mis at the ground's vertices, so
+  // it needs both (and the glTF BRDF, whose Lambert case it recognises).
+  if (settings.groundOcclusion && settings.kind != IntegratorKind::AmbientOcclusion &&
+      settings.envSampling == EnvSampling::Mis && !settings.phong)
+    ground_ = GroundOcclusion::of(scene.scene(), environment);
   if (settings.envSampling == EnvSampling::MedianCut && !medianCut.sampler)
     throw std::invalid_argument("Integrator: mediancut needs a MedianCutSampler");
   if (settings.envSampling == EnvSampling::Lights && !medianCut.pointLights)
@@ -124,6 +134,11 @@ struct Integrator::Path {
   // the environment sampler's bucket of that vertex's normal (an oriented sampler's density there).
   float previousLightSamples = 1.0f;
   int previousBucket = EnvironmentSampler::kNoBucket;
+  // Ground occlusion (ground_occlusion.h) takes the current vertex's direct light (covered), or
+  // took the direct light of the vertex the ray leaves (previousCovered: the ray counts where it is
+  // blocked); the cone of directions the objects can block from the current vertex.
+  bool covered = false, previousCovered = false;
+  GroundOcclusion::Cone occluders;
   int bucket = EnvironmentSampler::kNoBucket;  // the current vertex's
   bool alive = true;
   Hit hit;
@@ -147,6 +162,7 @@ struct Integrator::Path {
     previousDelta = true;
     previousLightSamples = 1.0f;
     previousBucket = bucket = EnvironmentSampler::kNoBucket;
+    previousCovered = false;
     alive = true;
   }
 };
@@ -224,6 +240,64 @@ EnvironmentSampler::Lookup Integrator::lookupLight(const glm::vec3& w) const {
                                                          : environmentSampler_.lookup(w);
 }
 
+// A depth's shadow rays, and what each brings: its light if unoccluded, and (ground occlusion's
+// samples of the hidden light, negative) if occluded.
+struct Integrator::ShadowBatch {
+  struct Light {
+    std::size_t path;
+    glm::vec3 ifClear{0.0f}, ifBlocked{0.0f};
+  };
+  std::vector<OcclusionQuery> rays;
+  std::vector<Light> light;
+  std::vector<std::uint8_t> blocked;
+};
+
+bool Integrator::groundLambert(const SurfacePoint& point) {
+  // evalLocal's f = diffuseWeight baseColor / pi, with diffuseWeight = (1 - metallic)(1 - specular
+  // max Fd(v.h)): constant over the directions when the specular factor is 0 and there is no
+  // specular layer.
+  return point.lobes.hasDiffuse && !point.lobes.hasSpecular && point.lobes.specular == 0.0f;
+}
+
+void Integrator::sampleGroundOcclusion(const Path& p, std::size_t index, int lightSamples,
+                                       const glm::vec2* splitDraws, CameraSample& result,
+                                       ShadowBatch& shadows) const {
+  const SurfacePoint& point = p.point;
+  const glm::vec3 wo = -p.ray.direction, n = point.shadingNormal, ng = point.geometricNormal;
+  const BrdfAtPoint* brdf = p.reflection();
+  // The Lambert BRDF, the same for every pair of directions above the plane.
+  const glm::vec3 f = evalReflection(brdf, point.baseColor, n, wo, n);
+  const glm::vec3 lit = p.throughput * f;
+  // f (E_up - O): E_up exact, O (the light the objects hide) by the light samples here and the
+  // BRDF ray (groundOcclusionOfBounce), with the plain estimate's MIS weights.
+  result.radiance += lit * ground_->unoccludedIrradiance();
+  if (p.occluders.empty) return;
+  const float samples = float(lightSamples);
+  const glm::vec3 origin = offsetRayOrigin(point.position, ng);
+  for (int j = 0; j < lightSamples; ++j) {
+    const LightSample light = sampleLight(n, p.bucket, splitDraws ? splitDraws[j] : p.uLight);
+    const glm::vec3& w = light.direction;
+    // Outside the cone nothing is blocked: O's integrand is 0 there, and no ray is needed.
+    if (!(light.pdf > 0.0f && w.y > 0.0f && p.occluders.contains(w) && maxComponent(light.radiance) > 0.0f))
+      continue;
+    const float density = samples * light.pdf;
+    const float weight = powerHeuristic(density, pdfReflection(brdf, n, wo, w));
+    ++result.rays;
+    shadows.rays.push_back({origin, w, 0.0f, kInfinity, RayQuery{RayKind::Secondary, p.cone}});
+    shadows.light.push_back({index, glm::vec3(0.0f), -lit * light.radiance * (w.y * weight / density)});
+  }
+}
+
+void Integrator::groundOcclusionOfBounce(const Path& p, CameraSample& result) const {
+  // The ray left a covered vertex by BRDF sampling (its bucket is still previousBucket), and its
+  // throughput is f cos / pdf already. Blocked, it counts the light it hides; escaped, nothing.
+  const glm::vec3& w = p.ray.direction;
+  if (!p.hit.hit || w.y <= 0.0f) return;
+  const EnvironmentSampler::Lookup seen =
+      environmentSampler_.lookupAt(p.previousBucket, environmentSampler_.mapUv(w));
+  result.radiance -= p.throughput * seen.radiance * powerHeuristic(p.previousPdf, p.previousLightSamples * seen.pdf);
+}
+
 void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> samplers,
                                std::span<CameraSample> out) const {
   const EnvSampling strategy = settings_.envSampling;
@@ -236,18 +310,8 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
   // The first vertex's split light draws, K per path (none for K = 1, which uses uLight).
   const int split = sampleLights ? settings_.cameraLightSamples : 1;
   std::vector<glm::vec2> splitDraws(split > 1 ? count * std::size_t(split) : 0);
-  // A depth's shadow rays and what each brings if unoccluded (kept by the thread from batch to
-  // batch).
-  struct UnoccludedLight {
-    std::size_t path;
-    glm::vec3 contribution;
-  };
-  struct ShadowRays {
-    std::vector<OcclusionQuery> rays;
-    std::vector<UnoccludedLight> light;
-    std::vector<std::uint8_t> blocked;
-  };
-  thread_local ShadowRays shadows;
+  // A depth's shadow rays and their light (kept by the thread from batch to batch).
+  thread_local ShadowBatch shadows;
   const auto splitDraw = [&](std::size_t i, int j) {
     return splitDraws[i * std::size_t(split) + std::size_t(j)];
   };
@@ -272,6 +336,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
         any = true;
         p.hit = intersect(p.ray, RayQuery{RayKind::Secondary, p.cone});
         ++out[i].rays;
+        if (p.previousCovered && p.hit.hit) groundOcclusionOfBounce(p, out[i]);
       }
     }
     if (!any) {
@@ -283,7 +348,9 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
     // strategy of its own (brdf), MIS-weighted against the light strategy (mis, mediancut), or
     // fully after a delta bounce, which no light strategy can reach. With lights the point lights
     // stand for it at every other vertex.
-    const auto weighted = [&](const Path& p) { return p.alive && !p.hit.hit && !p.previousDelta && combine; };
+    const auto weighted = [&](const Path& p) {
+      return p.alive && !p.hit.hit && !p.previousDelta && !p.previousCovered && combine;
+    };
     if (strategy == EnvSampling::Mis)
       for (Path& p : paths)
         if (weighted(p)) {
@@ -296,6 +363,8 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       p.alive = false;
       if (p.previousDelta || strategy == EnvSampling::Brdf) {
         out[i].radiance += p.throughput * environment_.radiance(p.ray.direction);
+      } else if (p.previousCovered) {
+        // Ground occlusion counted the unoccluded light whole (E_up).
       } else if (combine) {
         const EnvironmentSampler::Lookup seen = strategy == EnvSampling::Mis
                                                     ? environmentSampler_.lookupAt(p.previousBucket, p.escapeUv)
@@ -333,6 +402,9 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       p.brdf.reset();
       if (!settings_.phong) p.brdf.emplace(p.point.lobes, p.point.shadingNormal, wo);
       p.bucket = envSampler ? environmentSampler_.bucketOf(p.point.shadingNormal) : EnvironmentSampler::kNoBucket;
+      p.covered = ground_ && p.point.isGround && p.brdf && groundLambert(p.point) &&
+                  p.point.shadingNormal.y >= kUpCosine && p.point.geometricNormal.y >= kUpCosine;
+      if (p.covered) p.occluders = ground_->coneAt(offsetRayOrigin(p.point.position, p.point.geometricNormal));
     }
     if (depth == 1) keepDirect();
     // The light samples' tables and texels, brought in for the whole batch stage by stage.
@@ -360,6 +432,11 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       const SurfacePoint& point = p.point;
       const glm::vec3 wo = -p.ray.direction, n = point.shadingNormal, ng = point.geometricNormal;
       const BrdfAtPoint* brdf = p.reflection();
+      if (p.covered) {
+        sampleGroundOcclusion(p, i, lightSamples, split > 1 ? &splitDraws[i * std::size_t(split)] : nullptr,
+                              out[i], shadows);
+        continue;
+      }
       // n light samples, each weighted 1/n: their density is n times the one sample's in the
       // power heuristic (Veach 1997, eq. 9.13).
       for (int j = 0; j < lightSamples; ++j) {
@@ -376,14 +453,14 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
                 combine ? powerHeuristic(density, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
             shadows.rays.push_back({offsetRayOrigin(point.position, ng), light.direction, 0.0f, kInfinity,
                                     RayQuery{RayKind::Secondary, p.cone}});
-            shadows.light.push_back({i, p.throughput * f * light.radiance * (cosTheta * weight / density)});
+            shadows.light.push_back({i, p.throughput * f * light.radiance * (cosTheta * weight / density), glm::vec3(0.0f)});
           }
         }
       }
     }
     occluded(shadows.rays, shadows.blocked);
     for (std::size_t k = 0; k < shadows.light.size(); ++k)
-      if (!shadows.blocked[k]) out[shadows.light[k].path].radiance += shadows.light[k].contribution;
+      out[shadows.light[k].path].radiance += shadows.blocked[k] ? shadows.light[k].ifBlocked : shadows.light[k].ifClear;
 
     // The bounce.
     for (std::size_t i = 0; i < count; ++i) {
@@ -406,6 +483,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       p.previousDelta = scattered.delta;
       p.previousLightSamples = samples;
       p.previousBucket = p.bucket;
+      p.previousCovered = p.covered && ground_;
       // Russian roulette (Arvo and Kirk 1990): continue with probability q, dividing by q.
       if (depth + 1 >= kRussianRouletteDepth) {
         const float q = std::min(0.95f, maxComponent(p.throughput));

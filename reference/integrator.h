@@ -27,6 +27,13 @@
 // unbiased. Later vertices take one light sample. The K draws are stratified (PixelSampler::
 // splitLight2D). K = 1 is the plain estimator, bit for bit.
 //
+// Ground occlusion (IntegratorSettings::groundOcclusion, ground_occlusion.h): with mis, at a vertex
+// on a horizontal Lambert ground the direct light is f E_up (exact) minus the light the objects
+// hide, estimated by the light samples (a shadow ray only for those inside the objects' cone) and
+// the BRDF ray where it is blocked, with the plain estimate's MIS weights; the BRDF ray that
+// escapes from such a vertex adds nothing. The vertex's indirect light (the BRDF ray's path) is as
+// before, and so are the random numbers: with it off the image is the same as before, bit for bit.
+//
 // lights is the biased approximation (environment_point_lights.h): at every non-delta vertex one of
 // the N median-cut point lights, picked by its power, with a shadow ray (next-event estimation,
 // weighted by 1 / its probability: in expectation the sum over all N lights). BRDF-sampled rays
@@ -46,6 +53,7 @@
 #include "core/ray.h"
 #include "reference/environment_point_lights.h"
 #include "reference/environment_sampler.h"
+#include "reference/ground_occlusion.h"
 #include "reference/median_cut_sampler.h"
 #include "reference/pixel_sampler.h"
 #include "reference/ray_recorder.h"
@@ -91,6 +99,10 @@ struct IntegratorSettings {
   // Light samples at the camera ray's first hit (splitting, above), 1..kMaxSplitLightDraws; path
   // and direct with a light strategy (not brdf).
   int cameraLightSamples = 1;
+  // mis at a horizontal Lambert ground's vertices: the direct light as the exact unoccluded
+  // irradiance minus the part the objects hide (ground_occlusion.h; iblkit-trace
+  // --ground-occlusion). No effect where it does not apply.
+  bool groundOcclusion = true;
 };
 
 // Everything one camera sample produces; the renderer averages these per pixel.
@@ -181,6 +193,17 @@ class Integrator {
   // RayScene::occluded for each of `rays` into blocked[k] (resized), logged when a recorder is set.
   void occluded(std::span<const OcclusionQuery> rays, std::vector<std::uint8_t>& blocked) const;
   struct Path;
+  struct ShadowBatch;
+  // Whether ground occlusion may take a vertex's direct light: a Lambert BRDF (constant f).
+  static bool groundLambert(const SurfacePoint& point);
+  // Ground occlusion's estimate at p's vertex (p.covered): f E_up into `result`, and the shadow rays
+  // of the light samples (p.uLight, or the K splitDraws) that fall in p.occluders into `shadows`,
+  // each with minus its MIS-weighted light if blocked.
+  void sampleGroundOcclusion(const Path& p, std::size_t index, int lightSamples, const glm::vec2* splitDraws,
+                             CameraSample& result, ShadowBatch& shadows) const;
+  // Ground occlusion's BRDF strategy for p's ray, BRDF-sampled at a covered vertex
+  // (p.previousCovered) and just found blocked (p.hit): minus the MIS-weighted light it hides.
+  void groundOcclusionOfBounce(const Path& p, CameraSample& result) const;
   // The camera rays of a batch (all alive, one cone) into their paths' hits: RayScene::
   // intersectCoherent, logged when a recorder is set.
   void intersectCameraRays(std::span<Path> paths) const;
@@ -193,6 +216,7 @@ class Integrator {
   const EnvironmentSampler& environmentSampler_;
   IntegratorSettings settings_;
   MedianCutLighting medianCut_;
+  std::optional<GroundOcclusion> ground_;  // when settings_.groundOcclusion applies to the scene
   RayRecorder* recorder_ = nullptr;
 };
 

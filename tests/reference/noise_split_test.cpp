@@ -111,10 +111,16 @@ TEST(NoiseSplit, HalvesAreTheRendersOfTheirSeedsAndTheClassesAddUp) {
 // direct part what it takes from the indirect one, and since the second vertex's draws are Sobol
 // points too (pixel_sampler.h) the parts are each better stratified than their sum: 1.43 here, 1.32
 // with roulette from the third bounce, whose noise was in the indirect part). The direct integrator's light is all
-// direct: nothing is indirect.
+// direct: nothing is indirect. With ground occlusion (the default, integrator.h) the parts add up to
+// 1.7x the whole: a BRDF ray from the ground that an object blocks takes its hidden light from the
+// direct part and brings its path's light to the indirect one, so the two move against each other;
+// the 50% bound is the plain estimator's, which runs here with it off.
 TEST(NoiseSplit, SplitsTheNoiseByDepth) {
   const Fixture f;
-  const NoiseSplit split = renderNoiseSplit(f.integrator, f.camera, f.settings(32, 3));
+  IntegratorSettings plain;
+  plain.groundOcclusion = false;
+  const Integrator integrator(f.renderScene, f.environment, f.sampler, plain);
+  const NoiseSplit split = renderNoiseSplit(integrator, f.camera, f.settings(32, 3));
   EXPECT_GT(split.direct.relMse, 0.0);
   EXPECT_GT(split.indirect.relMse, 0.0);
   EXPECT_NEAR(split.direct.share + split.indirect.share, 1.0, 1e-12);

@@ -2,11 +2,13 @@
 // Scenes built in code for the reference tracer's tests: procedural meshes with known geometry
 // under analytic environments, rendered small so each test program stays fast.
 
+#include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <optional>
 #include <utility>
 
 #include "core/environment_map.h"
+#include "core/latlong.h"
 #include "core/procedural_mesh.h"
 #include "core/scene.h"
 #include "reference/environment_sampler.h"
@@ -81,6 +83,32 @@ inline IntegratorSettings integratorOf(IntegratorKind kind, EnvSampling envSampl
   settings.kind = kind;
   settings.envSampling = envSampling;
   return settings;
+}
+
+// A grey sky brighter towards the zenith with a small bright spot (a sun) 45 degrees up: peaked
+// enough that the light strategy and the BRDF strategy both matter.
+inline EnvironmentMap spotEnvironment() {
+  const glm::vec3 spot = glm::normalize(glm::vec3(0.5f, 0.7f, 0.6f));
+  return EnvironmentMap::fromImage(
+      latLongFromRadiance(128, 64, 2,
+                          [&](const glm::vec3& d) {
+                            return glm::vec3(0.3f + 0.2f * d.y) +
+                                   glm::vec3(60.0f) * std::pow(std::max(0.0f, glm::dot(d, spot)), 200.0f);
+                          }),
+      "spot");
+}
+
+// Pixels (green channel) where two renders of one image differ by more than 4 sigma of their
+// estimated variances: a handful at most for unbiased estimators of the same image.
+inline int pixelsApartBeyond4Sigma(const RenderResult& first, const RenderResult& second) {
+  int outliers = 0;
+  for (int y = 0; y < first.beauty.height(); ++y)
+    for (int x = 0; x < first.beauty.width(); ++x) {
+      const float a = first.beauty.at(x, y).g, b = second.beauty.at(x, y).g;
+      const float sigma = std::sqrt(first.variance.at(x, y).g + second.variance.at(x, y).g);
+      outliers += std::abs(a - b) > 4.0f * sigma + 1e-4f;
+    }
+  return outliers;
 }
 
 }  // namespace iblkit::test
