@@ -470,7 +470,10 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       const glm::vec3 wo = -p.ray.direction, n = point.shadingNormal, ng = point.geometricNormal;
       const BrdfAtPoint* brdf = p.reflection();
       const BrdfSample scattered = sampleReflection(brdf, point.baseColor, n, wo, p.uBrdf, p.uLobe);
-      if (!scattered.valid()) {
+      // From a covered vertex a ray outside the objects' cone escapes (nothing else is above the
+      // plane), and an escape adds nothing there (ground occlusion took the unoccluded light
+      // whole): the path ends without tracing it.
+      if (!scattered.valid() || (p.covered && !p.occluders.contains(scattered.wi))) {
         p.alive = false;
         continue;
       }
