@@ -84,6 +84,11 @@ class EnvironmentSampler {
   // The bucket of a non-zero normal; kNoBucket when the sampler is not oriented.
   int bucketOf(const glm::vec3& normal) const { return oriented_ ? NormalBuckets::of(normal) : kNoBucket; }
   Sample sample(int bucket, glm::vec2 u) const;
+  // The same draw, but empty (pdf 0) where it can be known from the oriented sampler's cell alone
+  // that the direction lies outside the cone of world directions about the unit `axis` with
+  // cos(half-angle) `cosRadius` (OrientedEnvironment::sample's `within`); every direction it does
+  // return is the one sample(bucket, u) returns. Without an oriented sampler, sample(bucket, u).
+  Sample sampleWithin(int bucket, glm::vec2 u, const glm::vec3& axis, float cosRadius) const;
   float pdf(int bucket, const glm::vec3& worldDirection) const;
   Lookup lookupAt(int bucket, glm::vec2 uv) const;
   void prefetchSample(int bucket, glm::vec2 u, int stage) const;

@@ -275,9 +275,11 @@ void Integrator::sampleGroundOcclusion(const Path& p, std::size_t index, int lig
   const float samples = float(lightSamples);
   const glm::vec3 origin = offsetRayOrigin(point.position, ng);
   for (int j = 0; j < lightSamples; ++j) {
-    const LightSample light = sampleLight(n, p.bucket, splitDraws ? splitDraws[j] : p.uLight);
+    // Outside the cone nothing is blocked: O's integrand is 0 there, and no ray is needed. (The
+    // sampler stops early where its cell is outside the cone; mis is the strategy here.)
+    const EnvironmentSampler::Sample light = environmentSampler_.sampleWithin(
+        p.bucket, splitDraws ? splitDraws[j] : p.uLight, p.occluders.axis, p.occluders.cosRadius);
     const glm::vec3& w = light.direction;
-    // Outside the cone nothing is blocked: O's integrand is 0 there, and no ray is needed.
     if (!(light.pdf > 0.0f && w.y > 0.0f && p.occluders.contains(w) && maxComponent(light.radiance) > 0.0f))
       continue;
     const float density = samples * light.pdf;

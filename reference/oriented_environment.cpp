@@ -105,6 +105,10 @@ OrientedEnvironment::OrientedEnvironment(const EnvironmentTexels& texels, std::s
     }
   cellOffset_[cellCount] = offset;
   cellRowOffset_[cellCount] = static_cast<int>(rowCdf_.size());
+  cellCentre_ = cellCentre;
+  cellCosSinRadius_.resize(cellCount);
+  for (std::size_t cell = 0; cell < cellCount; ++cell)
+    cellCosSinRadius_[cell] = {std::cos(cellRadius[cell]), std::sin(cellRadius[cell])};
 
   bounds_.resize(cellCount * NormalBuckets::kCount);
   texelScale_.reserve(cellCount * NormalBuckets::kCount);
@@ -168,13 +172,22 @@ Found findInCdf(const float* first, const float* last, float u) {
 }
 }  // namespace
 
-OrientedEnvironment::Pick OrientedEnvironment::sample(int bucket, glm::vec2 u) const {
+OrientedEnvironment::Pick OrientedEnvironment::sample(int bucket, glm::vec2 u, const DirectionCone* within) const {
   const PiecewiseConstant2D& cells = cellDistribution_[static_cast<std::size_t>(bucket)];
   Pick out;
   if (cells.integral() <= 0.0f) return out;  // no light this bucket's normals can receive
   const PiecewiseConstant2D::Sample picked = cells.sample(u);
   const int cx = picked.offset.x, cy = picked.offset.y;
   const std::size_t cell = static_cast<std::size_t>(cy) * columns_ + static_cast<std::size_t>(cx);
+  if (within && within->cosRadius > -1.0f) {
+    // Every point of the cell is within its radius r of the centre, so none is in the cone when the
+    // centre is farther than the cone's half-angle a plus r from the axis: cos(angle) < cos(a + r)
+    // (a + r < pi), with a margin for the rounding of the directions.
+    const glm::vec2 r = cellCosSinRadius_[cell];
+    const float cosSum = within->cosRadius * r.x - within->sinRadius * r.y;
+    const bool below = within->cosRadius * r.y + within->sinRadius * r.x > 0.0f;  // sin(a + r) > 0: a + r < pi
+    if (below && glm::dot(within->axis, cellCentre_[cell]) < cosSum - 1e-5f) return out;
+  }
   // What is left of u inside the cell picks its row, then the row's column.
   const float acrossCell =
       std::clamp(picked.p.x * static_cast<float>(columns_) - static_cast<float>(cx), 0.0f, kOneMinusEpsilon);

@@ -47,8 +47,16 @@ class OrientedEnvironment {
     glm::vec2 within{0.0f};    // the point inside the texel: across its columns, down its solid angle
     float pdfUv = 0.0f;        // density per unit area of (u, v); 0 when the bucket sees no light
   };
-  // A texel for a vertex whose normal is in `bucket`, from u in [0,1)^2.
-  Pick sample(int bucket, glm::vec2 u) const;
+  // A cone of map directions: unit axis, cos and sin of the half-angle (in [0, pi]).
+  struct DirectionCone {
+    glm::vec3 axis{0.0f, 1.0f, 0.0f};
+    float cosRadius = -1.0f, sinRadius = 0.0f;
+  };
+  // A texel for a vertex whose normal is in `bucket`, from u in [0,1)^2. With `within`, a pick whose
+  // cell lies wholly outside that cone stops at the cell and comes back empty (pdfUv 0): the same
+  // draw as without it for every point that can be inside the cone (ground occlusion, whose light
+  // samples outside the objects' cone count nothing, skips the texel-level work of the rest).
+  Pick sample(int bucket, glm::vec2 u, const DirectionCone* within = nullptr) const;
   // The density per unit area of (u, v) that sample(bucket, .) has on `texel`.
   float pdfUv(int bucket, glm::ivec2 texel) const;
   // Software prefetches of what sample(bucket, u) reads, stages 0, 1, 2 in turn (see
@@ -80,6 +88,9 @@ class OrientedEnvironment {
   // Per bucket and cell: P(cell) / (sum of w_t over the cell) x width x height, so that a texel's
   // density in (u, v) is its weight times this (one read where the distribution takes three).
   std::vector<float> texelScale_;
+  // Per cell: its centre's map direction, and cos and sin of the angle from it to its farthest point.
+  std::vector<glm::vec3> cellCentre_;
+  std::vector<glm::vec2> cellCosSinRadius_;
   float texelScale(int bucket, std::size_t cell) const {
     return texelScale_[static_cast<std::size_t>(bucket) * static_cast<std::size_t>(columns_ * rows_) + cell];
   }

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+
 #include <glm/gtc/constants.hpp>
 
 #include "core/environment_map_file.h"
@@ -129,6 +132,41 @@ TEST(EnvironmentSampler, OneHotWeightIsBounded) {
   }
   EXPECT_GT(maxWeight, 0.0f);
   EXPECT_LT(maxWeight, 12.0f * power);
+}
+
+// sampleWithin is sample's draw, stopped early only where the oriented sampler's cell lies outside
+// the cone: on a rotated map, for cones of 2 to 120 degrees about several axes and the buckets of
+// an upward and a sideways normal, every draw it returns is sample's exactly, and every one it
+// leaves empty is outside the cone. It does stop early (most draws, for the small cones), and a
+// test of the cell against the cone without the cell's radius would cut draws inside it.
+TEST(EnvironmentSampler, SampleWithinIsTheSameDrawStoppedOutsideTheCone) {
+  EnvironmentMap map = spotMap(128);
+  map.setRotationDegrees(31.0f);
+  const EnvironmentSampler sampler(map, false, LightOrientation::ByNormal);
+  int empty = 0, total = 0;
+  for (const glm::vec3 normal : {glm::vec3(0.0f, 1.0f, 0.0f), glm::normalize(glm::vec3(1.0f, 0.2f, 0.3f))})
+    for (const glm::vec3 axis : {glm::normalize(glm::vec3(0.2f, 0.3f, -0.9f)), glm::normalize(glm::vec3(-0.5f, 0.8f, 0.1f)),
+                                 glm::vec3(0.0f, 1.0f, 0.0f)})
+      for (const float degrees : {2.0f, 15.0f, 45.0f, 120.0f}) {
+        const float cosRadius = std::cos(glm::radians(degrees));
+        const int bucket = sampler.bucketOf(normal);
+        for (int i = 0; i < 4000; ++i) {
+          const glm::vec2 u((i + 0.5f) / 4000.0f, std::fmod(i * 0.6180339887f, 1.0f));
+          const EnvironmentSampler::Sample whole = sampler.sample(bucket, u);
+          const EnvironmentSampler::Sample cut = sampler.sampleWithin(bucket, u, axis, cosRadius);
+          ++total;
+          if (cut.pdf <= 0.0f && whole.pdf > 0.0f) {
+            ++empty;
+            ASSERT_LT(glm::dot(whole.direction, axis), cosRadius) << degrees << " degrees, draw " << i;
+          } else {
+            ASSERT_EQ(cut.direction, whole.direction);
+            ASSERT_EQ(cut.radiance, whole.radiance);
+            ASSERT_EQ(cut.pdf, whole.pdf);
+          }
+        }
+      }
+  std::printf("stopped early: %d of %d draws\n", empty, total);
+  EXPECT_GT(empty, total / 4);
 }
 
 TEST(EnvironmentSampler, BlackMapSamplesUniformlyInUv) {
