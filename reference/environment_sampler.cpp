@@ -61,22 +61,24 @@ void EnvironmentSampler::prefetchLookup(glm::vec2 uv) const {
 }
 
 EnvironmentSampler::Sample EnvironmentSampler::sample(int bucket, glm::vec2 u) const {
+  return sampleOriented(bucket, u, nullptr);
+}
+
+EnvironmentSampler::Sample EnvironmentSampler::sampleOriented(int bucket, glm::vec2 u,
+                                                           const OrientedEnvironment::DirectionCone* within) const {
   if (bucket == kNoBucket) return sample(u);
-  const OrientedEnvironment::Pick pick = oriented_->sample(bucket, u);
+  const OrientedEnvironment::Pick pick = oriented_->sample(bucket, u, within);
   if (pick.pdfUv <= 0.0f) return {};
   return pointIn(pick.texel, pick.within, pick.pdfUv);
 }
 
 EnvironmentSampler::Sample EnvironmentSampler::sampleWithin(int bucket, glm::vec2 u, const glm::vec3& axis,
                                                          float cosRadius) const {
-  if (bucket == kNoBucket) return sample(u);
   OrientedEnvironment::DirectionCone cone;
   cone.axis = texels_.map().toMapDirection(axis);
   cone.cosRadius = std::clamp(cosRadius, -1.0f, 1.0f);
   cone.sinRadius = std::sqrt(std::max(0.0f, (1.0f - cone.cosRadius) * (1.0f + cone.cosRadius)));
-  const OrientedEnvironment::Pick pick = oriented_->sample(bucket, u, &cone);
-  if (pick.pdfUv <= 0.0f) return {};
-  return pointIn(pick.texel, pick.within, pick.pdfUv);
+  return sampleOriented(bucket, u, &cone);
 }
 
 float EnvironmentSampler::pdf(int bucket, const glm::vec3& worldDirection) const {

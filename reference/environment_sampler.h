@@ -103,6 +103,8 @@ class EnvironmentSampler {
   // The direction at point `within` of `texel` (uniform, or warped by the bilinear luminance),
   // whose texel has density pdfUv per unit (u, v) area.
   Sample pointIn(glm::ivec2 texel, glm::vec2 within, float pdfUv) const;
+  // sample(bucket, u), stopped early outside `within` when it is set (sampleWithin).
+  Sample sampleOriented(int bucket, glm::vec2 u, const OrientedEnvironment::DirectionCone* within) const;
   // The within-texel density of the point a lookup found (1 unless bilinear).
   float withinDensity(const EnvironmentTexels::Location& at) const;
 

@@ -77,10 +77,7 @@ std::optional<GroundOcclusion> GroundOcclusion::of(const Scene& scene, const Env
   GroundOcclusion ground;
   ground.groundHeight_ = groundLow;
   ground.irradianceUp_ = upperHemisphereIrradiance(environment);
-  Bounds objects;
-  for (const Mesh& mesh : scene.meshes)
-    if (!mesh.isGround)
-      for (const glm::vec3& p : mesh.positions) objects.extend(p);
+  const Bounds objects = objectBounds(scene.meshes);
   if (!objects.empty()) {
     ground.center_ = objects.center();
     float radius = 0.0f;

@@ -62,13 +62,10 @@ class GroundOcclusion {
   };
   Cone coneAt(const glm::vec3& origin) const;
 
-  // The sphere that holds every vertex of the scene's non-ground meshes (radius < 0: none).
-  const glm::vec3& occluderCenter() const { return center_; }
-  float occluderRadius() const { return radius_; }
-
  private:
   glm::vec3 irradianceUp_{0.0f};
   float groundHeight_ = 0.0f;
+  // The sphere that holds every vertex of the scene's non-ground meshes (radius < 0: none).
   glm::vec3 center_{0.0f};
   float radius_ = -1.0f;
 };

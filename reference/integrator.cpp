@@ -292,9 +292,10 @@ void Integrator::sampleGroundOcclusion(const Path& p, std::size_t index, int lig
 
 void Integrator::groundOcclusionOfBounce(const Path& p, CameraSample& result) const {
   // The ray left a covered vertex by BRDF sampling (its bucket is still previousBucket), and its
-  // throughput is f cos / pdf already. Blocked, it counts the light it hides; escaped, nothing.
+  // throughput is f cos / pdf already, and it was found blocked (the caller's test): it counts the
+  // light it hides (an escape counts nothing).
   const glm::vec3& w = p.ray.direction;
-  if (!p.hit.hit || w.y <= 0.0f) return;
+  if (w.y <= 0.0f) return;
   const EnvironmentSampler::Lookup seen =
       environmentSampler_.lookupAt(p.previousBucket, environmentSampler_.mapUv(w));
   result.radiance -= p.throughput * seen.radiance * powerHeuristic(p.previousPdf, p.previousLightSamples * seen.pdf);
@@ -488,7 +489,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       p.previousDelta = scattered.delta;
       p.previousLightSamples = samples;
       p.previousBucket = p.bucket;
-      p.previousCovered = p.covered && ground_;
+      p.previousCovered = p.covered;
       // Russian roulette (Arvo and Kirk 1990): continue with probability q, dividing by q.
       if (depth + 1 >= kRussianRouletteDepth) {
         const float q = std::min(0.95f, maxComponent(p.throughput));
