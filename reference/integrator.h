@@ -196,6 +196,11 @@ class Integrator {
   struct ShadowBatch;
   // Whether ground occlusion may take a vertex's direct light: a Lambert BRDF (constant f).
   static bool groundLambert(const SurfacePoint& point);
+  // Whether ground occlusion takes a ground vertex of this material (with its normals up): a Lambert
+  // BRDF, or a diffuse base under a specular layer of GGX alpha at least kGroundControlMinAlpha.
+  static bool groundCoverable(const SurfacePoint& point);
+  // Ground occlusion's constant BRDF a at a ground vertex with a diffuse base (Path::control).
+  static glm::vec3 groundControl(const SurfacePoint& point);
   // Ground occlusion's estimate at p's vertex (p.covered): f E_up into `result`, and the shadow rays
   // of the light samples (p.uLight, or the K splitDraws) that fall in p.occluders into `shadows`,
   // each with minus its MIS-weighted light if blocked.
