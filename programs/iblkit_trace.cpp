@@ -272,8 +272,9 @@ int main(int argc, char** argv) {
   app.add_option("--camera-light-samples", options.cameraLightSamples,
                  "environment light samples at the camera ray's first hit (splitting, 1..64)");
   app.add_option("--ground-occlusion", options.groundOcclusion,
-                 "mis on a horizontal Lambert ground: its exact unoccluded light minus the light the "
-                 "objects hide (on, default), or the plain estimate (off)")
+                 "mis on a horizontal ground (Lambert, or rough under a specular layer): its exact "
+                 "unoccluded light minus the light the objects hide, a control variate where the BRDF "
+                 "depends on the directions (on, default), or the plain estimate (off)")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--noise-split", options.noiseSplit,
                  "render two independent halves (seeds 2s, 2s+1) and write their noise estimate (JSON)");

@@ -31,8 +31,11 @@
 // on a horizontal Lambert ground the direct light is f E_up (exact) minus the light the objects
 // hide, estimated by the light samples (a shadow ray only for those inside the objects' cone) and
 // the BRDF ray where it is blocked, with the plain estimate's MIS weights; the BRDF ray that
-// escapes from such a vertex adds nothing. The vertex's indirect light (the BRDF ray's path) is as
-// before, and so are the random numbers: with it off the image is the same as before, bit for bit.
+// escapes from such a vertex adds nothing. On a rough ground with a specular layer the same split
+// is a control variate: a E_up (a, groundControl: the diffuse base at v.h = 1) plus the estimate of
+// (f V cos - a w_y) L by the same strategies, whose light samples and BRDF rays outside the cone
+// need no ray (they add their unblocked term). The vertex's indirect light (the BRDF ray's path) is
+// as before, and so are the random numbers: with it off the image is the same as before, bit for bit.
 //
 // lights is the biased approximation (environment_point_lights.h): at every non-delta vertex one of
 // the N median-cut point lights, picked by its power, with a shadow ray (next-event estimation,
@@ -99,9 +102,9 @@ struct IntegratorSettings {
   // Light samples at the camera ray's first hit (splitting, above), 1..kMaxSplitLightDraws; path
   // and direct with a light strategy (not brdf).
   int cameraLightSamples = 1;
-  // mis at a horizontal Lambert ground's vertices: the direct light as the exact unoccluded
-  // irradiance minus the part the objects hide (ground_occlusion.h; iblkit-trace
-  // --ground-occlusion). No effect where it does not apply.
+  // mis at a horizontal ground's vertices (Lambert, or rough under a specular layer): the direct
+  // light as the exact unoccluded irradiance minus the part the objects hide (ground_occlusion.h;
+  // iblkit-trace --ground-occlusion). No effect where it does not apply.
   bool groundOcclusion = true;
 };
 
