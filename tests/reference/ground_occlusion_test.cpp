@@ -9,6 +9,7 @@
 #include "core/latlong.h"
 #include "core/procedural_mesh.h"
 #include "reference/test_scenes.h"
+#include "support/generated_textures.h"
 
 namespace iblkit {
 namespace {
@@ -225,6 +226,32 @@ TEST(GroundOcclusion, LowersTheGroundsNoise) {
   const double ratio = groundNoiseRatio(lambert(0.5f));
   std::printf("ground noise, plain / ground occlusion: %.2f\n", ratio);
   EXPECT_GT(ratio, 2.0);
+}
+
+// A textured ground decides per point: a checkerboard of roughness 0.3 (left to the plain estimate)
+// and 1 (the control variate) under a base colour that varies, a and the lobes the hit's own. The
+// same image as the plain estimate, as above: it fails when the rough squares are taken for
+// Lambert (their light outside the cone dropped).
+TEST(GroundOcclusion, ConvergesToThePlainEstimatesImageOnATexturedGround) {
+  Scene scene = slabAboveGround(glossyGround(1.0f));
+  Material& ground = scene.materials[1];
+  ground.metallicRoughnessTexture = test::addTexture(scene, test::generatedImage(8, 8, [](int x, int y) {
+    return glm::u8vec4(0, (x + y) % 2 ? 255 : 77, 0, 255);  // G: roughness 1 or 0.3
+  }));
+  ground.baseColorTexture = test::addTexture(scene, test::generatedImage(8, 8, [](int x, int y) {
+    return glm::u8vec4(80 + 20 * x, 200 - 10 * y, 150, 255);
+  }));
+  Mesh& plane = scene.meshes.back();
+  ASSERT_TRUE(plane.isGround);
+  plane.texcoords.clear();
+  for (const glm::vec3& p : plane.positions) plane.texcoords.push_back(glm::vec2(p.x, p.z) * 0.2f);
+  const EnvironmentMap map = spotEnvironment();
+  IntegratorSettings settings = integratorOf(IntegratorKind::Path);
+  const RenderResult occlusion = renderWith(scene, map, settings, 24, 512, 1);
+  settings.groundOcclusion = false;
+  const RenderResult plain = renderWith(scene, map, settings, 24, 512, 2);
+  EXPECT_NEAR(occlusion.beauty.stats().meanLuminance / plain.beauty.stats().meanLuminance, 1.0, 0.003);
+  EXPECT_LE(pixelsApartBeyond4Sigma(occlusion, plain), 2);
 }
 
 // And on a rough specular ground, where the control variate leaves (f - a) L V cos to the samples:
