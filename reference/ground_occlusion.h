@@ -52,6 +52,9 @@ class GroundOcclusion {
   // E_up (intensity applied).
   const glm::vec3& unoccludedIrradiance() const { return irradianceUp_; }
   float groundHeight() const { return groundHeight_; }
+  // The sphere that holds every vertex of the non-ground meshes; a radius < 0 when there is none.
+  const glm::vec3& objectsCenter() const { return center_; }
+  float objectsRadius() const { return radius_; }
 
   // The directions from `origin` (a shadow ray's origin on the ground) that an object can block: a
   // cone about `axis` with cos(half-angle) `cosRadius`, -1 (every direction) when `origin` is

@@ -83,6 +83,7 @@ Integrator::Integrator(const RenderScene& scene, const EnvironmentMap& environme
   if (settings.groundOcclusion && settings.kind != IntegratorKind::AmbientOcclusion &&
       settings.envSampling == EnvSampling::Mis && !settings.phong)
     ground_ = GroundOcclusion::of(scene.scene(), environment);
+  if (ground_) groundVisibility_ = GroundVisibility(*ground_, scene.rays(), environmentSampler);
   if (settings.envSampling == EnvSampling::MedianCut && !medianCut.sampler)
     throw std::invalid_argument("Integrator: mediancut needs a MedianCutSampler");
   if (settings.envSampling == EnvSampling::Lights && !medianCut.pointLights)
@@ -459,6 +460,13 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
         p.control = p.exact ? evalReflection(&*p.brdf, p.point.baseColor, p.point.shadingNormal, wo,
                                              p.point.shadingNormal)
                             : groundControl(p.point);
+        // The coefficient beta of the control (ground_visibility.h): where the objects hide part of
+        // the light, beta a E_up exact and the rest estimated, f = a no longer cancelling.
+        const float beta = groundVisibility_.at(p.point.position);
+        if (beta < 1.0f) {
+          p.exact = false;
+          p.control *= beta;
+        }
       }
     }
     if (depth == 1) keepDirect();

@@ -57,6 +57,7 @@
 #include "reference/environment_point_lights.h"
 #include "reference/environment_sampler.h"
 #include "reference/ground_occlusion.h"
+#include "reference/ground_visibility.h"
 #include "reference/median_cut_sampler.h"
 #include "reference/pixel_sampler.h"
 #include "reference/ray_recorder.h"
@@ -225,6 +226,7 @@ class Integrator {
   IntegratorSettings settings_;
   MedianCutLighting medianCut_;
   std::optional<GroundOcclusion> ground_;  // when settings_.groundOcclusion applies to the scene
+  GroundVisibility groundVisibility_;      // its coefficient per point (1 everywhere without ground_)
   RayRecorder* recorder_ = nullptr;
 };
 
