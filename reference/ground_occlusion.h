@@ -24,7 +24,8 @@
 // It applies where every ground mesh lies in one horizontal plane, so that no ground triangle can
 // hide another ground point's sky. Where f depends on the directions (a specular layer) the
 // integrator takes the split as a control variate, a E_up plus the estimate of (f V - a) L cos
-// (docs/reference-tracer.md "Ground occlusion"; this class is the same for both). A sample's estimate can be negative (where O's samples exceed
+// (docs/reference-tracer.md "Ground occlusion"; this class is the same for both), and where the
+// objects hide at least half of the light, with a coefficient beta on a E_up (ground_visibility.h). A sample's estimate can be negative (where O's samples exceed
 // E_up, deep in a shadow); the estimator is unbiased, so their mean is not.
 
 #include <glm/glm.hpp>

@@ -34,7 +34,8 @@
 // escapes from such a vertex adds nothing. On a rough ground with a specular layer the same split
 // is a control variate: a E_up (a, groundControl: the diffuse base at v.h = 1) plus the estimate of
 // (f V cos - a w_y) L by the same strategies, whose light samples and BRDF rays outside the cone
-// need no ray (they add their unblocked term). The vertex's indirect light (the BRDF ray's path) is
+// need no ray (they add their unblocked term); where the objects hide at least half of the light a
+// coefficient beta < 1 weighs the control (ground_visibility.h). The vertex's indirect light (the BRDF ray's path) is
 // as before, and so are the random numbers: with it off the image is the same as before, bit for bit.
 //
 // lights is the biased approximation (environment_point_lights.h): at every non-delta vertex one of
