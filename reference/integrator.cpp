@@ -159,8 +159,9 @@ struct Integrator::Path {
   bool covered = false, previousCovered = false;
   GroundOcclusion::Cone occluders;
   // At a covered vertex: `control`, the constant BRDF a of the split f (E_up - O) + (f - a)
-  // (groundControl), and whether it is f itself (exact: a Lambert ground, where the light outside
-  // the occluders' cone adds nothing). For the ray being traced from such a vertex: whether it was
+  // (groundControl), times the point's coefficient beta where it is below 1 (ground_visibility.h),
+  // and whether it is f itself (exact: a Lambert ground with beta 1, where the light outside the
+  // occluders' cone adds nothing). For the ray being traced from such a vertex: whether it was
   // exact, and the throughput the control's term carries, a w_y / pdf (previousControl; f cos / pdf
   // is `throughput`).
   bool exact = false, previousExact = false;
