@@ -38,8 +38,8 @@ class GroundVisibility {
 
   // 1 everywhere.
   GroundVisibility() = default;
-  // The grid for `ground`'s objects, traced in `rays` and sampled from `sampler` (2 threads or what
-  // the caller's task arena has; the result does not depend on it).
+  // The grid for `ground`'s objects, traced in `rays` and sampled from `sampler`, in parallel over
+  // the rows in the caller's task arena (every core by default); the result does not depend on it.
   GroundVisibility(const GroundOcclusion& ground, const RayScene& rays, const EnvironmentSampler& sampler);
 
   // The visible fraction at ground point x (its x and z), in [0, 1].
