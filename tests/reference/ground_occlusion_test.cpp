@@ -254,6 +254,33 @@ TEST(GroundOcclusion, ConvergesToThePlainEstimatesImageOnATexturedGround) {
   EXPECT_LE(pixelsApartBeyond4Sigma(occlusion, plain), 2);
 }
 
+// A normal-mapped ground: shading normals tilted up to about 25 degrees, those within 20 degrees of
+// +Y taken by the control variate (kTiltedUpCosine; the rest left to the plain estimate), a Lambert
+// and a rough specular one. The same image as the plain estimate, as above.
+TEST(GroundOcclusion, ConvergesToThePlainEstimatesImageOnANormalMappedGround) {
+  for (const Material& base : {lambert(0.5f), glossyGround(0.9f)}) {
+    Scene scene = slabAboveGround(base);
+    Material& ground = scene.materials[1];
+    ground.normalTexture = test::addTexture(scene, test::generatedImage(16, 16, [](int x, int y) {
+      const glm::vec3 n = glm::normalize(glm::vec3(0.45f * std::sin(0.8f * float(x)), 0.3f * std::cos(1.1f * float(y)), 1.0f));
+      const glm::vec3 encoded = glm::round((n * 0.5f + 0.5f) * 255.0f);
+      return glm::u8vec4(encoded.x, encoded.y, encoded.z, 255);
+    }), test::nearestSampler(TextureWrap::Repeat));
+    Mesh& plane = scene.meshes.back();
+    plane.texcoords.clear();
+    for (const glm::vec3& p : plane.positions) plane.texcoords.push_back(glm::vec2(p.x, p.z) * 0.5f);
+    plane.tangents.clear();  // RenderScene generates them
+    const EnvironmentMap map = spotEnvironment();
+    IntegratorSettings settings = integratorOf(IntegratorKind::Path);
+    const RenderResult occlusion = renderWith(scene, map, settings, 24, 512, 1);
+    settings.groundOcclusion = false;
+    const RenderResult plain = renderWith(scene, map, settings, 24, 512, 2);
+    EXPECT_NEAR(occlusion.beauty.stats().meanLuminance / plain.beauty.stats().meanLuminance, 1.0, 0.003);
+    EXPECT_LE(pixelsApartBeyond4Sigma(occlusion, plain), 2);
+    EXPECT_NE(occlusion.beauty.pixels(), renderWith(scene, map, settings, 24, 8, 1).beauty.pixels());
+  }
+}
+
 // And on a rough specular ground, where the control variate leaves (f - a) L V cos to the samples:
 // at least 3x lower (5.95 measured). A glossy one (roughness 0.3) is left to the plain estimate
 // (kGroundControlMinAlpha), the same image bit for bit: the control variate doubled its noise.
