@@ -246,8 +246,10 @@ class ExrLevelReader {
 
   // The same for a tiled file, walking its offset table ourselves (OpenEXR's rawTileData crashed on
   // a memory-mapped stream): the table follows the header, one 8-byte offset per tile, level by
-  // level; each tile is tx, ty, level x, level y and a size (4-byte ints) and then its data. An
-  // offset or tile header OpenEXR cannot use is left to it (it reports or rebuilds the table).
+  // level; each tile is tx, ty, level x, level y and a size (4-byte ints) and then its data. A
+  // table too long for the file is left to OpenEXR (it reports it). An offset outside the file, or
+  // a tile header naming no tile of the file, is refused: OpenEXR 3.1 then rebuilds the table by
+  // scanning the tiles and read past a tile's data (a fuzz finding, fuzz/corpus/exr).
   void checkTileSizes(const std::vector<char>& bytes, std::size_t headerEnd) const {
     const Imf::TiledInputFile& in = *tiledFile_;
     std::uint64_t tiles = 0;
@@ -257,13 +259,14 @@ class ExrLevelReader {
     for (std::uint64_t i = 0; i < tiles; ++i) {
       std::uint64_t offset = 0;
       std::memcpy(&offset, bytes.data() + headerEnd + 8 * i, sizeof offset);
-      if (offset < headerEnd || offset > bytes.size() || bytes.size() - offset < 20) continue;
+      if (offset < headerEnd || offset > bytes.size() || bytes.size() - offset < 20)
+        fail(file_, "tile offset " + std::to_string(i) + " points outside the file (corrupt or truncated file?)");
       std::int32_t fields[5] = {};  // tx, ty, lx, ly, size
       std::memcpy(fields, bytes.data() + offset, sizeof fields);
       const auto [tx, ty, lx, ly, size] = fields;
       if (lx != ly || lx < 0 || lx >= levels_ || tx < 0 || tx >= in.numXTiles(lx) || ty < 0 ||
           ty >= in.numYTiles(lx))
-        continue;
+        fail(file_, "tile offset " + std::to_string(i) + " points at no tile of the file (corrupt file?)");
       const std::string what = "tile " + std::to_string(tx) + ", " + std::to_string(ty) + " of level " +
                                std::to_string(lx);
       checkChunkSize(size, uncompressedBytes(in.dataWindowForTile(tx, ty, lx)), what);
