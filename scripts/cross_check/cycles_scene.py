@@ -189,7 +189,7 @@ nt.links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
 nt.links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
 nt.links.new(texture.outputs["Color"], background.inputs["Color"])
 world.cycles.sampling_method = "MANUAL"
-world.cycles.sample_map_resolution = 1024
+world.cycles.sample_map_resolution = max(1024, texture.image.size[0])  # the map's own texels, a small sun too
 
 if normal_pass:
     s.view_layers[0].use_pass_normal = True
