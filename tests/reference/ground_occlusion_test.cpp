@@ -116,16 +116,22 @@ TEST(GroundOcclusion, ConeHoldsTheObjectsFromEveryGroundPoint) {
   EXPECT_FALSE(GroundOcclusion::of(noGround, map).has_value());
 }
 
-// An analytic scene: a grey ground alone under a constant map reflects exactly albedo L, and with
-// ground occlusion the direct light of each sample is that (E_up exact, nothing to hide): every
-// ground pixel at 1 sample within 1e-5. The plain estimate is that only on average.
-TEST(GroundOcclusion, LoneGroundUnderAConstantMapIsExactAtOneSample) {
+// The ground alone (no object), every pixel of a 40-degree camera on it.
+Scene loneGround() {
   Scene scene = groundWithSphere(-1.0f, false);
   scene.bounds = Bounds{};
   scene.bounds.extend(glm::vec3(-1.0f));
   scene.bounds.extend(glm::vec3(1.0f));
   scene.camera = Camera::lookAt(glm::vec3(0.0f, 1.0f, 3.0f), glm::vec3(0.0f, -1.0f, 0.0f),
                                 glm::vec3(0.0f, 1.0f, 0.0f), glm::radians(40.0f), 0.1f, 100.0f);
+  return scene;
+}
+
+// An analytic scene: a grey ground alone under a constant map reflects exactly albedo L, and with
+// ground occlusion the direct light of each sample is that (E_up exact, nothing to hide): every
+// ground pixel at 1 sample within 1e-5. The plain estimate is that only on average.
+TEST(GroundOcclusion, LoneGroundUnderAConstantMapIsExactAtOneSample) {
+  const Scene scene = loneGround();
   const EnvironmentMap map = EnvironmentMap::constant(glm::vec3(1.0f));
   IntegratorSettings settings = integratorOf(IntegratorKind::Direct);
   const RenderResult occlusion = renderWith(scene, map, settings, 12, 1);
@@ -166,12 +172,7 @@ EnvironmentMap largeMapWithASmallSun() {
 // error of the size of Blender Cycles' here: docs/reference-tracer.md "Against another path
 // tracer", where our far ground under such a map was within 0.1% of this value and Cycles' 17% above).
 TEST(GroundOcclusion, LoneGroundUnderALargeMapWithASmallSunConvergesToItsIrradiance) {
-  Scene scene = groundWithSphere(-1.0f, false);
-  scene.bounds = Bounds{};
-  scene.bounds.extend(glm::vec3(-1.0f));
-  scene.bounds.extend(glm::vec3(1.0f));
-  scene.camera = Camera::lookAt(glm::vec3(0.0f, 1.0f, 3.0f), glm::vec3(0.0f, -1.0f, 0.0f),
-                                glm::vec3(0.0f, 1.0f, 0.0f), glm::radians(40.0f), 0.1f, 100.0f);
+  const Scene scene = loneGround();
   const EnvironmentMap map = largeMapWithASmallSun();
   const glm::vec3 expected = 0.5f / std::numbers::pi_v<float> * upperHemisphereIrradiance(map);
   IntegratorSettings settings = integratorOf(IntegratorKind::Direct);
