@@ -87,8 +87,10 @@ JSON
   r="$out/renders/$name"
   extra=()
   for seed in 1 2; do
+    layers=()  # the regions' layers and the normal, from the first render only
+    [ "$seed" = 1 ] && layers=(--mask "${r}_mask.exr" --depth "${r}_depth.exr" --normal "${r}_iblkit_normal.exr")
     "$trace" "$scene" --spp "$half" --seed "$seed" --max-depth 64 --texture-footprint 0 -o "${r}_iblkit_$seed.exr" \
-      --mask "${r}_mask.exr" --depth "${r}_depth.exr" --normal "${r}_iblkit_normal.exr" >/dev/null
+      "${layers[@]}" >/dev/null
     run_blender "$here/cycles_scene.py" -- "$scene" "${r}_cycles_$seed.exr" "$half" "$seed"
   done
   if [[ $name == normalmap* ]]; then

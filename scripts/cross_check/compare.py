@@ -23,11 +23,11 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from blender_io import arguments, load_rgb  # noqa: E402
+from environment import LUMINANCE as luminance, upward_irradiance  # noqa: E402
 
 args = arguments()
 name = args[0]
 ib_a, ib_b, cy_a, cy_b, mask, depth, environment = (load_rgb(p) for p in args[1:8])
-luminance = np.array([0.2126, 0.7152, 0.0722])
 objects = mask[..., 0] > 0.999
 sky = ~np.isfinite(depth[..., 0]) | (depth[..., 0] <= 0) | (depth[..., 0] > 1e20)
 ground = ~objects & ~sky
@@ -56,11 +56,7 @@ for region, where in regions.items():
     error = np.sqrt(vi + vc)
     result[region] = {"pixels": n, "iblkit": mi, "cycles": mc, "ratio": mc / mi,
                       "z": float((mc - mi) / error) if error > 0 else 0.0}
-rows = np.arange(environment.shape[0])
-height, width = environment.shape[:2]
-omega = (2 * np.pi / width) * (np.sin(np.pi * (0.5 - rows / height)) - np.sin(np.pi * (0.5 - (rows + 1) / height)))
-cosine = np.maximum(np.sin(np.pi * (0.5 - (rows + 0.5) / height)), 0)
-analytic = 0.8 / np.pi * float(((environment @ luminance) * (omega * cosine)[:, None]).sum())
+analytic = 0.8 / np.pi * upward_irradiance(environment)
 far = ground & inner & (depth[..., 0] > 9.5)
 if far.any():
     result["far ground / analytic"] = {

@@ -18,6 +18,7 @@ glossy, adaptive sampling, denoising, the shadow terminator offsets; every bounc
 --max-depth 64); the pixel filter a 1-pixel box (iblkit's default). `normal` writes Cycles'
 normal pass instead of the image.
 """
+import json
 import math
 import os
 import sys
@@ -35,8 +36,6 @@ from blender_io import arguments  # noqa: E402
 args = arguments()
 scene_path, out_path, spp, seed = args[0], args[1], int(args[2]), int(args[3])
 normal_pass = len(args) > 4 and args[4] == "normal"
-import json  # noqa: E402
-
 J = json.load(open(scene_path))
 base = os.path.dirname(os.path.abspath(scene_path))
 

@@ -18,9 +18,9 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from blender_io import arguments, load_rgb  # noqa: E402
+from environment import LUMINANCE, upward_irradiance  # noqa: E402
 from make_sphere_glb import base_colour_bytes  # noqa: E402
 
-LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
 rng = np.random.default_rng(1)
 
 
@@ -56,14 +56,6 @@ def bilinear_means(texels, n=2000000):
         return ((1 - fx) * (1 - fy) * at(img, y0, x0) + fx * (1 - fy) * at(img, y0, x0 + 1)
                 + (1 - fx) * fy * at(img, y0 + 1, x0) + fx * fy * at(img, y0 + 1, x0 + 1))
     return lookup(srgb_decode(texels)).mean(0) @ LUMINANCE, srgb_decode(lookup(texels)).mean(0) @ LUMINANCE
-
-
-def upward_irradiance(rgb):
-    height, width, _ = rgb.shape
-    rows = np.arange(height)
-    omega = (2 * math.pi / width) * (np.sin(math.pi * (0.5 - rows / height)) - np.sin(math.pi * (0.5 - (rows + 1) / height)))
-    cosine = np.maximum(np.sin(math.pi * (0.5 - (rows + 0.5) / height)), 0)
-    return float(((rgb @ LUMINANCE) * (omega * cosine)[:, None]).sum())
 
 
 args = arguments()
