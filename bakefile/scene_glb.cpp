@@ -93,8 +93,9 @@ json primitive(const Mesh& mesh, std::size_t index, std::size_t materialCount, B
     fail(file, what + ": material " + std::to_string(mesh.material) + " does not exist");
   if (mesh.normals.size() != vertices || (!mesh.texcoords.empty() && mesh.texcoords.size() != vertices) ||
       (!mesh.texcoords1.empty() && mesh.texcoords1.size() != vertices) ||
-      (!mesh.tangents.empty() && mesh.tangents.size() != vertices))
-    fail(file, what + ": normals, texture coordinates or tangents do not match the " + std::to_string(vertices) +
+      (!mesh.tangents.empty() && mesh.tangents.size() != vertices) ||
+      (!mesh.colors.empty() && mesh.colors.size() != vertices))
+    fail(file, what + ": normals, texture coordinates, tangents or colours do not match the " + std::to_string(vertices) +
                    " vertices");
   for (const std::uint32_t i : mesh.indices)
     if (i >= vertices) fail(file, what + ": index " + std::to_string(i) + " is out of range");
@@ -117,6 +118,11 @@ json primitive(const Mesh& mesh, std::size_t index, std::size_t materialCount, B
   if (!mesh.tangents.empty()) {
     requireFinite(file, &mesh.tangents.front().x, 4 * vertices, what + " TANGENT");
     attributes["TANGENT"] = buffer.addAccessor(mesh.tangents.data(), vertices, 4, kFloat, kArrayBuffer);
+  }
+  // COLOR_0 as VEC4 float, linear (glTF 2.0 section 3.7.2.1), as Mesh::colors holds it.
+  if (!mesh.colors.empty()) {
+    requireFinite(file, &mesh.colors.front().x, 4 * vertices, what + " COLOR_0");
+    attributes["COLOR_0"] = buffer.addAccessor(mesh.colors.data(), vertices, 4, kFloat, kArrayBuffer);
   }
   for (const auto& [name, attribute] : mesh.attributes) {
     const std::string where = what + " attribute " + name;

@@ -447,6 +447,10 @@ class Loader {
     for (const auto& [semantic, accessor] : primitive.attributes) {
       const bool custom = semantic.size() > 1 && semantic[0] == '_';
       const bool texcoord = semantic == "TEXCOORD_0" || semantic == "TEXCOORD_1";
+      if (semantic == "COLOR_0") {
+        mesh.colors = readColors(accessor, vertexCount, where);
+        continue;
+      }
       if (semantic != "NORMAL" && semantic != "TANGENT" && !texcoord && !custom) continue;
       int components = semantic == "NORMAL" ? 3 : semantic == "TANGENT" ? 4 : texcoord ? 2 : 0;
       if (custom) {
@@ -489,6 +493,38 @@ class Loader {
     mesh.indices = triangleList(std::move(vertices), primitive.mode, where, file_);
     mesh.material = materialIndex(primitive.material, where);
     return mesh;
+  }
+
+  // COLOR_0 (glTF 2.0 section 3.7.2.1): VEC3 or VEC4 of floats, normalised unsigned bytes or
+  // normalised unsigned shorts, linear; VEC3 reads alpha 1. Values outside [0, 1] (floats only can
+  // be) are clamped with a warning; NaN or infinite values are an error.
+  std::vector<glm::vec4> readColors(int accessor, std::size_t vertexCount, const std::string& where) const {
+    const std::string what = where + ": COLOR_0";
+    if (accessor < 0 || std::size_t(accessor) >= model_.accessors.size())
+      fail(file_, what + ": accessor " + std::to_string(accessor) + " does not exist");
+    const tinygltf::Accessor& info = model_.accessors[std::size_t(accessor)];
+    const int components = gltf::componentCount(info.type);
+    if (components != 3 && components != 4) fail(file_, what + " must be VEC3 or VEC4");
+    const bool integer = info.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                         info.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    if (info.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !(integer && info.normalized))
+      fail(file_, what + " must be float, normalized unsigned byte or normalized unsigned short");
+    const std::vector<float> values = gltf::readFloats(model_, accessor, components, "COLOR_0", file_);
+    if (values.size() != vertexCount * std::size_t(components))
+      fail(file_, what + " has " + std::to_string(values.size() / std::size_t(components)) +
+                      " elements but POSITION has " + std::to_string(vertexCount));
+    requireFinite(values, what + ": non-finite value", file_);
+    std::vector<glm::vec4> colors(vertexCount, glm::vec4(1.0f));
+    std::size_t clamped = 0;
+    for (std::size_t i = 0; i < vertexCount; ++i)
+      for (int c = 0; c < components; ++c) {
+        const float v = values[i * std::size_t(components) + std::size_t(c)];
+        clamped += v < 0.0f || v > 1.0f;
+        colors[i][c] = std::clamp(v, 0.0f, 1.0f);
+      }
+    if (clamped > 0)
+      warn(file_, what + " has " + std::to_string(clamped) + " components outside [0, 1]; clamped");
+    return colors;
   }
 
   // TANGENT (glTF 2.0 section 3.7.2.1): xyz a unit vector, w +1 or -1 the handedness. w is

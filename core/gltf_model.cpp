@@ -246,12 +246,30 @@ int componentSize(int componentType) {
 }
 
 // The bytes of an accessor after checking every index and range: element i starts at
-// data + i * stride.
+// data + i * stride. A sparse accessor's elements are gathered into `dense` (data points there).
 struct AccessorBytes {
   const unsigned char* data = nullptr;
   std::size_t stride = 0;
   std::size_t count = 0;
+  std::vector<unsigned char> dense;
 };
+
+// The most bytes a sparse accessor may expand to (its base is zeros when it has no buffer view, so
+// its count is not bounded by any buffer): 256 MiB, 22 million VEC3 floats.
+constexpr std::size_t kMaxSparseAccessorBytes = std::size_t(256) << 20;
+
+// `count` elements of `elementSize` bytes at byteOffset of buffer view `index`, tightly packed
+// (sparse indices and values, glTF 2.0 section 3.6.2.3), checked to fit.
+std::span<const unsigned char> packedRange(const tinygltf::Model& model, int index, std::size_t byteOffset,
+                                           std::size_t count, std::size_t elementSize, const std::string& what,
+                                           const fs::path& file) {
+  if (index < 0 || std::size_t(index) >= model.bufferViews.size())
+    fail(file, what + ": buffer view " + std::to_string(index) + " does not exist");
+  const std::span<const unsigned char> view = bufferViewBytes(model, index, file);
+  if (byteOffset > view.size() || count > view.size() || count * elementSize > view.size() - byteOffset)
+    fail(file, what + " reads past the end of buffer view " + std::to_string(index));
+  return view.subspan(byteOffset, count * elementSize);
+}
 
 AccessorBytes locate(const tinygltf::Model& model, int index, int components, const std::string& semantic,
                      const fs::path& file) {
@@ -264,24 +282,70 @@ AccessorBytes locate(const tinygltf::Model& model, int index, int components, co
   const int size = componentSize(accessor.componentType);
   if (size == 0)
     fail(file, name + " has unsupported component type " + std::to_string(accessor.componentType));
-  if (accessor.sparse.isSparse) fail(file, name + " is sparse; sparse accessors are not supported");
-  if (accessor.bufferView < 0) fail(file, name + " has no buffer view");
-  const std::span<const unsigned char> view = bufferViewBytes(model, accessor.bufferView, file);
-  const std::string viewName = "buffer view " + std::to_string(accessor.bufferView);
-
   const std::size_t elementSize = std::size_t(size) * std::size_t(components);
-  const std::size_t byteStride = model.bufferViews[accessor.bufferView].byteStride;
-  const std::size_t stride = byteStride ? byteStride : elementSize;
-  if (stride < elementSize)
-    fail(file, viewName + " has byteStride " + std::to_string(stride) + ", less than the " +
-                   std::to_string(elementSize) + "-byte elements of " + name);
-  // Each element needs at least one byte, so count > view.size() is already out of range and the
-  // product below cannot overflow.
   const std::size_t count = accessor.count;
-  const bool fits = count == 0 || (accessor.byteOffset <= view.size() && count <= view.size() &&
-                                   (count - 1) * stride + elementSize <= view.size() - accessor.byteOffset);
-  if (!fits) fail(file, name + " reads past the end of " + viewName);
-  return AccessorBytes{view.data() + accessor.byteOffset, stride, count};
+  AccessorBytes bytes;
+  if (accessor.bufferView < 0) {
+    if (!accessor.sparse.isSparse) fail(file, name + " has no buffer view");
+  } else {
+    const std::span<const unsigned char> view = bufferViewBytes(model, accessor.bufferView, file);
+    const std::string viewName = "buffer view " + std::to_string(accessor.bufferView);
+    const std::size_t byteStride = model.bufferViews[accessor.bufferView].byteStride;
+    const std::size_t stride = byteStride ? byteStride : elementSize;
+    if (stride < elementSize)
+      fail(file, viewName + " has byteStride " + std::to_string(stride) + ", less than the " +
+                     std::to_string(elementSize) + "-byte elements of " + name);
+    // Each element needs at least one byte, so count > view.size() is already out of range and the
+    // product below cannot overflow.
+    const bool fits = count == 0 || (accessor.byteOffset <= view.size() && count <= view.size() &&
+                                     (count - 1) * stride + elementSize <= view.size() - accessor.byteOffset);
+    if (!fits) fail(file, name + " reads past the end of " + viewName);
+    bytes = AccessorBytes{view.data() + accessor.byteOffset, stride, count, {}};
+  }
+  if (!accessor.sparse.isSparse) return bytes;
+
+  // Sparse (glTF 2.0 section 3.6.2.3): the base (zeros without a buffer view) with sparse.count
+  // elements replaced, at strictly increasing indices below count.
+  if (count > kMaxSparseAccessorBytes / elementSize)
+    fail(file, name + " is sparse with " + std::to_string(count) + " elements, beyond the limit of " +
+                   std::to_string(kMaxSparseAccessorBytes >> 20) + " MiB");
+  std::vector<unsigned char> dense(count * elementSize, 0);
+  for (std::size_t i = 0; i < bytes.count; ++i)
+    std::memcpy(dense.data() + i * elementSize, bytes.data + i * bytes.stride, elementSize);
+  const auto& sparse = accessor.sparse;
+  if (sparse.count < 1 || std::size_t(sparse.count) > count)
+    fail(file, name + ": sparse count " + std::to_string(sparse.count) + " is not in 1.." + std::to_string(count));
+  const int indexType = sparse.indices.componentType;
+  const std::size_t indexSize = indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                                : indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                                : indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                                      : 0;
+  if (indexSize == 0) fail(file, name + ": sparse indices must be unsigned byte, short or int");
+  if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
+    fail(file, name + ": sparse byteOffset must be >= 0");
+  const std::size_t replaced = std::size_t(sparse.count);
+  const std::span<const unsigned char> indices =
+      packedRange(model, sparse.indices.bufferView, std::size_t(sparse.indices.byteOffset), replaced, indexSize,
+                  name + " sparse indices", file);
+  const std::span<const unsigned char> values =
+      packedRange(model, sparse.values.bufferView, std::size_t(sparse.values.byteOffset), replaced, elementSize,
+                  name + " sparse values", file);
+  std::size_t previous = 0;
+  for (std::size_t i = 0; i < replaced; ++i) {
+    std::uint32_t target = 0;
+    std::memcpy(&target, indices.data() + i * indexSize, indexSize);  // little-endian, as glTF
+    if (target >= count)
+      fail(file, name + ": sparse index " + std::to_string(target) + " out of range (" + std::to_string(count) +
+                     " elements)");
+    if (i > 0 && target <= previous) fail(file, name + ": sparse indices do not strictly increase");
+    previous = target;
+    std::memcpy(dense.data() + std::size_t(target) * elementSize, values.data() + i * elementSize, elementSize);
+  }
+  bytes.dense = std::move(dense);
+  bytes.data = bytes.dense.data();
+  bytes.stride = elementSize;
+  bytes.count = count;
+  return bytes;
 }
 
 template <typename T>

@@ -44,7 +44,10 @@ int componentCount(int accessorType);
 // Reads accessor `accessor` (named `semantic` in errors, e.g. "POSITION") as floats, converting
 // the integer component types allowed by KHR_mesh_quantization (normalised per glTF 2.0 section
 // 3.11, or plain integer values). `components` is the required element size (1..4). Honours
-// byteStride; rejects missing buffer views, sparse accessors and out-of-range reads.
+// byteStride and sparse accessors (glTF 2.0 section 3.6.2.3: the base view, or zeros without one,
+// with the sparse elements replaced; indices must strictly increase and stay below count, and the
+// expanded accessor within 256 MiB); rejects a missing buffer view on a dense accessor and
+// out-of-range reads.
 std::vector<float> readFloats(const tinygltf::Model& model, int accessor, int components,
                               const std::string& semantic, const std::filesystem::path& file);
 

@@ -25,8 +25,8 @@ bool hasSpecularLayer(const Material& material) {
   return f.specular > 0.0f || f.metallic > 0.0f;
 }
 
-AlphaMode drawnAlphaMode(const Material& material, bool baseColorTextureRead) {
-  if (material.alphaMode == AlphaMode::Opaque || baseColorTextureRead) return material.alphaMode;
+AlphaMode drawnAlphaMode(const Material& material, bool alphaVaries) {
+  if (material.alphaMode == AlphaMode::Opaque || alphaVaries) return material.alphaMode;
   // BLEND keeps a point with probability alpha (u < alpha, u in [0, 1)); MASK where alpha >= cutoff.
   const float alpha = std::clamp(material.alpha, 0.0f, 1.0f);
   const bool alwaysPresent = material.alphaMode == AlphaMode::Blend ? alpha >= 1.0f : alpha >= material.alphaCutoff;

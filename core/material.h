@@ -60,10 +60,10 @@ GltfRangeFactors clampedFactors(const Material& material);
 
 // The alpha mode that draws `material` exactly as its own does with the fewest tests: OPAQUE where
 // its alpha cannot take a point away (BLEND with baseColorFactor.a >= 1, MASK with it >= the
-// cutoff), when no base colour texture is read (`baseColorTextureRead` false: its alpha would
-// multiply the factor); its own mode otherwise. Exporters often mark opaque materials BLEND; the
+// cutoff), when no base colour texture is read and no vertex colour's alpha is below 1
+// (`alphaVaries` false: either would multiply the factor); its own mode otherwise. Exporters often mark opaque materials BLEND; the
 // engine draws them as opaque meshes, which keep the early depth test and the shadow mask.
-AlphaMode drawnAlphaMode(const Material& material, bool baseColorTextureRead);
+AlphaMode drawnAlphaMode(const Material& material, bool alphaVaries);
 
 // Whether `material` has a specular layer: false when its specular and metallic factors are 0
 // (after clampedToGltfRanges), so that f0 = f90 = 0 whatever its textures (metallicRoughness

@@ -33,6 +33,12 @@ Bounds Mesh::bounds() const {
   return b;
 }
 
+bool Mesh::hasVertexAlpha() const {
+  for (const glm::vec4& c : colors)
+    if (c.a < 1.0f) return true;
+  return false;
+}
+
 std::vector<glm::vec3> angleWeightedNormals(std::span<const glm::vec3> positions,
                                             std::span<const std::uint32_t> indices) {
   std::vector<glm::vec3> sums(positions.size(), glm::vec3(0.0f));

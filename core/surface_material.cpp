@@ -82,6 +82,9 @@ SurfaceMaterial PreparedSurfaceMaterial::evaluate(const SurfaceInputs& inputs) c
     out.baseColor *= glm::vec3(values[base_]);
     out.alpha *= values[base_].a;
   }
+  // Section 3.9.2: COLOR_0, when present, multiplies the base colour (and its alpha) too.
+  out.baseColor *= glm::vec3(inputs.vertexColor);
+  out.alpha *= inputs.vertexColor.a;
   // Section 3.9.2: roughness in G, metallic in B.
   if (metallicRoughness_ >= 0) {
     out.roughness *= values[metallicRoughness_].g;
@@ -105,8 +108,8 @@ float surfaceAlpha(const Material& material, const SceneTextures& textures, cons
   const int base =
       slots.add(material.baseColorTexture, kSlotBaseColor, ColorSpace::Srgb, SceneTextures::kAlpha, inputs.slots);
   textures.sampleSlots(slots.lookups, slots.count, inputs.texcoords, inputs.footprintUv);
-  if (base >= 0 && slots.lookups[base].found) return material.alpha * slots.lookups[base].value.a;
-  return material.alpha;
+  if (base >= 0 && slots.lookups[base].found) return material.alpha * slots.lookups[base].value.a * inputs.vertexColor.a;
+  return material.alpha * inputs.vertexColor.a;
 }
 
 bool surfacePresent(const Material& material, float alpha, float u) {

@@ -24,12 +24,16 @@ struct SurfaceInputs {
   // Footprint width in uv units of each texCoord set (0: sharpest level), texture_sampling.h.
   float footprintUv[2]{0.0f, 0.0f};
   unsigned slots = kAllTextureSlots;  // slots switched on (TextureSlot bits)
+  // The interpolated vertex colour (Mesh::colors, glTF COLOR_0; 1 when the mesh has none). It
+  // multiplies the base colour and its alpha whatever the slots: it is not a texture.
+  glm::vec4 vertexColor{1.0f};
 };
 
 struct SurfaceMaterial {
-  // The factors with the textures applied (glTF 2.0 section 3.9): baseColor = factor * texture.rgb,
+  // The factors with the textures applied (glTF 2.0 section 3.9): baseColor = factor * texture.rgb
+  // * vertex colour.rgb (section 3.9.2: COLOR_0 multiplies the base colour),
   // metallic = factor * texture.b, roughness = factor * texture.g, emissive = factor *
-  // texture.rgb, alpha = factor * texture.a; specular and specularColor are the material's
+  // texture.rgb, alpha = factor * texture.a * vertex colour.a; specular and specularColor are the material's
   // (KHR_materials_specular's textures are not read). Ready for brdfLobes(SurfaceMaterial).
   glm::vec3 baseColor{1.0f};
   float metallic = 1.0f;
@@ -73,7 +77,8 @@ inline BrdfLobes brdfLobes(const SurfaceMaterial& surface) {
                                                         surface.specular, surface.specularColor}));
 }
 
-// The base colour alpha only (factor times texture alpha), for alpha tests in ray filters.
+// The base colour alpha only (factor times texture alpha times the vertex colour's), for alpha
+// tests in ray filters.
 float surfaceAlpha(const Material& material, const SceneTextures& textures, const SurfaceInputs& inputs);
 
 // Whether a point of `material` with alpha `alpha` is there: OPAQUE always, MASK alpha >= cutoff,

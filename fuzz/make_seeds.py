@@ -229,6 +229,48 @@ def textured_glb():
 
 put("gltf", "seed_textured.glb", textured_glb())
 
+
+def coloured_glb():
+    """The triangle with COLOR_0 as normalised unsigned bytes (VEC4, alpha below 1 on one corner)
+    and a BLEND material, so that the fuzzer reaches the vertex colours' reader."""
+    doc, buffer = triangle_gltf(embed=False)
+    colours = struct.pack("<12B", 255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 255)
+    doc["bufferViews"].append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(colours)})
+    buffer += colours
+    doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5121,
+                             "normalized": True, "count": 3, "type": "VEC4"})
+    doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = len(doc["accessors"]) - 1
+    doc["materials"][0]["alphaMode"] = "BLEND"
+    doc["buffers"][0]["byteLength"] = len(buffer)
+    return glb(doc, buffer)
+
+
+put("gltf", "seed_colors.glb", coloured_glb())
+
+
+def sparse_glb():
+    """The triangle with a sparse POSITION (vertex 1 moved) and a sparse custom attribute without a
+    buffer view (zeros, two elements replaced), so that the fuzzer reaches the sparse reader."""
+    doc, buffer = triangle_gltf(embed=False)
+    def view(data):
+        nonlocal buffer
+        buffer += b"\0" * (-len(buffer) % 4)
+        doc["bufferViews"].append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data)})
+        buffer += data
+        return len(doc["bufferViews"]) - 1
+    doc["accessors"][0]["sparse"] = {"count": 1, "indices": {"bufferView": view(struct.pack("<H", 1)), "componentType": 5123},
+                                     "values": {"bufferView": view(struct.pack("<3f", 2, 0, 0))}}
+    doc["accessors"][0]["max"] = [2, 1, 0]
+    doc["accessors"].append({"componentType": 5126, "count": 3, "type": "SCALAR",
+                             "sparse": {"count": 2, "indices": {"bufferView": view(bytes([0, 2])), "componentType": 5121},
+                                        "values": {"bufferView": view(struct.pack("<2f", 0.25, 0.75))}}})
+    doc["meshes"][0]["primitives"][0]["attributes"]["_W"] = len(doc["accessors"]) - 1
+    doc["buffers"][0]["byteLength"] = len(buffer)
+    return glb(doc, buffer)
+
+
+put("gltf", "seed_sparse.glb", sparse_glb())
+
 # --- scene .json (fuzz_loaders.cpp puts model.gltf and env.hdr beside the scene) ---------------
 put("scene", "seed_textured.json", json.dumps({
     "models": [{"file": "model.gltf", "material": {

@@ -160,8 +160,9 @@ json describeTextures(const iblkit::Scene& scene) {
 
 json describeScene(const std::filesystem::path& file) {
   const iblkit::Scene scene = iblkit::loadScene(file);
-  std::size_t vertices = 0, triangles = 0, groundMeshes = 0;
+  std::size_t vertices = 0, triangles = 0, groundMeshes = 0, colouredMeshes = 0;
   for (const iblkit::Mesh& mesh : scene.meshes) {
+    colouredMeshes += mesh.colors.empty() ? 0 : 1;
     vertices += mesh.vertexCount();
     triangles += mesh.triangleCount();
     groundMeshes += mesh.isGround ? 1 : 0;
@@ -181,6 +182,7 @@ json describeScene(const std::filesystem::path& file) {
           {"textures", describeTextures(scene)},
           {"images", scene.images.size()},
           {"customAttributes", attributes},
+          {"vertexColorMeshes", colouredMeshes},
           {"boundsMin", vec3Json(scene.bounds.min)},
           {"boundsMax", vec3Json(scene.bounds.max)},
           {"camera", scene.camera ? "scene" : "framed"},
@@ -284,6 +286,8 @@ void printText(const json& d) {
                 d["environment"].get<std::string>().c_str(), d["environmentRotation"].get<float>(),
                 d["environmentIntensity"].get<float>());
   if (!d["customAttributes"].empty()) std::printf("  attributes %s\n", d["customAttributes"].dump().c_str());
+  if (d["vertexColorMeshes"].get<std::size_t>() > 0)
+    std::printf("  vertex colours (COLOR_0) on %zu mesh(es)\n", d["vertexColorMeshes"].get<std::size_t>());
   for (const json& t : d["textures"]) {
     std::string slots;
     for (const json& slot : t["slots"]) slots += (slots.empty() ? "" : ", ") + slot.get<std::string>();

@@ -99,7 +99,9 @@ AlphaFilter::AlphaFilter(std::vector<const Mesh*> geometryMeshes, const std::vec
     geometry.alphaFromTexture =
         (slots & kSlotBaseColor) && base.present() && baseChain != nullptr && !baseChain->alphaAllOne;
     // A constant alpha decides once for the whole geometry: present everywhere needs no test.
-    bool partial = geometry.alphaFromTexture;
+    geometry.alphaFromVertices = geometry.mesh->colors.size() == geometry.mesh->positions.size() &&
+                                 geometry.mesh->hasVertexAlpha();
+    bool partial = geometry.alphaFromTexture || geometry.alphaFromVertices;
     if (material.alphaMode == AlphaMode::Mask) partial = partial || !(material.alpha >= material.alphaCutoff);
     if (material.alphaMode == AlphaMode::Blend) partial = partial || material.alpha < 1.0f;
     if (material.alphaMode != AlphaMode::Opaque && partial) geometry.needs |= kAlphaTest;
@@ -125,16 +127,19 @@ bool AlphaFilter::accept(unsigned geometry, unsigned primitive, glm::vec2 baryce
 
   const Material& material = g.material;
   float alpha = material.alpha;
+  const Mesh& mesh = *g.mesh;
+  const std::uint32_t* corner = &mesh.indices[3 * std::size_t(primitive)];
+  // The vertex colour's alpha multiplies the base colour's (surfaceAlpha, in the same order).
+  const float vertexAlpha = g.alphaFromVertices ? interpolateAtHit(mesh.colors, corner, barycentrics).a : 1.0f;
+  if (!g.alphaFromTexture) alpha *= vertexAlpha;
   if (g.alphaFromTexture) {
-    const Mesh& mesh = *g.mesh;
     const TextureRef& ref = material.baseColorTexture;
     const std::vector<glm::vec2>& uvs = ref.texCoord == 1 ? mesh.texcoords1 : mesh.texcoords;
     SurfaceInputs inputs;
     inputs.slots = slots_;
-    if (uvs.size() == mesh.positions.size()) {
-      const std::uint32_t* corner = &mesh.indices[3 * std::size_t(primitive)];
+    inputs.vertexColor.a = vertexAlpha;
+    if (uvs.size() == mesh.positions.size())
       inputs.texcoords[ref.texCoord == 1 ? 1 : 0] = interpolateAtHit(uvs, corner, barycentrics);
-    }
     const float width = query.cone.widthAt(t * glm::length(direction));
     if (query.cone.pixel.present()) {
       const float length = glm::length(direction);

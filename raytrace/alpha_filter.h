@@ -138,6 +138,7 @@ class AlphaFilter {
     Material material;
     unsigned needs = kNoTest;
     bool alphaFromTexture = false;
+    bool alphaFromVertices = false;  // its vertex colours' alpha is below 1 somewhere (Mesh::hasVertexAlpha)
   };
   std::vector<Geometry> geometries_;
   std::shared_ptr<const SceneTextures> textures_;

@@ -48,13 +48,24 @@ RenderScene::RenderScene(Scene scene, unsigned textureSlots) : scene_(std::move(
   for (unsigned g = 0; g < filter->geometryCount(); ++g) anyTest = anyTest || filter->needs(g) != 0;
   if (anyTest) rays_.setAlphaFilter(std::move(filter));
   rays_.commit();
+  // Vertex colours vary the material over a mesh like a texture does: such meshes are evaluated per
+  // hit too, with their material prepared whether or not it reads a texture.
+  colored_.resize(scene_.meshes.size());
+  std::vector<bool> materialColored(scene_.materials.size(), false);
+  for (unsigned i = 0; i < scene_.meshes.size(); ++i) {
+    const Mesh& mesh = scene_.meshes[i];
+    colored_[i] = !mesh.colors.empty() && mesh.colors.size() == mesh.positions.size();
+    if (colored_[i]) materialColored[static_cast<std::size_t>(mesh.material)] = true;
+  }
   lobes_.reserve(scene_.materials.size());
-  for (const Material& material : scene_.materials) {
+  for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
+    const Material& material = scene_.materials[m];
     lobes_.push_back(brdfLobes(material));
     textured_.push_back(shadesWithTextures(material, slots_));
     // Occlusion is not applied: no need to read it.
-    prepared_.push_back(textured_.back() ? PreparedSurfaceMaterial(material, *textures_, slots_ & ~unsigned(kSlotOcclusion))
-                                         : PreparedSurfaceMaterial());
+    prepared_.push_back(textured_.back() || materialColored[m]
+                            ? PreparedSurfaceMaterial(material, *textures_, slots_ & ~unsigned(kSlotOcclusion))
+                            : PreparedSurfaceMaterial());
   }
   uvPerWorldLength_.resize(scene_.meshes.size());
   uvGradients_.resize(scene_.meshes.size());
@@ -92,7 +103,8 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
   point.material = &material;
   point.isGround = mesh.isGround;
 
-  if (!textured_[materialIndex]) {
+  const unsigned meshIndex = meshOfGeometry_[hit.geomId];
+  if (!textured_[materialIndex] && !colored_[meshIndex]) {
     point.baseColor = material.baseColor;
     point.emissive = material.emissive;
     point.lobes = lobes_[materialIndex];
@@ -116,16 +128,19 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
         inputs.tangent = glm::vec4(tangent, mesh.tangents[corner[0]].w < 0.0f ? -1.0f : 1.0f);
       }
     }
-    const float width = cone.widthAt(hit.t);
-    if (cone.pixel.present()) {
-      const auto& gradients = uvGradients_[meshOfGeometry_[hit.geomId]];
+    if (colored_[meshIndex]) inputs.vertexColor = interpolateAtHit(mesh.colors, corner, hit.barycentrics);
+    const float width = textured_[materialIndex] ? cone.widthAt(hit.t) : 0.0f;
+    if (!textured_[materialIndex]) {
+      // No texture to filter: no footprint.
+    } else if (cone.pixel.present()) {
+      const auto& gradients = uvGradients_[meshIndex];
       for (int set = 0; set < 2; ++set)
         if (!gradients[set].empty())
           inputs.footprintUv[set] = textureFootprintFromDifferentials(cone.pixel, -wo, hit.t, hit.geometricNormal,
                                                                       gradients[set][hit.primId]);
     } else if (width > 0.0f) {
       const float cosine = glm::dot(wo, point.geometricNormal);
-      const glm::vec2 lengths = uvPerWorldLength_[meshOfGeometry_[hit.geomId]][hit.primId];
+      const glm::vec2 lengths = uvPerWorldLength_[meshIndex][hit.primId];
       for (int set = 0; set < 2; ++set)
         inputs.footprintUv[set] = textureFootprintFromLength(width, lengths[set], cosine);
     }

@@ -70,7 +70,9 @@ class RenderScene {
   std::vector<unsigned> meshOfGeometry_;  // Embree geometry id -> index into scene_.meshes
   std::vector<BrdfLobes> lobes_;          // per material
   std::vector<bool> textured_;            // per material: a shading slot (not occlusion) reads a texture
-  // Per material (textured ones only): its slots prepared against textures_ for surfacePoint.
+  std::vector<bool> colored_;             // per mesh: it has vertex colours (Mesh::colors)
+  // Per material (textured ones, and those of meshes with vertex colours): its slots prepared
+  // against textures_ for surfacePoint.
   std::vector<PreparedSurfaceMaterial> prepared_;
   // Per mesh (empty for meshes whose material reads no texture), per triangle:
   // sqrt(uvPerWorldArea) of uv sets 0 and 1, the ray-cone footprint's per-triangle part

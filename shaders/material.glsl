@@ -25,6 +25,7 @@ struct SurfaceInputs {
   vec3 normal;        // unit, turned to the side being shaded
   vec4 tangent;       // xyz unit (turned like the normal), w handedness; zero xyz: no tangent
   int slots;          // TextureSlot bits switched on and present
+  vec4 vertexColor;   // interpolated COLOR_0 ((1, 1, 1, 1) when the mesh has none)
 };
 
 // SurfaceMaterial of surface_material.h, with the Material fields the shaders read.
@@ -121,6 +122,9 @@ SurfaceMaterial evaluateSurfaceMaterial(SurfaceInputs inputs) {
     s.alpha *= base.a;
   }
 #endif
+  // COLOR_0 multiplies the base colour and its alpha (glTF 2.0 section 3.9.2), after the texture.
+  s.baseColor *= inputs.vertexColor.rgb;
+  s.alpha *= inputs.vertexColor.a;
 #if (TEXTURED & SLOT_BIT_METALLIC_ROUGHNESS) != 0
   vec4 metallicRoughness = texture(metallicRoughnessTexture, slotUv(inputs, 1));
   if ((inputs.slots & kSlotMetallicRoughness) != 0) {

@@ -1,7 +1,8 @@
 #version 450 core
 // Evaluates material.glsl's evaluateSurfaceMaterial (the textured variant) over a table, for tests
 // (tests/gl/material_test.cpp compares it with core/surface_material.cpp): texel x of `uvs` holds
-// (TEXCOORD_0, TEXCOORD_1), of `normals` the normal, of `tangents` the tangent. The material's
+// (TEXCOORD_0, TEXCOORD_1), of `normals` the normal, of `tangents` the tangent, of
+// `colors` the vertex colour. The material's
 // uniforms and textures are the renderer's (material.glsl). `quantity` selects the output:
 // 0 (baseColor, alpha), 1 (metallic, roughness, occlusion), 2 emissive, 3 normal,
 // 4 (slot 0's and slot 3's transformed uv: textureTransformApply), 5 the base colour texture's
@@ -17,6 +18,7 @@ in vec2 ndc;
 uniform sampler2D uvs;
 uniform sampler2D normals;
 uniform sampler2D tangents;
+uniform sampler2D colors;
 uniform int quantity;
 uniform int probeSlots;
 
@@ -31,6 +33,7 @@ void main() {
   inputs.normal = texelFetch(normals, texel, 0).xyz;
   inputs.tangent = texelFetch(tangents, texel, 0);
   inputs.slots = probeSlots;
+  inputs.vertexColor = texelFetch(colors, texel, 0);
   SurfaceMaterial m = evaluateSurfaceMaterial(inputs);
   if (quantity == 0) fragColor = vec4(m.baseColor, m.alpha);
   else if (quantity == 1) fragColor = vec4(m.metallic, m.roughness, m.occlusion, 0.0);

@@ -22,6 +22,7 @@ in VertexData {
   vec2 texcoord0;
   vec2 texcoord1;
   vec4 tangent;
+  vec4 color;
   // The lights modes' residual truncation (mesh.vert) of the front and of the back face.
   vec3 residualTruncationFront;
   vec3 residualTruncationBack;
@@ -148,6 +149,7 @@ void main() {
   float tangentLength2 = dot(vertexIn.tangent.xyz, vertexIn.tangent.xyz);
   inputs.tangent = tangentLength2 > 0.0 ? vec4(side * vertexIn.tangent.xyz * inversesqrt(tangentLength2), vertexIn.tangent.w < 0.0 ? -1.0 : 1.0) : vec4(0.0);
   inputs.slots = textureSlots;
+  inputs.vertexColor = vertexIn.color;
   SurfaceMaterial m = evaluateSurfaceMaterial(inputs);
 #if !SPECULAR_LAYER
   m.metallic = 0.0;  // the factor is 0 (hasSpecularLayer), so the texture's product is too

@@ -20,6 +20,8 @@ layout(location = kAttributeTransfer678) in vec3 inTransfer678;
 layout(location = kAttributeTexcoord0) in vec2 inTexcoord0;
 layout(location = kAttributeTexcoord1) in vec2 inTexcoord1;
 layout(location = kAttributeTangent) in vec4 inTangent;
+// COLOR_0, or the generic (1, 1, 1, 1) GpuMesh::draw sets for a mesh without it.
+layout(location = kAttributeColor) in vec4 inColor;
 
 uniform mat4 viewProjection;
 uniform bool doubleSided;  // mesh.frag's: the material's back faces are drawn
@@ -72,6 +74,7 @@ out VertexData {
   vec2 texcoord0;
   vec2 texcoord1;
   vec4 tangent;
+  vec4 color;
   // residualTruncationAt of the front face (the normal) and of a double-sided material's back face
   // (the normal negated, mesh.frag's `side`).
   vec3 residualTruncationFront;
@@ -104,6 +107,7 @@ void main() {
   vertexOut.texcoord0 = inTexcoord0;
   vertexOut.texcoord1 = inTexcoord1;
   vertexOut.tangent = inTangent;
+  vertexOut.color = inColor;
   vec3 normal = normalize(inNormal);
   vertexOut.residualTruncationFront = residualTruncationAt(normal);
   // A single-sided material's back faces are culled: no second lookup.

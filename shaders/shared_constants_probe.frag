@@ -18,7 +18,7 @@ const float kValues[] = float[](
     kSlotEmissive, kAllTextureSlots, kAlphaModeOpaque, kAlphaModeMask, kAlphaModeBlend, kShadingModeIrradiance,
     kShadingModeIrradianceAoBent, kTextureUnitIrradiance, kShadingModeLights, kShadingModeLightsShadowed,
     kTextureUnitResidualSpecular, kTextureUnitShadowDepth, kMaxEngineLights,
-    kShadowMapSize, kShadowExponent, kDeltaAlpha, kTextureUnitResidualIrradiance);
+    kShadowMapSize, kShadowExponent, kDeltaAlpha, kTextureUnitResidualIrradiance, kAttributeColor);
 
 void main() {
   int i = int(gl_FragCoord.x);

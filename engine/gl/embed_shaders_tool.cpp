@@ -100,7 +100,8 @@ std::string sharedConstants() {
                         {"kAttributeTransfer678", kAttributeTransfer678},
                         {"kAttributeTexcoord0", kAttributeTexcoord0},
                         {"kAttributeTexcoord1", kAttributeTexcoord1},
-                        {"kAttributeTangent", kAttributeTangent}});
+                        {"kAttributeTangent", kAttributeTangent},
+                        {"kAttributeColor", kAttributeColor}});
   text += intConstants("iblkit::TextureUnit (engine/gl/texture_unit.h)",
                        {{"kTextureUnitLatLong", kTextureUnitLatLong},
                         {"kTextureUnitSpecular", kTextureUnitSpecular},

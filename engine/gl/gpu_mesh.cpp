@@ -46,6 +46,9 @@ GpuMesh::GpuMesh(const Mesh& mesh) : indexCount_(GLsizei(mesh.indices.size())) {
   optional(kAttributeTexcoord0, 2, mesh.texcoords);
   optional(kAttributeTexcoord1, 2, mesh.texcoords1);
   optional(kAttributeTangent, 4, mesh.tangents);
+  optional(kAttributeColor, 4, mesh.colors);
+  hasColors_ = mesh.colors.size() == n;
+  vertexAlpha_ = hasColors_ && mesh.hasVertexAlpha();
   // One buffer: each attribute's array in turn (4-byte aligned), then the indices.
   std::size_t bytes = 0;
   for (const Stream& stream : streams) bytes += stream.data.size_bytes();
@@ -79,13 +82,17 @@ GpuMesh::GpuMesh(GpuMesh&& other) noexcept
     : vertexArray_(std::exchange(other.vertexArray_, 0)),
       buffer_(std::exchange(other.buffer_, 0)),
       indexCount_(other.indexCount_),
-      indexOffset_(other.indexOffset_) {}
+      indexOffset_(other.indexOffset_),
+      hasColors_(other.hasColors_),
+      vertexAlpha_(other.vertexAlpha_) {}
 
 GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
   std::swap(vertexArray_, other.vertexArray_);
   std::swap(buffer_, other.buffer_);
   std::swap(indexCount_, other.indexCount_);
   std::swap(indexOffset_, other.indexOffset_);
+  std::swap(hasColors_, other.hasColors_);
+  std::swap(vertexAlpha_, other.vertexAlpha_);
   return *this;
 }
 
@@ -94,7 +101,14 @@ GpuMesh::~GpuMesh() {
   if (buffer_) glDeleteBuffers(1, &buffer_);
 }
 
+// A disabled attribute reads the context's generic value, which other draws may have changed: a
+// mesh without colours sets white, opaque, before each draw.
+void GpuMesh::setGenericColor() const {
+  if (!hasColors_) glVertexAttrib4f(kAttributeColor, 1.0f, 1.0f, 1.0f, 1.0f);
+}
+
 void GpuMesh::draw() const {
+  setGenericColor();
   glBindVertexArray(vertexArray_);
   glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, reinterpret_cast<const void*>(indexOffset_));
   glBindVertexArray(0);
@@ -108,6 +122,7 @@ void GpuMesh::draw(const std::vector<TriangleRun>& runs) const {
     counts.push_back(GLsizei(3 * run.count));
     offsets.push_back(reinterpret_cast<const void*>(indexOffset_ + GLintptr(3 * run.first * sizeof(GLuint))));
   }
+  setGenericColor();
   glBindVertexArray(vertexArray_);
   glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(runs.size()));
   glBindVertexArray(0);

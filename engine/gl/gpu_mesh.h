@@ -1,7 +1,7 @@
 #pragma once
 // A mesh on the GPU: one vertex array with the attributes mesh.vert reads (position, normal and
-// the baked _AO, _BENTNORMAL, _SHT0.._SHT2; TEXCOORD_0, TEXCOORD_1 and TANGENT where the mesh has
-// them), and its triangle indices.
+// the baked _AO, _BENTNORMAL, _SHT0.._SHT2; TEXCOORD_0, TEXCOORD_1, TANGENT and COLOR_0 where the
+// mesh has them), and its triangle indices.
 #include <epoxy/gl.h>
 
 #include <cstddef>
@@ -29,6 +29,9 @@ class GpuMesh {
   GpuMesh& operator=(const GpuMesh&) = delete;
   ~GpuMesh();
 
+  // Whether some vertex colour's alpha is below 1 (Mesh::hasVertexAlpha, kept from the upload).
+  bool hasVertexAlpha() const { return vertexAlpha_; }
+
   // Draws the triangles with the currently bound program.
   void draw() const;
   // Draws only these runs of triangles (one glMultiDrawElements); none: nothing.
@@ -38,6 +41,9 @@ class GpuMesh {
   GLuint vertexArray_ = 0, buffer_ = 0;
   GLsizei indexCount_ = 0;
   GLintptr indexOffset_ = 0;
+  bool hasColors_ = false;
+  bool vertexAlpha_ = false;  // COLOR_0 uploaded; else the generic value (1, 1, 1, 1) at each draw
+  void setGenericColor() const;
 };
 
 }  // namespace iblkit

@@ -20,6 +20,9 @@ enum GpuMeshAttribute : unsigned {
   kAttributeTexcoord0 = 7,
   kAttributeTexcoord1 = 8,
   kAttributeTangent = 9,
+  // glTF COLOR_0 (Mesh::colors, linear RGBA). A mesh without it leaves the attribute disabled and
+  // GpuMesh::draw sets its generic value to (1, 1, 1, 1): white, opaque.
+  kAttributeColor = 10,
 };
 
 }  // namespace iblkit

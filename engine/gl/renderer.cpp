@@ -45,10 +45,11 @@ void cullFor(const Material& material) {
     glEnable(GL_CULL_FACE);
 }
 
-// The alpha mode `material` is drawn with, its texture slots `slots` bound (drawnAlphaMode: a MASK
-// or BLEND material whose alpha cannot take a point away is drawn opaque).
-AlphaMode drawnAlphaMode(const Material& material, unsigned slots) {
-  return drawnAlphaMode(material, (slots & kSlotBaseColor) != 0);
+// The alpha mode `mesh` of `material` is drawn with, its texture slots `slots` bound
+// (drawnAlphaMode: a MASK or BLEND material whose alpha cannot take a point away, neither by its
+// base colour texture nor by the mesh's vertex colours, is drawn opaque).
+AlphaMode drawnAlphaMode(const Material& material, unsigned slots, const GpuMesh& mesh) {
+  return drawnAlphaMode(material, (slots & kSlotBaseColor) != 0 || mesh.hasVertexAlpha());
 }
 
 // Whether every vertex of `mesh` has the same normal and every triangle faces along it (a plane
@@ -294,7 +295,8 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     for (std::size_t i = 0; i < r.meshes.size(); ++i) {
       const Mesh& mesh = r.scene.meshes[i];
       const Material& material = r.scene.materials.at(std::size_t(mesh.material));
-      if (drawnAlphaMode(material, r.materialTextures.boundSlots(material, settings.textureSlots)) != AlphaMode::Opaque)
+      if (drawnAlphaMode(material, r.materialTextures.boundSlots(material, settings.textureSlots), r.meshes[i]) !=
+          AlphaMode::Opaque)
         continue;
       cullFor(material);
       if (mesh.isGround && i < r.shadowCoverage.size())
@@ -348,7 +350,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     const Material& material = r.scene.materials.at(std::size_t(mesh.material));
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
-    const AlphaMode alphaMode = drawnAlphaMode(material, slots);
+    const AlphaMode alphaMode = drawnAlphaMode(material, slots, r.meshes[i]);
     const auto use = [&](ShadingMode programMode) -> const ShaderProgram& {
       const ShaderProgram& program =
           r.meshProgram(programMode, settings.layer, slots, alphaMode, int(drawn.lights.size()),

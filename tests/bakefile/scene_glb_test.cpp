@@ -134,6 +134,7 @@ Scene texturedScene() {
     const glm::vec3 n = sphere.normals[v];
     const glm::vec3 t = glm::normalize(glm::cross(glm::abs(n.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0), n));
     sphere.tangents.emplace_back(t, v % 2 ? -1.0f : 1.0f);
+    sphere.colors.emplace_back(float(v % 5) / 4.0f, 0.25f, 1.0f - float(v % 3) / 2.0f, float(v % 2) * 0.5f + 0.5f);
   }
   return scene;
 }
@@ -411,6 +412,8 @@ TEST(BakedSceneGltf, TexturedSceneLoadsBackAsTheSameTexturesAndMaterials) {
 
   ASSERT_EQ(back.meshes.size(), scene.meshes.size());
   EXPECT_EQ(back.meshes[0].texcoords1, scene.meshes[0].texcoords1);
+  EXPECT_EQ(back.meshes[0].colors, scene.meshes[0].colors);  // COLOR_0, VEC4 float
+  EXPECT_TRUE(back.meshes[1].colors.empty());
   ASSERT_EQ(back.meshes[0].tangents.size(), scene.meshes[0].tangents.size());
   for (std::size_t v = 0; v < scene.meshes[0].tangents.size(); ++v)
     EXPECT_LT(glm::distance(back.meshes[0].tangents[v], scene.meshes[0].tangents[v]), 1e-6f) << "vertex " << v;
@@ -437,7 +440,13 @@ TEST(BakedSceneGltf, BadTextureReferencesAreErrorsAndLeaveNoFile) {
   Scene tangents = texturedScene();
   tangents.meshes[0].tangents.pop_back();
   EXPECT_EQ(test::errorMessage([&] { writeSceneGlb(tangents, file); }),
-            file.string() + ": mesh 0 (sphere): normals, texture coordinates or tangents do not match the 42 vertices");
+            file.string() + ": mesh 0 (sphere): normals, texture coordinates, tangents or colours do not match the "
+                            "42 vertices");
+  Scene colors = texturedScene();
+  colors.meshes[0].colors.pop_back();
+  EXPECT_EQ(test::errorMessage([&] { writeSceneGlb(colors, file); }),
+            file.string() + ": mesh 0 (sphere): normals, texture coordinates, tangents or colours do not match the "
+                            "42 vertices");
   EXPECT_FALSE(std::filesystem::exists(file));
 }
 

@@ -262,6 +262,155 @@ TEST_F(GltfLoad, ReadsCustomAttributesInVertexOrder) {
   EXPECT_EQ(m.attributes.at("_BENT").data, (std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
 }
 
+// COLOR_0 (glTF 2.0 section 3.7.2.1): VEC3 float reads alpha 1; normalised unsigned bytes and
+// shorts divide by 255 and 65535; floats outside [0, 1] are clamped with a warning.
+TEST_F(GltfLoad, ReadsVertexColours) {
+  GltfBuilder builder;
+  const std::vector<glm::vec3> rgb = {glm::vec3(1, 0, 0), glm::vec3(0, 0.5f, 0), glm::vec3(0, 0, 0.25f)};
+  const std::uint8_t bytes[12] = {255, 0, 0, 51, 0, 255, 0, 102, 0, 0, 255, 255};
+  const std::uint16_t shorts[12] = {65535, 0, 0, 0, 0, 65535, 0, 65535, 0, 0, 65535, 13107};
+  const std::vector<glm::vec4> outside = {glm::vec4(1.5f, -0.25f, 0.5f, 1), glm::vec4(0.5f), glm::vec4(2.0f)};
+  builder.addPrimitiveNode(
+      {{"attributes", {{"POSITION", builder.addFloats(kTriangle)}, {"COLOR_0", builder.addFloats(rgb)}}}});
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(kTriangle)},
+                              {"COLOR_0", builder.addAccessor(bytes, sizeof(bytes), test::kUnsignedByte, 3,
+                                                              "VEC4", true)}}}});
+  builder.addPrimitiveNode({{"attributes",
+                             {{"POSITION", builder.addFloats(kTriangle)},
+                              {"COLOR_0", builder.addAccessor(shorts, sizeof(shorts), test::kUnsignedShort, 3,
+                                                              "VEC4", true)}}}});
+  builder.addPrimitiveNode(
+      {{"attributes", {{"POSITION", builder.addFloats(kTriangle)}, {"COLOR_0", builder.addFloats(outside)}}}});
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 4u);
+  EXPECT_EQ(contents.meshes[0].colors,
+            (std::vector<glm::vec4>{glm::vec4(1, 0, 0, 1), glm::vec4(0, 0.5f, 0, 1), glm::vec4(0, 0, 0.25f, 1)}));
+  EXPECT_FALSE(contents.meshes[0].hasVertexAlpha());
+  EXPECT_EQ(contents.meshes[1].colors[0], glm::vec4(1, 0, 0, 0.2f));
+  EXPECT_EQ(contents.meshes[1].colors[2], glm::vec4(0, 0, 1, 1));
+  EXPECT_TRUE(contents.meshes[1].hasVertexAlpha());
+  EXPECT_EQ(contents.meshes[2].colors[1], glm::vec4(0, 1, 0, 1));
+  EXPECT_EQ(contents.meshes[2].colors[2], glm::vec4(0, 0, 1, 0.2f));
+  EXPECT_EQ(contents.meshes[3].colors[0], glm::vec4(1, 0, 0.5f, 1));
+  EXPECT_EQ(contents.meshes[3].colors[2], glm::vec4(1));
+  EXPECT_TRUE(warnings.contains("model.gltf: warning: mesh 3 primitive 0: COLOR_0 has 6 components outside [0, 1]; clamped"));
+  // A primitive without COLOR_0 has none (white in every program).
+  builder = GltfBuilder();
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}});
+  EXPECT_TRUE(load(builder).meshes[0].colors.empty());
+}
+
+TEST_F(GltfLoad, RefusesVertexColoursGltfDoesNotAllow) {
+  const std::uint8_t bytes[12] = {255, 0, 0, 51, 0, 255, 0, 102, 0, 0, 255, 255};
+  {  // integers must be normalised
+    GltfBuilder builder;
+    builder.addPrimitiveNode({{"attributes",
+                               {{"POSITION", builder.addFloats(kTriangle)},
+                                {"COLOR_0", builder.addAccessor(bytes, sizeof(bytes), test::kUnsignedByte, 3,
+                                                                "VEC4", false)}}}});
+    EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: COLOR_0 must be float, normalized unsigned "
+                                      "byte or normalized unsigned short"),
+              std::string::npos)
+        << loadError(builder);
+  }
+  {  // VEC2 is not a colour
+    GltfBuilder builder;
+    const std::vector<glm::vec2> uv = {glm::vec2(0), glm::vec2(1), glm::vec2(0.5f)};
+    builder.addPrimitiveNode(
+        {{"attributes", {{"POSITION", builder.addFloats(kTriangle)}, {"COLOR_0", builder.addFloats(uv)}}}});
+    EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: COLOR_0 must be VEC3 or VEC4"),
+              std::string::npos)
+        << loadError(builder);
+  }
+  {  // NaN
+    GltfBuilder builder;
+    const std::vector<glm::vec3> rgb = {glm::vec3(1), glm::vec3(std::nanf("")), glm::vec3(1)};
+    builder.addPrimitiveNode(
+        {{"attributes", {{"POSITION", builder.addFloats(kTriangle)}, {"COLOR_0", builder.addFloats(rgb)}}}});
+    EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: COLOR_0: non-finite value"),
+              std::string::npos)
+        << loadError(builder);
+  }
+  {  // a count that is not POSITION's
+    GltfBuilder builder;
+    const std::vector<glm::vec3> rgb = {glm::vec3(1), glm::vec3(1)};
+    builder.addPrimitiveNode(
+        {{"attributes", {{"POSITION", builder.addFloats(kTriangle)}, {"COLOR_0", builder.addFloats(rgb)}}}});
+    EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: COLOR_0 has 2 elements but POSITION has 3"),
+              std::string::npos)
+        << loadError(builder);
+  }
+}
+
+// A sparse accessor (glTF 2.0 section 3.6.2.3): the listed elements of the base replace, and an
+// accessor without a buffer view is zeros before them.
+TEST_F(GltfLoad, ReadsSparseAccessors) {
+  GltfBuilder builder;
+  const int positions = builder.addFloats(kTriangle);
+  const std::uint16_t moved[1] = {1};
+  const float to[3] = {5, 0, 0};
+  builder.document()["accessors"][positions]["sparse"] = {
+      {"count", 1},
+      {"indices", {{"bufferView", builder.addBufferView(moved, sizeof(moved))}, {"componentType", test::kUnsignedShort}}},
+      {"values", {{"bufferView", builder.addBufferView(to, sizeof(to))}}}};
+  builder.document()["accessors"][positions]["max"] = {5, 1, 0};
+  const std::uint8_t at[2] = {0, 2};
+  const float weights[2] = {0.25f, 0.75f};
+  json& accessors = builder.document()["accessors"];
+  accessors.push_back({{"componentType", test::kFloat},
+                       {"count", 3},
+                       {"type", "SCALAR"},
+                       {"sparse",
+                        {{"count", 2},
+                         {"indices", {{"bufferView", builder.addBufferView(at, sizeof(at))},
+                                      {"componentType", test::kUnsignedByte}}},
+                         {"values", {{"bufferView", builder.addBufferView(weights, sizeof(weights))}}}}}});
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}, {"_W", int(accessors.size()) - 1}}}});
+  const GltfContents contents = load(builder);
+  const Mesh& m = contents.meshes[0];
+  EXPECT_EQ(m.positions, (std::vector<glm::vec3>{glm::vec3(0, 0, 0), glm::vec3(5, 0, 0), glm::vec3(0, 1, 0)}));
+  EXPECT_EQ(m.attributes.at("_W").data, (std::vector<float>{0.25f, 0.0f, 0.75f}));
+}
+
+TEST_F(GltfLoad, RefusesBrokenSparseAccessors) {
+  // One sparse POSITION over kTriangle, with `indices` (unsigned bytes) and `count` as given.
+  const auto sparseTriangle = [](std::vector<std::uint8_t> indices, int count, std::size_t elements = 3,
+                                 bool withView = true) {
+    GltfBuilder builder;
+    const int positions = builder.addFloats(kTriangle);
+    const std::vector<float> values(3 * indices.size(), 1.0f);
+    json& accessor = builder.document()["accessors"][positions];
+    accessor["count"] = elements;
+    if (!withView) accessor.erase("bufferView");
+    accessor["sparse"] = {
+        {"count", count},
+        {"indices", {{"bufferView", builder.addBufferView(indices.data(), indices.size())},
+                     {"componentType", test::kUnsignedByte}}},
+        {"values", {{"bufferView", builder.addBufferView(values.data(), values.size() * sizeof(float))}}}};
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}});
+    return loadError(builder);
+  };
+  EXPECT_NE(sparseTriangle({3}, 1).find("model.gltf: accessor 0 (POSITION): sparse index 3 out of range (3 elements)"),
+            std::string::npos)
+      << sparseTriangle({3}, 1);
+  EXPECT_NE(sparseTriangle({2, 1}, 2).find("model.gltf: accessor 0 (POSITION): sparse indices do not strictly increase"),
+            std::string::npos)
+      << sparseTriangle({2, 1}, 2);
+  EXPECT_NE(sparseTriangle({0}, 2).find("model.gltf: accessor 0 (POSITION) sparse indices reads past the end of buffer "
+                                        "view"),
+            std::string::npos)
+      << sparseTriangle({0}, 2);
+  EXPECT_NE(sparseTriangle({0}, 0).find("model.gltf: accessor 0 (POSITION): sparse count 0 is not in 1..3"),
+            std::string::npos)
+      << sparseTriangle({0}, 0);
+  // Zeros without a buffer view, so the count is bounded by the limit alone.
+  EXPECT_NE(sparseTriangle({0}, 1, std::size_t(1) << 40, false)
+                .find("model.gltf: accessor 0 (POSITION) is sparse with 1099511627776 elements, beyond the limit of 256 MiB"),
+            std::string::npos)
+      << sparseTriangle({0}, 1, std::size_t(1) << 40, false);
+}
+
 TEST_F(GltfLoad, ConvertsMaterials) {
   GltfBuilder builder;
   json& materials = builder.document()["materials"];

@@ -62,7 +62,7 @@ Scene materialScene(const TextureSampler& sampler) {
 }
 
 struct ProbePoints {
-  Image uvs{kProbes, 1}, normals{kProbes, 1}, tangents{kProbes, 1};
+  Image uvs{kProbes, 1}, normals{kProbes, 1}, tangents{kProbes, 1}, colors{kProbes, 1};
   std::vector<SurfaceInputs> inputs;
 };
 
@@ -83,7 +83,11 @@ ProbePoints probePoints(bool anywhere) {
     in.normal = glm::normalize(n);
     const glm::vec3 t = glm::normalize(glm::cross(in.normal, glm::vec3(unit(rng), unit(rng), unit(rng))));
     in.tangent = glm::vec4(t, i % 2 ? -1.0f : 1.0f);
+    // A vertex colour (COLOR_0) on every other point, white elsewhere (a mesh without one).
+    if (i % 2 == 0)
+      in.vertexColor = 0.5f + 0.5f * glm::vec4(unit(rng), unit(rng), unit(rng), unit(rng));
     p.inputs.push_back(in);
+    p.colors.at(i, 0) = in.vertexColor;
     p.uvs.at(i, 0) = glm::vec4(in.texcoords[0], in.texcoords[1]);
     p.normals.at(i, 0) = glm::vec4(in.normal, 0.0f);
     p.tangents.at(i, 0) = in.tangent;
@@ -94,7 +98,7 @@ ProbePoints probePoints(bool anywhere) {
 std::vector<glm::vec4> probe(const ProbePoints& p, const MaterialTextures& textures, const Material& material,
                              unsigned slots, int quantity) {
   return test::runFragmentProbe(
-      "material_probe.frag", {{"uvs", &p.uvs}, {"normals", &p.normals}, {"tangents", &p.tangents}},
+      "material_probe.frag", {{"uvs", &p.uvs}, {"normals", &p.normals}, {"tangents", &p.tangents}, {"colors", &p.colors}},
       [&](const ShaderProgram& program) {
         const unsigned bound = textures.bind(material, slots);
         setMaterialUniforms(program, material, bound);

@@ -44,7 +44,7 @@ const std::vector<float> kCppValues = {
     float(ShadingMode::Lights),   float(ShadingMode::LightsShadowed), float(kTextureUnitResidualSpecular),
     float(kTextureUnitShadowDepth), float(kMaxEngineLights),
     float(kShadowMapSize),        kShadowExponent,              kDeltaAlpha,
-    float(kTextureUnitResidualIrradiance)};
+    float(kTextureUnitResidualIrradiance), float(kAttributeColor)};
 
 TEST(SharedConstants, GlslValuesEqualTheCppOnes) {
   const int n = int(kCppValues.size()) + 1;  // one texel past the table: the probe's -1
@@ -82,6 +82,8 @@ TEST(SharedConstants, MeshAttributesAreAtTheGpuMeshLocations) {
   EXPECT_EQ(attributeLocation(textured, "inTexcoord0"), GLint(kAttributeTexcoord0));
   EXPECT_EQ(attributeLocation(textured, "inTexcoord1"), GLint(kAttributeTexcoord1));
   EXPECT_EQ(attributeLocation(textured, "inTangent"), GLint(kAttributeTangent));
+  // Vertex colours multiply the base colour in every variant.
+  EXPECT_EQ(attributeLocation(mesh, "inColor"), GLint(kAttributeColor));
   checkGlErrors("attribute locations");
 }
 
