@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Cross-checks the reference path tracer against another one, Blender Cycles (Debian's blender
 # 3.4), on scenes both define the same way: a sphere on a ground under real HDR maps (Lambert,
-# mirror, GGX metal; a textured and a normal-mapped glTF sphere; a 4096 x 2048 map with a
+# mirror, GGX metal; a textured, a normal-mapped and a vertex-coloured glTF sphere; a 4096 x 2048 map with a
 # real-sized sun; the bundled bunny). Prints, per case and region,
 # the mean radiance of each tracer, their ratio and its z score, and each tracer's far ground
 # against its analytic value (compare.py); docs/reference-tracer.md
@@ -46,7 +46,7 @@ if [ ! -f "$out/inputs/bunny.glb" ]; then
     --ao-rays 1 --specular-samples 1 --lut-size 8 --force >/dev/null
   cp "$out/inputs/bunny-bake/scene.glb" "$out/inputs/bunny.glb"
 fi
-for kind in base normal; do
+for kind in base normal color; do
   [ -f "$out/inputs/sphere_$kind.glb" ] || run_blender "$here/make_sphere_glb.py" -- "$out/inputs/sphere_$kind.glb" "$kind"
 done
 
@@ -67,6 +67,7 @@ cases+=("mirror_sky_raw|sphere|{\"baseColor\": [1, 1, 1], \"metallic\": 1, \"rou
 cases+=("texture_venice|sphere_base.glb|{\"metallic\": 0, \"roughness\": 1, \"specular\": 0}|venice|0")
 cases+=("bunny_lambert_sky|bunny.glb|$lambert|sky|0|-0.891")
 cases+=("normalmap_venice|sphere_normal.glb|{\"metallic\": 0, \"roughness\": 1, \"specular\": 0}|venice|0")
+cases+=("vertexcolor_venice|sphere_color.glb|{\"metallic\": 0, \"roughness\": 1, \"specular\": 0}|venice|0")
 
 results="$out/results.jsonl"
 : >"$results"

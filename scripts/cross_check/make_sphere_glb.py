@@ -1,9 +1,11 @@
-"""blender -b --python make_sphere_glb.py -- OUT.glb base|normal
+"""blender -b --python make_sphere_glb.py -- OUT.glb base|normal|color
 
 A unit UV sphere (96 x 48 segments, exact normals, no tangents: readers derive MikkTSpace ones)
 with one texture: `base`, an sRGB base colour of stripes and checks that differ along u and v
 (a flipped or swapped uv shows); `normal`, a tangent-space normal map of bumps tilted up to 31
-degrees (factor 0.8 grey). Written with Python's zlib as PNG inside a glb.
+degrees (factor 0.8 grey); `color`, no texture but vertex colours (COLOR_0, VEC4 float, alpha 1)
+that vary smoothly with the position, multiplying a base colour factor of 0.9. Written with
+Python's zlib as PNG inside a glb.
 """
 import json
 import math
@@ -70,19 +72,32 @@ def textures(size=256):
     return png(base_colour_bytes(size)), png(to_bytes(normal * 0.5 + 0.5))
 
 
+def vertex_colours(positions):
+    """COLOR_0 of the unit sphere's vertices: each channel a smooth function of the position, in [0.1, 0.95]."""
+    x, y, z = positions[:, 0], positions[:, 1], positions[:, 2]
+    rgb = np.stack([0.1 + 0.85 * (x + 1) / 2, 0.1 + 0.85 * (y + 1) / 2,
+                    0.525 + 0.425 * np.sin(3 * np.arctan2(z, x))], -1)
+    return np.concatenate([rgb, np.ones((len(positions), 1))], -1).astype(np.float32)
+
+
 def glb(path, mode):
     positions, uvs, indices = sphere()
     base_png, normal_png = textures()
     material = {"pbrMetallicRoughness": {"metallicFactor": 0.0, "roughnessFactor": 1.0}}
     images = []
-    if mode == "base":
+    if mode == "color":
+        material["pbrMetallicRoughness"]["baseColorFactor"] = [0.9, 0.9, 0.9, 1.0]
+    elif mode == "base":
         material["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
         images.append(base_png)
     else:
         material["pbrMetallicRoughness"]["baseColorFactor"] = [0.8, 0.8, 0.8, 1.0]
         material["normalTexture"] = {"index": 0, "scale": 1.0}
         images.append(normal_png)
+    colours = vertex_colours(positions)
     chunks = [positions.tobytes(), positions.tobytes(), uvs.tobytes(), indices.tobytes()] + images
+    if mode == "color":
+        chunks.append(colours.tobytes())
     blob, views = b"", []
     for data in chunks:
         blob += b"\0" * (-len(blob) % 4)
@@ -105,6 +120,10 @@ def glb(path, mode):
             {"bufferView": 2, "componentType": 5126, "count": len(uvs), "type": "VEC2"},
             {"bufferView": 3, "componentType": 5125, "count": len(indices), "type": "SCALAR"}],
         "bufferViews": views, "buffers": [{"byteLength": len(blob)}]}
+    if mode == "color":  # no texture: the colours' view takes the image's place
+        del document["textures"], document["samplers"], document["images"]
+        document["accessors"].append({"bufferView": 4, "componentType": 5126, "count": len(colours), "type": "VEC4"})
+        document["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 4
     text = json.dumps(document).encode()
     text += b" " * (-len(text) % 4)
     data = (struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(text) + 8 + len(blob))
