@@ -184,6 +184,10 @@ json material(const Material& m, json& extensionsUsed) {
       {"specularFactor", m.specular},
       {"specularColorFactor", {m.specularColor.r, m.specularColor.g, m.specularColor.b}}};
   extensionsUsed.push_back("KHR_materials_specular");
+  if (m.ior != 1.5f) {
+    result["extensions"]["KHR_materials_ior"] = {{"ior", m.ior}};
+    extensionsUsed.push_back("KHR_materials_ior");
+  }
   // emissiveFactor is limited to [0, 1]; a brighter emission keeps its colour there and its
   // intensity in KHR_materials_emissive_strength.
   const float strength = std::max({m.emissive.r, m.emissive.g, m.emissive.b});

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <map>
 #include <numeric>
 #include <span>
 #include <string>
@@ -154,6 +155,14 @@ Material convertMaterial(const tinygltf::Material& source, int index, std::size_
     if (!(s >= 0.0)) fail(file, ext + ".emissiveStrength must be >= 0");
     material.emissive *= float(s);
   }
+  const auto ior = source.extensions.find("KHR_materials_ior");
+  if (ior != source.extensions.end()) {
+    const std::string ext = what + " KHR_materials_ior";
+    const double value = extensionNumber(ior->second, "ior", 1.5, ext, file);
+    // The schema allows 0 (F0 1) and 1 and above; beyond 1e3 the F0 is 1 to float precision.
+    if (!(value == 0.0 || (value >= 1.0 && value <= 1e3))) fail(file, ext + ".ior must be 0 or in [1, 1000]");
+    material.ior = float(value);
+  }
   const auto specular = source.extensions.find("KHR_materials_specular");
   if (specular != source.extensions.end()) {
     const std::string ext = what + " KHR_materials_specular";
@@ -291,6 +300,30 @@ std::vector<Vec> toVectors(const std::vector<float>& values) {
   return result;
 }
 
+// The material extensions that change how a material looks and that iblkit reads (the rest are
+// skipped, each named once in a warning by warnUnrenderedMaterialExtensions).
+bool renderedMaterialExtension(const std::string& name) {
+  return name == "KHR_materials_emissive_strength" || name == "KHR_materials_specular" || name == "KHR_materials_ior";
+}
+
+// One warning per skipped material extension, with the materials that use it: glTF lets a
+// viewer ignore an extension a file does not require, but a user whose glass renders opaque
+// (KHR_materials_transmission) or whose old asset's colours are the defaults
+// (KHR_materials_pbrSpecularGlossiness) should be told why.
+void warnUnrenderedMaterialExtensions(const tinygltf::Model& model, const fs::path& file) {
+  std::map<std::string, std::vector<std::size_t>> users;
+  for (std::size_t i = 0; i < model.materials.size(); ++i)
+    for (const auto& [name, value] : model.materials[i].extensions)
+      if (!renderedMaterialExtension(name)) users[name].push_back(i);
+  for (const auto& [name, materials] : users) {
+    std::string list;
+    for (std::size_t k = 0; k < materials.size() && k < 8; ++k) list += (k ? ", " : "") + std::to_string(materials[k]);
+    if (materials.size() > 8) list += ", ...";
+    warn(file, printableExcerpt(name) + " is not rendered: material" + (materials.size() > 1 ? "s " : " ") + list +
+                   (materials.size() > 1 ? " are" : " is") + " drawn without it");
+  }
+}
+
 class Loader {
  public:
   Loader(const tinygltf::Model& model, const fs::path& file) : model_(model), file_(file) {}
@@ -298,6 +331,7 @@ class Loader {
   GltfContents load() {
     for (std::size_t i = 0; i < model_.materials.size(); ++i)
       contents_.materials.push_back(convertMaterial(model_.materials[i], int(i), model_.textures.size(), file_));
+    warnUnrenderedMaterialExtensions(model_, file_);
     loadTextures();
 
     localMeshes_.resize(model_.meshes.size());

@@ -122,6 +122,21 @@ std::optional<GlbLayout> glbLayout(const std::vector<unsigned char>& bytes) {
   return GlbLayout{std::string_view(reinterpret_cast<const char*>(bytes.data()) + 20, length), 20 + length};
 }
 
+// The chunk after the JSON chunk (BIN), if any, must fit in the file with its 8-byte header.
+// tinygltf 2.7.0 compares the chunk's length with the header's total length but leaves out that
+// chunk header, so a BIN chunk claiming up to 8 bytes more than the file holds was read past the
+// end of the bytes (a heap overflow, found by fuzz_gltf).
+void checkBinChunk(const std::vector<unsigned char>& bytes, const GlbLayout& layout, const fs::path& file) {
+  const std::size_t rest = bytes.size() - layout.jsonEnd;
+  if (rest == 0) return;
+  if (rest < 8) fail(file, "truncated chunk after the JSON chunk (" + std::to_string(rest) + " bytes)");
+  std::uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + layout.jsonEnd, 4);
+  if (length > rest - 8)
+    fail(file, "BIN chunk of " + std::to_string(length) + " bytes runs past the end of the file (" +
+                   std::to_string(rest - 8) + " bytes left; truncated file?)");
+}
+
 void appendU32(std::vector<unsigned char>& out, std::uint32_t value) {
   unsigned char bytes[4];
   std::memcpy(bytes, &value, 4);
@@ -543,6 +558,7 @@ tinygltf::Model parse(const fs::path& file) {
   if (error) fail(file, "cannot resolve path: " + error.message());
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   const std::optional<GlbLayout> layout = glbLayout(bytes);
+  if (layout) checkBinChunk(bytes, *layout, file);
   const std::string_view text =
       binary ? (layout ? layout->json : std::string_view())
              : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());

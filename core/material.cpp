@@ -4,9 +4,20 @@
 
 namespace iblkit {
 
+float dielectricF0(float ior) {
+  const float r = (ior - 1.0f) / (ior + 1.0f);
+  return r * r;
+}
+
+glm::vec3 iorScaledSpecularColor(const Material& material) {
+  // The default ior keeps the colour bit for bit (0.04 / 0.04 rounds to 1 anyway).
+  if (material.ior == 1.5f) return material.specularColor;
+  return material.specularColor * (dielectricF0(material.ior) / 0.04f);
+}
+
 GltfRangeFactors clampedFactors(const Material& material) {
   return clampedToGltfRanges(GltfRangeFactors{material.baseColor, material.metallic, material.roughness,
-                                              material.specular, material.specularColor});
+                                              material.specular, iorScaledSpecularColor(material)});
 }
 
 Material clampedToGltfRanges(const Material& material) {
@@ -17,6 +28,7 @@ Material clampedToGltfRanges(const Material& material) {
   clamped.roughness = factors.roughness;
   clamped.specular = factors.specular;
   clamped.specularColor = factors.specularColor;
+  clamped.ior = 1.5f;  // folded into specularColor
   return clamped;
 }
 

@@ -28,6 +28,9 @@ struct Material {
   glm::vec3 specularColor{1.0f};  // KHR_materials_specular specularColorFactor
   glm::vec3 emissive{0.0f};       // glTF emissiveFactor (linear), times KHR_materials_emissive_strength
   float alpha = 1.0f;             // glTF baseColorFactor.a
+  // KHR_materials_ior: the dielectric's F0 is dielectricF0(ior) where the core model has 0.04 (the
+  // F0 of the default, 1.5). 0 or >= 1.
+  float ior = 1.5f;
 
   // Texture slots (glTF 2.0 section 5.19-5.22); each multiplies its factors above.
   TextureRef baseColorTexture{};          // sRGB RGB, linear A
@@ -43,10 +46,22 @@ struct Material {
   bool doubleSided = false;
 };
 
+// The F0 of a dielectric of index of refraction `ior` against air, ((ior - 1) / (ior + 1))^2
+// (KHR_materials_ior): 0.04 at 1.5, 0 at 1, 1 at 0.
+float dielectricF0(float ior);
+
+// The specular colour with the material's ior folded in: specularColor * dielectricF0(ior) / 0.04.
+// The model's dielectric F0 is min(0.04 specularColor, 1) (KHR_materials_specular), and
+// KHR_materials_ior's is min(dielectricF0(ior) specularColor, 1), so this is exact; every program
+// reads the specular colour through it (clampedFactors, PreparedSurfaceMaterial), so no BRDF
+// needs the ior on its own.
+glm::vec3 iorScaledSpecularColor(const Material& material);
+
 // `material` with its factors clamped to their glTF ranges (docs/material-model.md, "Parameters"):
 // baseColor, metallic, roughness and specular to [0, 1], specularColor to >= 0 (glTF 2.0 and
-// KHR_materials_specular allow it above 1); name and emissive unchanged. The one clamp that the
-// CPU BRDF (brdfLobes) and the engine's material uniforms both apply.
+// KHR_materials_specular allow it above 1) after folding the ior in (iorScaledSpecularColor; ior
+// is then 1.5, so the result folds nothing twice); name and emissive unchanged. The one clamp
+// that the CPU BRDF (brdfLobes) and the engine's material uniforms both apply.
 Material clampedToGltfRanges(const Material& material);
 
 // The factors clampedToGltfRanges clamps, clamped the same way, without copying the rest of the

@@ -217,7 +217,7 @@ void applyTextureOverride(const ObjectReader& m, const char* key, TextureRef& re
 void applyMaterialOverrides(const ObjectReader& parent, Material& material, OverrideTextures& textures) {
   if (!parent.has("material")) return;
   const ObjectReader m(parent.at("material"), parent.keyPath("material"), parent.file(),
-                       {"baseColor", "metallic", "roughness", "specular", "specularColor", "emissive", "alpha",
+                       {"baseColor", "metallic", "roughness", "specular", "specularColor", "ior", "emissive", "alpha",
                         "alphaMode", "alphaCutoff", "doubleSided", "baseColorTexture", "metallicRoughnessTexture",
                         "normalTexture", "occlusionTexture", "emissiveTexture"});
   material.baseColor = m.color("baseColor", material.baseColor, 1.0);
@@ -225,6 +225,7 @@ void applyMaterialOverrides(const ObjectReader& parent, Material& material, Over
   material.roughness = float(m.number("roughness", material.roughness, 0.0, 1.0));
   material.specular = float(m.number("specular", material.specular, 0.0, 1.0));
   material.specularColor = m.color("specularColor", material.specularColor, kInfinity);
+  material.ior = float(m.number("ior", material.ior, 1.0, 1000.0));
   material.emissive = m.color("emissive", material.emissive, kInfinity);
   material.alpha = float(m.number("alpha", material.alpha, 0.0, 1.0));
   if (m.has("alphaMode")) {

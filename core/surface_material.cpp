@@ -49,7 +49,7 @@ PreparedSurfaceMaterial::PreparedSurfaceMaterial(const Material& material, const
   factors_.metallic = material.metallic;
   factors_.roughness = material.roughness;
   factors_.specular = material.specular;
-  factors_.specularColor = material.specularColor;
+  factors_.specularColor = iorScaledSpecularColor(material);
   factors_.emissive = material.emissive;
   factors_.alpha = material.alpha;
   normalScale_ = material.normalScale;

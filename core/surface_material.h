@@ -34,6 +34,7 @@ struct SurfaceMaterial {
   // * vertex colour.rgb (section 3.9.2: COLOR_0 multiplies the base colour),
   // metallic = factor * texture.b, roughness = factor * texture.g, emissive = factor *
   // texture.rgb, alpha = factor * texture.a * vertex colour.a; specular and specularColor are the material's
+  // (specularColor with the ior folded in, iorScaledSpecularColor)
   // (KHR_materials_specular's textures are not read). Ready for brdfLobes(SurfaceMaterial).
   glm::vec3 baseColor{1.0f};
   float metallic = 1.0f;

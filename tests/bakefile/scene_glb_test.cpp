@@ -126,6 +126,7 @@ Scene texturedScene() {
   lamp.alphaMode = AlphaMode::Mask;
   lamp.alphaCutoff = 0.375f;
   lamp.doubleSided = true;
+  lamp.ior = 1.33f;  // KHR_materials_ior, written only where it is not 1.5
   scene.materials[0].alphaMode = AlphaMode::Blend;
 
   Mesh& sphere = scene.meshes[0];
@@ -370,6 +371,7 @@ void expectSameMaterial(const Material& a, const Material& b) {
   EXPECT_EQ(a.metallic, b.metallic) << what;
   EXPECT_EQ(a.roughness, b.roughness) << what;
   EXPECT_EQ(a.emissive, b.emissive) << what;
+  EXPECT_EQ(a.ior, b.ior) << what;
   expectSameRef(a.baseColorTexture, b.baseColorTexture, what + " baseColorTexture");
   expectSameRef(a.metallicRoughnessTexture, b.metallicRoughnessTexture, what + " metallicRoughnessTexture");
   expectSameRef(a.normalTexture, b.normalTexture, what + " normalTexture");

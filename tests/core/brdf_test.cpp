@@ -92,6 +92,38 @@ TEST(Brdf, MatchesTheGltfFormulasAtOneConfiguration) {
   EXPECT_LT(maxRelativeDifference(evalBrdf(m, kUp, wo, wi), expected), 1e-5f);
 }
 
+// KHR_materials_ior: the formulas above with 0.04 replaced by ((ior - 1) / (ior + 1))^2, written out
+// independently, at water's ior with a tinted specular colour, and at 1 (no F0) and 0 (F0 1).
+TEST(Brdf, IorReplacesTheDielectricF0) {
+  EXPECT_FLOAT_EQ(dielectricF0(1.5f), 0.04f);
+  EXPECT_EQ(dielectricF0(1.0f), 0.0f);
+  EXPECT_EQ(dielectricF0(0.0f), 1.0f);
+  for (const float ior : {1.33f, 1.0f, 0.0f, 2.42f}) {
+    const glm::vec3 baseColor(0.6f, 0.4f, 0.2f), specularColor(1.0f, 0.5f, 3.0f);
+    const float alpha = 0.25f, specular = 0.8f;
+    Material m = makeMaterial(0.5f, 0.0f, baseColor, specular, specularColor);
+    m.ior = ior;
+    const glm::vec3 wo = directionAround(kUp, 30.0f, 0.0f), wi = directionAround(kUp, 50.0f, 180.0f);
+    const glm::vec3 h = glm::normalize(wo + wi);
+    const float vh = glm::dot(wo, h), w5 = std::pow(1.0f - vh, 5.0f);
+    const float r = (ior - 1.0f) / (ior + 1.0f);
+    const glm::vec3 f0 = glm::min(r * r * specularColor, glm::vec3(1.0f));
+    const glm::vec3 fr = f0 + (1.0f - f0) * w5;
+    const float a2 = alpha * alpha, nh = h.z;
+    const float d = a2 / (kPi * std::pow(nh * nh * (a2 - 1.0f) + 1.0f, 2.0f));
+    const float nl = wi.z, nv = wo.z;
+    const float v = 0.5f / (nl * std::sqrt(nv * nv * (1 - a2) + a2) + nv * std::sqrt(nl * nl * (1 - a2) + a2));
+    const glm::vec3 expected =
+        (1.0f - specular * std::max(fr.x, std::max(fr.y, fr.z))) * baseColor / kPi + specular * fr * d * v;
+    EXPECT_LT(maxRelativeDifference(evalBrdf(m, kUp, wo, wi), expected), 1e-5f) << "ior " << ior;
+    // The folded material (the engine's uniforms) gives the same lobes, and folds nothing twice.
+    const Material folded = clampedToGltfRanges(m);
+    EXPECT_EQ(folded.ior, 1.5f);
+    EXPECT_LT(maxRelativeDifference(evalBrdf(folded, kUp, wo, wi), expected), 1e-5f) << "ior " << ior;
+    EXPECT_LT(maxRelativeDifference(evalBrdf(clampedToGltfRanges(folded), kUp, wo, wi), expected), 1e-5f);
+  }
+}
+
 TEST(Brdf, IsReciprocal) {
   PCG32 rng(2u);
   for (int i = 0; i < 5000; ++i) {

@@ -74,7 +74,7 @@ TEST_F(SceneFile, FullSceneDescription) {
                {"translation", {10, 0, 0}},
                {"rotation", {0, s, 0, s}},
                {"scale", 2},
-               {"material", {{"baseColor", {0.5, 0.25, 1}}, {"metallic", 1}, {"specular", 0.5}}}},
+               {"material", {{"baseColor", {0.5, 0.25, 1}}, {"metallic", 1}, {"specular", 0.5}, {"ior", 1.33}}}},
               {{"file", "../models/cube.gltf"}, {"scale", {1, 3, 1}}}}},
             {"ground", {{"material", {{"roughness", 0.75}}}}},
             {"environment", {{"file", "../hdri/sky.exr"}, {"rotation", 90}, {"intensity", 2}}},
@@ -100,6 +100,8 @@ TEST_F(SceneFile, FullSceneDescription) {
   EXPECT_EQ(overridden.metallic, 1.0f);
   EXPECT_EQ(overridden.roughness, 0.25f);  // from the file
   EXPECT_EQ(overridden.specular, 0.5f);
+  EXPECT_EQ(overridden.ior, 1.33f);
+  EXPECT_EQ(scene.materials[scene.meshes[1].material].ior, 1.5f);
   EXPECT_EQ(scene.materials[scene.meshes[1].material].baseColor, glm::vec3(1.0f));
 
   // The ground: under the objects (default height = lowest point), 10 bounding radii wide.
@@ -222,7 +224,7 @@ TEST_F(SceneFile, UnknownKeysAndWrongTypesNameTheKeyPath) {
             "camrea: unknown key (expected one of: models, ground, environment, camera, width, height)");
   EXPECT_EQ(error({{"models", {model}}, {"ground", {{"material", {{"colour", {1, 1, 1}}}}}}}),
             "ground.material.colour: unknown key (expected one of: baseColor, metallic, roughness, specular, "
-            "specularColor, emissive, alpha, alphaMode, alphaCutoff, doubleSided, baseColorTexture, "
+            "specularColor, ior, emissive, alpha, alphaMode, alphaCutoff, doubleSided, baseColorTexture, "
             "metallicRoughnessTexture, normalTexture, occlusionTexture, emissiveTexture)");
   EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"scale", "big"}}}}}),
             "models[0].scale: expected a nonzero number or an array of 3 nonzero numbers");
@@ -234,6 +236,8 @@ TEST_F(SceneFile, UnknownKeysAndWrongTypesNameTheKeyPath) {
             "models[0].rotation: expected a quaternion [x, y, z, w] (not all zero)");
   EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"material", {{"roughness", 2}}}}}}}),
             "models[0].material.roughness: expected a number in [0, 1]");
+  EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"material", {{"ior", 0.5}}}}}}}),
+            "models[0].material.ior: expected a number in [1, 1000]");
   EXPECT_EQ(error({{"models", {{{"file", "../models/cube.gltf"}, {"material", {{"baseColor", {1, 1}}}}}}}}),
             "models[0].material.baseColor: expected an array of 3 numbers in [0, 1]");
   EXPECT_EQ(error({{"models", {{{"translation", {0, 0, 0}}}}}}), "models[0]: needs exactly one of 'file' and 'shape'");

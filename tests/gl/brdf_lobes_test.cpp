@@ -14,7 +14,8 @@ namespace iblkit {
 namespace {
 
 // Dielectrics, metals and mixes; the specular extension's factor and (coloured, > 1, clamped to
-// f0 = 1) tint; factors out of range, which the renderer clamps with clampedToGltfRanges.
+// f0 = 1) tint; factors out of range, which the renderer clamps with clampedToGltfRanges; an ior
+// other than 1.5, which clampedToGltfRanges folds into the specular colour.
 const std::vector<Material> kMaterials = {
     Material{.name = "dielectric",
              .baseColor = {0.8f, 0.2f, 0.1f},
@@ -64,6 +65,28 @@ const std::vector<Material> kMaterials = {
              .roughness = 1.5f,
              .specular = -0.5f,
              .specularColor = {0.5f, 0.5f, 0.5f}},
+    // KHR_materials_ior: water, diamond (tinted), and 0 (F0 1, no diffuse left).
+    Material{.name = "ior 1.33",
+             .baseColor = {0.2f, 0.4f, 0.8f},
+             .metallic = 0.0f,
+             .roughness = 0.3f,
+             .specular = 1.0f,
+             .specularColor = {1.0f, 1.0f, 1.0f},
+             .ior = 1.33f},
+    Material{.name = "ior 2.42, tinted",
+             .baseColor = {0.9f, 0.9f, 0.9f},
+             .metallic = 0.2f,
+             .roughness = 0.6f,
+             .specular = 0.7f,
+             .specularColor = {1.0f, 0.6f, 3.0f},
+             .ior = 2.42f},
+    Material{.name = "ior 0",
+             .baseColor = {0.5f, 0.5f, 0.5f},
+             .metallic = 0.0f,
+             .roughness = 0.4f,
+             .specular = 1.0f,
+             .specularColor = {1.0f, 1.0f, 1.0f},
+             .ior = 0.0f},
 };
 const float kCosines[] = {0.0f, 0.05f, 0.2f, 0.5f, 0.8f, 0.99f, 1.0f};
 constexpr float kTolerance = 2e-6f;
