@@ -69,18 +69,15 @@ TEST(Brdf, SpecularZeroDielectricIsExactlyLambert) {
   EXPECT_EQ(specularLobeProbability(m, 0.5f), 0.0f);
 }
 
-TEST(Brdf, MatchesTheGltfFormulasAtOneConfiguration) {
-  // Dielectric, roughness 0.5 (alpha 0.25), specular 0.8, specularColor (1, 0.5, 30), metallic 0.25;
-  // wo at 30 degrees, wi at 50 degrees on the other side: independent evaluation of
-  // docs/material-model.md.
-  const glm::vec3 baseColor(0.6f, 0.4f, 0.2f), specularColor(1.0f, 0.5f, 30.0f);
-  const float alpha = 0.25f, specular = 0.8f, metallic = 0.25f;
-  const Material m = makeMaterial(0.5f, metallic, baseColor, specular, specularColor);
-  const glm::vec3 wo = directionAround(kUp, 30.0f, 0.0f), wi = directionAround(kUp, 50.0f, 180.0f);
+// docs/material-model.md's formulas written out independently of core/brdf.cpp, for one pair of
+// directions in the local frame (normal +Z): `dielectricF0` is the f0 of the material's ior
+// (0.04 at 1.5), which multiplies the specular colour inside the clamp.
+glm::vec3 gltfFormulas(const glm::vec3& baseColor, const glm::vec3& specularColor, float specular, float metallic,
+                       float alpha, float dielectricF0, const glm::vec3& wo, const glm::vec3& wi) {
   const glm::vec3 h = glm::normalize(wo + wi);
   const float vh = glm::dot(wo, h), w5 = std::pow(1.0f - vh, 5.0f);
-  const glm::vec3 dielectricF0 = glm::min(0.04f * specularColor, glm::vec3(1.0f));  // (0.04, 0.02, 1)
-  const glm::vec3 fr = dielectricF0 + (1.0f - dielectricF0) * w5;
+  const glm::vec3 f0 = glm::min(dielectricF0 * specularColor, glm::vec3(1.0f));
+  const glm::vec3 fr = f0 + (1.0f - f0) * w5;
   const float a2 = alpha * alpha, nh = h.z;
   const float d = a2 / (kPi * std::pow(nh * nh * (a2 - 1.0f) + 1.0f, 2.0f));
   const float nl = wi.z, nv = wo.z;
@@ -88,33 +85,33 @@ TEST(Brdf, MatchesTheGltfFormulasAtOneConfiguration) {
   const glm::vec3 dielectric =
       (1.0f - specular * std::max(fr.x, std::max(fr.y, fr.z))) * baseColor / kPi + specular * fr * d * v;
   const glm::vec3 metal = (baseColor + (1.0f - baseColor) * w5) * d * v;
-  const glm::vec3 expected = glm::mix(dielectric, metal, metallic);
+  return glm::mix(dielectric, metal, metallic);
+}
+
+TEST(Brdf, MatchesTheGltfFormulasAtOneConfiguration) {
+  // Dielectric, roughness 0.5 (alpha 0.25), specular 0.8, specularColor (1, 0.5, 30) (dielectric
+  // F0 (0.04, 0.02, 1)), metallic 0.25; wo at 30 degrees, wi at 50 degrees on the other side.
+  const glm::vec3 baseColor(0.6f, 0.4f, 0.2f), specularColor(1.0f, 0.5f, 30.0f);
+  const float specular = 0.8f, metallic = 0.25f;
+  const Material m = makeMaterial(0.5f, metallic, baseColor, specular, specularColor);
+  const glm::vec3 wo = directionAround(kUp, 30.0f, 0.0f), wi = directionAround(kUp, 50.0f, 180.0f);
+  const glm::vec3 expected = gltfFormulas(baseColor, specularColor, specular, metallic, 0.25f, 0.04f, wo, wi);
   EXPECT_LT(maxRelativeDifference(evalBrdf(m, kUp, wo, wi), expected), 1e-5f);
 }
 
-// KHR_materials_ior: the formulas above with 0.04 replaced by ((ior - 1) / (ior + 1))^2, written out
-// independently, at water's ior with a tinted specular colour, and at 1 (no F0) and 0 (F0 1).
+// KHR_materials_ior: the formulas with 0.04 replaced by ((ior - 1) / (ior + 1))^2, at water's ior
+// with a tinted specular colour, at 1 (no F0), 0 (F0 1) and diamond's.
 TEST(Brdf, IorReplacesTheDielectricF0) {
   EXPECT_FLOAT_EQ(dielectricF0(1.5f), 0.04f);
   EXPECT_EQ(dielectricF0(1.0f), 0.0f);
   EXPECT_EQ(dielectricF0(0.0f), 1.0f);
   for (const float ior : {1.33f, 1.0f, 0.0f, 2.42f}) {
     const glm::vec3 baseColor(0.6f, 0.4f, 0.2f), specularColor(1.0f, 0.5f, 3.0f);
-    const float alpha = 0.25f, specular = 0.8f;
-    Material m = makeMaterial(0.5f, 0.0f, baseColor, specular, specularColor);
+    Material m = makeMaterial(0.5f, 0.0f, baseColor, 0.8f, specularColor);
     m.ior = ior;
     const glm::vec3 wo = directionAround(kUp, 30.0f, 0.0f), wi = directionAround(kUp, 50.0f, 180.0f);
-    const glm::vec3 h = glm::normalize(wo + wi);
-    const float vh = glm::dot(wo, h), w5 = std::pow(1.0f - vh, 5.0f);
     const float r = (ior - 1.0f) / (ior + 1.0f);
-    const glm::vec3 f0 = glm::min(r * r * specularColor, glm::vec3(1.0f));
-    const glm::vec3 fr = f0 + (1.0f - f0) * w5;
-    const float a2 = alpha * alpha, nh = h.z;
-    const float d = a2 / (kPi * std::pow(nh * nh * (a2 - 1.0f) + 1.0f, 2.0f));
-    const float nl = wi.z, nv = wo.z;
-    const float v = 0.5f / (nl * std::sqrt(nv * nv * (1 - a2) + a2) + nv * std::sqrt(nl * nl * (1 - a2) + a2));
-    const glm::vec3 expected =
-        (1.0f - specular * std::max(fr.x, std::max(fr.y, fr.z))) * baseColor / kPi + specular * fr * d * v;
+    const glm::vec3 expected = gltfFormulas(baseColor, specularColor, 0.8f, 0.0f, 0.25f, r * r, wo, wi);
     EXPECT_LT(maxRelativeDifference(evalBrdf(m, kUp, wo, wi), expected), 1e-5f) << "ior " << ior;
     // The folded material (the engine's uniforms) gives the same lobes, and folds nothing twice.
     const Material folded = clampedToGltfRanges(m);

@@ -390,6 +390,18 @@ void addColouredQuad(GltfBuilder& builder, const std::array<glm::u8vec4, 4>& cor
   primitive["attributes"]["COLOR_0"] = builder.addAccessor(bytes.data(), bytes.size(), test::kUnsignedByte, 4, "VEC4", true);
 }
 
+// scene.json in `dir`: addColouredQuad with `material` as its one material, under a constant
+// environment of radiance 1, seen head-on from (0, 0, 2) (headOnPoint's camera).
+fs::path colouredQuadScene(const fs::path& dir, const std::array<glm::u8vec4, 4>& corners, const json& material) {
+  GltfBuilder builder;
+  addColouredQuad(builder, corners);
+  builder.document()["materials"] = {material};
+  if (material.contains("extensions")) builder.document()["extensionsUsed"] = {"KHR_materials_specular"};
+  builder.write(dir / "quad.glb", GltfBuilder::Storage::Glb);
+  writeEnvironment(dir / "constant.exr", 64, [](const glm::vec3&) { return glm::vec3(1.0f); });
+  return writeScene(dir, dir / "quad.glb", dir / "constant.exr", {0, 0, 2}, {0, 0, 0}, 45.0f);
+}
+
 // The quad's interpolated COLOR_0 at (x, y) in [-1, 1]^2 (barycentric in its triangle).
 glm::vec4 quadColour(const std::array<glm::u8vec4, 4>& corners, float x, float y) {
   const auto c = [&](int i) { return glm::vec4(corners[std::size_t(i)]) / 255.0f; };
@@ -412,15 +424,10 @@ glm::vec2 headOnPoint(int px, int py, int w, int h) {
 TEST_F(TextureAgreement, VertexColouredQuadMatchesTheAnalyticColours) {
   const std::array<glm::u8vec4, 4> corners = {glm::u8vec4(255, 0, 0, 255), glm::u8vec4(0, 255, 0, 255),
                                               glm::u8vec4(255, 255, 255, 255), glm::u8vec4(0, 0, 255, 255)};
-  GltfBuilder builder;
-  addColouredQuad(builder, corners);
-  builder.document()["materials"] = {
+  const fs::path scene = colouredQuadScene(
+      dir, corners,
       {{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.9, 1.0, 1.0}}, {"metallicFactor", 0.0}}},
-       {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.0}}}}}}};
-  builder.document()["extensionsUsed"] = {"KHR_materials_specular"};
-  builder.write(dir / "quad.glb", GltfBuilder::Storage::Glb);
-  writeEnvironment(dir / "constant.exr", 64, [](const glm::vec3&) { return glm::vec3(1.0f); });
-  const fs::path scene = writeScene(dir, dir / "quad.glb", dir / "constant.exr", {0, 0, 2}, {0, 0, 0}, 45.0f);
+       {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.0}}}}}});
   const int w = 64, h = 64;
   ASSERT_NO_FATAL_FAILURE(trace(scene, dir / "reference.exr", w, h, 256, "--integrator direct"));
   ASSERT_NO_FATAL_FAILURE(view(scene, dir / "raster.exr", "sh", w, h));
@@ -453,13 +460,8 @@ TEST_F(TextureAgreement, VertexColouredQuadMatchesTheAnalyticColours) {
 TEST_F(TextureAgreement, VertexAlphaMasksTheSamePixels) {
   const std::array<glm::u8vec4, 4> corners = {glm::u8vec4(40, 40, 40, 255), glm::u8vec4(40, 40, 40, 0),
                                               glm::u8vec4(40, 40, 40, 255), glm::u8vec4(40, 40, 40, 0)};
-  GltfBuilder builder;
-  addColouredQuad(builder, corners);
-  builder.document()["materials"] = {
-      {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.5}}};
-  builder.write(dir / "quad.glb", GltfBuilder::Storage::Glb);
-  writeEnvironment(dir / "constant.exr", 64, [](const glm::vec3&) { return glm::vec3(1.0f); });
-  const fs::path scene = writeScene(dir, dir / "quad.glb", dir / "constant.exr", {0, 0, 2}, {0, 0, 0}, 45.0f);
+  const fs::path scene = colouredQuadScene(
+      dir, corners, {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.5}});
   const int w = 64, h = 64;  // square: the quad fills the frame
   ASSERT_NO_FATAL_FAILURE(view(scene, dir / "raster.exr", "sh", w, h));
   ASSERT_NO_FATAL_FAILURE(
