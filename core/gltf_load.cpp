@@ -21,6 +21,7 @@
 
 #include "core/error.h"
 #include "core/gltf_model.h"
+#include "core/static_pose.h"
 #include "core/texture_image.h"
 
 namespace iblkit {
@@ -346,6 +347,14 @@ class Loader {
   }
 
  private:
+  // A primitive in its mesh's local space, with what deforms it (static_pose.h).
+  struct LocalPrimitive {
+    Mesh mesh;
+    std::vector<VertexInfluences> influences;  // JOINTS_n / WEIGHTS_n; empty without them
+    std::uint32_t largestJoint = 0;
+    std::vector<MorphTarget> targets;
+  };
+
   std::vector<int> rootNodes() const {
     if (model_.defaultScene >= int(model_.scenes.size()))
       fail(file_, "default scene " + std::to_string(model_.defaultScene) + " does not exist");
@@ -424,19 +433,39 @@ class Loader {
     if (std::size_t(meshIndex) >= model_.meshes.size())
       fail(file_,
            "node " + std::to_string(nodeIndex) + ": mesh " + std::to_string(meshIndex) + " does not exist");
-    std::vector<std::optional<Mesh>>& locals = localMeshes_[meshIndex];
+    std::vector<std::optional<LocalPrimitive>>& locals = localMeshes_[meshIndex];
     if (locals.empty()) {
       const tinygltf::Mesh& mesh = model_.meshes[meshIndex];
       for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
         locals.push_back(readPrimitive(meshIndex, int(p)));
     }
-    for (const std::optional<Mesh>& local : locals) {
+    const tinygltf::Node& node = model_.nodes[nodeIndex];
+    // Morph targets at their default weights: the node's, else the mesh's (section 3.7.2.2).
+    const std::vector<double>& defaultWeights = node.weights.empty() ? model_.meshes[meshIndex].weights : node.weights;
+    std::vector<float> weights;
+    for (const double w : defaultWeights) {
+      if (!std::isfinite(w))
+        fail(file_, "node " + std::to_string(nodeIndex) + " (mesh " + std::to_string(meshIndex) +
+                        "): morph target weights must be finite");
+      weights.push_back(float(w));
+    }
+    for (const std::optional<LocalPrimitive>& local : locals) {
       if (!local) continue;
-      Mesh mesh = *local;
+      Mesh mesh = local->mesh;
       mesh.source.node = nodeIndex;
-      mesh.isGround = isGroundNode(model_.nodes[nodeIndex]);
+      mesh.isGround = isGroundNode(node);
       const std::string where = primitiveName(mesh.source.mesh, mesh.source.primitive);
-      transformMesh(mesh, world);
+      applyMorphTargets(mesh, local->targets, weights);
+      // A skinned mesh's own node transform is not applied: its joints place it (section 3.7.3).
+      if (node.skin >= 0 && !local->influences.empty()) {
+        const std::vector<glm::mat4>& joints = jointMatrices(node.skin, nodeIndex);
+        if (local->largestJoint >= joints.size())
+          fail(file_, where + ": JOINTS refer to joint " + std::to_string(local->largestJoint) + " of skin " +
+                          std::to_string(node.skin) + ", which has " + std::to_string(joints.size()));
+        transformMeshPerVertex(mesh, skinningMatrices(local->influences, joints));
+      } else {
+        transformMesh(mesh, world);
+      }
       if (const long long v = firstVertexOutOfRange(mesh); v >= 0) {
         const glm::vec3& p = mesh.positions[std::size_t(v)];
         const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
@@ -458,8 +487,119 @@ class Loader {
     }
   }
 
+  // The world transform of node `index` through its parents (joints need not be in the scene's
+  // tree); a parent chain longer than the node count is a cycle.
+  glm::mat4 globalTransform(int index) {
+    if (parents_.empty()) {
+      parents_.assign(model_.nodes.size(), -1);
+      for (std::size_t n = 0; n < model_.nodes.size(); ++n)
+        for (const int child : model_.nodes[n].children)
+          if (child >= 0 && std::size_t(child) < parents_.size() && parents_[std::size_t(child)] < 0)
+            parents_[std::size_t(child)] = int(n);
+    }
+    glm::mat4 m(1.0f);
+    std::size_t steps = 0;
+    for (int n = index; n >= 0; n = parents_[std::size_t(n)]) {
+      if (++steps > model_.nodes.size()) fail(file_, "node " + std::to_string(index) + ": its parents form a cycle");
+      m = localTransform(model_.nodes[std::size_t(n)], n) * m;
+    }
+    return m;
+  }
+
+  // Skin `skin`'s joint matrices: each joint's world transform times its inverse bind matrix
+  // (identity when the skin has none), computed once.
+  const std::vector<glm::mat4>& jointMatrices(int skin, int nodeIndex) {
+    if (std::size_t(skin) >= model_.skins.size())
+      fail(file_, "node " + std::to_string(nodeIndex) + ": skin " + std::to_string(skin) + " does not exist");
+    if (jointMatrices_.empty()) jointMatrices_.resize(model_.skins.size());
+    std::optional<std::vector<glm::mat4>>& cached = jointMatrices_[std::size_t(skin)];
+    if (cached) return *cached;
+    const tinygltf::Skin& source = model_.skins[std::size_t(skin)];
+    const std::string what = "skin " + std::to_string(skin);
+    std::vector<glm::mat4> inverseBind(source.joints.size(), glm::mat4(1.0f));
+    if (source.inverseBindMatrices >= 0) {
+      const std::vector<glm::mat4> read =
+          gltf::readMatrices(model_, source.inverseBindMatrices, "inverseBindMatrices", file_);
+      if (read.size() < source.joints.size())
+        fail(file_, what + ": " + std::to_string(read.size()) + " inverse bind matrices for " +
+                        std::to_string(source.joints.size()) + " joints");
+      for (const glm::mat4& m : read)
+        for (int c = 0; c < 4; ++c)
+          for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) fail(file_, what + ": non-finite inverse bind matrix");
+      std::copy_n(read.begin(), source.joints.size(), inverseBind.begin());
+    }
+    std::vector<glm::mat4> joints;
+    for (std::size_t j = 0; j < source.joints.size(); ++j) {
+      const int joint = source.joints[j];
+      if (joint < 0 || std::size_t(joint) >= model_.nodes.size())
+        fail(file_, what + ": joint node " + std::to_string(joint) + " does not exist");
+      joints.push_back(globalTransform(joint) * inverseBind[j]);
+    }
+    cached = std::move(joints);
+    return *cached;
+  }
+
+  // JOINTS_n and WEIGHTS_n (n = 0, 1): joints unsigned byte or short, weights float or normalised
+  // unsigned byte or short, finite and >= 0; empty when the primitive has no JOINTS_0 and WEIGHTS_0.
+  std::vector<VertexInfluences> readInfluences(const tinygltf::Primitive& primitive, std::size_t vertexCount,
+                                               const std::string& where, std::uint32_t& largestJoint) const {
+    std::vector<VertexInfluences> influences;
+    for (int set = 0; set < 2; ++set) {
+      const std::string jointsName = "JOINTS_" + std::to_string(set), weightsName = "WEIGHTS_" + std::to_string(set);
+      const auto joints = primitive.attributes.find(jointsName);
+      const auto weights = primitive.attributes.find(weightsName);
+      if (joints == primitive.attributes.end() || weights == primitive.attributes.end()) break;
+      if (joints->second >= 0 && std::size_t(joints->second) < model_.accessors.size()) {
+        const int type = model_.accessors[std::size_t(joints->second)].componentType;
+        if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+          fail(file_, where + ": " + jointsName + " must be unsigned byte or unsigned short");
+      }
+      const std::vector<float> j = gltf::readFloats(model_, joints->second, 4, jointsName, file_);
+      const std::vector<float> w = gltf::readFloats(model_, weights->second, 4, weightsName, file_);
+      if (j.size() != 4 * vertexCount || w.size() != 4 * vertexCount)
+        fail(file_, where + ": " + jointsName + " or " + weightsName + " does not have one element per vertex (" +
+                        std::to_string(vertexCount) + ")");
+      if (influences.empty()) influences.resize(vertexCount);
+      for (std::size_t v = 0; v < vertexCount; ++v)
+        for (int k = 0; k < 4; ++k) {
+          const float weight = w[4 * v + std::size_t(k)];
+          if (!(weight >= 0.0f) || !std::isfinite(weight))
+            fail(file_, where + ": " + weightsName + " has a negative or non-finite weight");
+          const auto joint = std::uint32_t(j[4 * v + std::size_t(k)]);
+          influences[v].joints[std::size_t(4 * set + k)] = joint;
+          influences[v].weights[std::size_t(4 * set + k)] = weight;
+          if (weight > 0.0f) largestJoint = std::max(largestJoint, joint);
+        }
+    }
+    return influences;
+  }
+
+  // Morph targets' POSITION, NORMAL and TANGENT displacements (VEC3 float or, with
+  // KHR_mesh_quantization, normalised integers), finite, one per vertex.
+  std::vector<MorphTarget> readMorphTargets(const tinygltf::Primitive& primitive, std::size_t vertexCount,
+                                            const std::string& where) const {
+    std::vector<MorphTarget> targets;
+    for (std::size_t t = 0; t < primitive.targets.size(); ++t) {
+      MorphTarget target;
+      for (const auto& [semantic, accessor] : primitive.targets[t]) {
+        if (semantic != "POSITION" && semantic != "NORMAL" && semantic != "TANGENT") continue;
+        const std::string what = where + ": morph target " + std::to_string(t) + " " + semantic;
+        const std::vector<float> values = gltf::readFloats(model_, accessor, 3, "target " + semantic, file_);
+        if (values.size() != 3 * vertexCount)
+          fail(file_, what + " has " + std::to_string(values.size() / 3) + " elements but POSITION has " +
+                          std::to_string(vertexCount));
+        requireFinite(values, what + ": non-finite value", file_);
+        (semantic == "POSITION" ? target.positions : semantic == "NORMAL" ? target.normals : target.tangents) =
+            toVectors<glm::vec3>(values);
+      }
+      targets.push_back(std::move(target));
+    }
+    return targets;
+  }
+
   // A primitive in its mesh's local space, checked; nullopt for points and lines.
-  std::optional<Mesh> readPrimitive(int meshIndex, int primitiveIndex) {
+  std::optional<LocalPrimitive> readPrimitive(int meshIndex, int primitiveIndex) {
     const tinygltf::Primitive& primitive = model_.meshes[meshIndex].primitives[primitiveIndex];
     const std::string where = primitiveName(meshIndex, primitiveIndex);
     if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP) {
@@ -526,7 +666,11 @@ class Loader {
                         std::to_string(vertexCount) + " vertices)");
     mesh.indices = triangleList(std::move(vertices), primitive.mode, where, file_);
     mesh.material = materialIndex(primitive.material, where);
-    return mesh;
+    LocalPrimitive local;
+    local.influences = readInfluences(primitive, vertexCount, where, local.largestJoint);
+    local.targets = readMorphTargets(primitive, vertexCount, where);
+    local.mesh = std::move(mesh);
+    return local;
   }
 
   // COLOR_0 (glTF 2.0 section 3.7.2.1): VEC3 or VEC4 of floats, normalised unsigned bytes or
@@ -727,7 +871,9 @@ class Loader {
   const tinygltf::Model& model_;
   const fs::path& file_;
   GltfContents contents_;
-  std::vector<std::vector<std::optional<Mesh>>> localMeshes_;  // per glTF mesh, per primitive
+  std::vector<std::vector<std::optional<LocalPrimitive>>> localMeshes_;  // per glTF mesh, per primitive
+  std::vector<std::optional<std::vector<glm::mat4>>> jointMatrices_;     // per skin, once computed
+  std::vector<int> parents_;  // per node, its parent (-1: a root), for globalTransform
   int defaultMaterial_ = -1;
   bool cameraZfarMissing_ = false;
 };

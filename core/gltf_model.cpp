@@ -7,6 +7,7 @@
 #include <array>
 #include <cctype>
 #include <cstring>
+#include <glm/gtc/type_ptr.hpp>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -291,9 +292,11 @@ AccessorBytes locate(const tinygltf::Model& model, int index, int components, co
   const std::string name = accessorName(index, semantic);
   if (index < 0 || std::size_t(index) >= model.accessors.size()) fail(file, name + " does not exist");
   const tinygltf::Accessor& accessor = model.accessors[index];
-  if (componentCount(accessor.type) != components)
-    fail(file, name + " has " + std::to_string(componentCount(accessor.type)) +
-                   " components per element, expected " + std::to_string(components));
+  // MAT4 (inverse bind matrices) is 16 components, column-major; float MAT4 has no padding.
+  const int declared = accessor.type == TINYGLTF_TYPE_MAT4 ? 16 : componentCount(accessor.type);
+  if (declared != components)
+    fail(file, name + " has " + std::to_string(declared) + " components per element, expected " +
+                   std::to_string(components));
   const int size = componentSize(accessor.componentType);
   if (size == 0)
     fail(file, name + " has unsupported component type " + std::to_string(accessor.componentType));
@@ -758,6 +761,18 @@ std::vector<float> readFloats(const tinygltf::Model& model, int accessor, int co
       values[i * components + c] = componentAsFloat(bytes.data + i * bytes.stride + std::size_t(c) * size,
                                                     info.componentType, info.normalized);
   return values;
+}
+
+std::vector<glm::mat4> readMatrices(const tinygltf::Model& model, int accessor, const std::string& semantic,
+                                    const fs::path& file) {
+  if (accessor >= 0 && std::size_t(accessor) < model.accessors.size() &&
+      model.accessors[accessor].componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    fail(file, accessorName(accessor, semantic) + " must have float components");
+  const std::vector<float> values = readFloats(model, accessor, 16, semantic, file);
+  std::vector<glm::mat4> matrices(values.size() / 16);
+  for (std::size_t i = 0; i < matrices.size(); ++i)
+    std::memcpy(glm::value_ptr(matrices[i]), values.data() + 16 * i, 16 * sizeof(float));  // column-major, as glm
+  return matrices;
 }
 
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor, const fs::path& file) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <span>
 #include <string>
 #include <vector>
@@ -52,6 +53,10 @@ std::vector<float> readFloats(const tinygltf::Model& model, int accessor, int co
                               const std::string& semantic, const std::filesystem::path& file);
 
 // Reads an index accessor (SCALAR, unsigned byte, short or int) as 32-bit indices.
+// Reads a MAT4 float accessor (skin.inverseBindMatrices), column-major as glTF and glm store it.
+std::vector<glm::mat4> readMatrices(const tinygltf::Model& model, int accessor, const std::string& semantic,
+                                    const std::filesystem::path& file);
+
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor,
                                        const std::filesystem::path& file);
 

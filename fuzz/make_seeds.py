@@ -271,6 +271,38 @@ def sparse_glb():
 
 put("gltf", "seed_sparse.glb", sparse_glb())
 
+
+def skinned_glb():
+    """The triangle skinned to two joints (one with an inverse bind matrix) and with a morph target
+    at weight 0.5, so that the fuzzer reaches the static pose's readers."""
+    doc, buffer = triangle_gltf(embed=False)
+    def view(data):
+        nonlocal buffer
+        buffer += b"\0" * (-len(buffer) % 4)
+        doc["bufferViews"].append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data)})
+        buffer += data
+        return len(doc["bufferViews"]) - 1
+    def accessor(data, count, kind, component=5126):
+        doc["accessors"].append({"bufferView": view(data), "componentType": component, "count": count, "type": kind})
+        return len(doc["accessors"]) - 1
+    attributes = doc["meshes"][0]["primitives"][0]["attributes"]
+    attributes["JOINTS_0"] = accessor(bytes([0, 1, 0, 0] * 3), 3, "VEC4", 5121)
+    attributes["WEIGHTS_0"] = accessor(struct.pack("<12f", 1, 0, 0, 0, 0.5, 0.5, 0, 0, 0, 1, 0, 0), 3, "VEC4")
+    doc["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": accessor(struct.pack("<9f", 0, 0, 0, 0, 0, 1, 0, 0, 0), 3, "VEC3")}]
+    doc["meshes"][0]["weights"] = [0.5]
+    identity = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
+    moved = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1]
+    matrices = accessor(struct.pack("<32f", *identity, *moved), 2, "MAT4")
+    doc["nodes"] += [{"translation": [0, 0, 1]}, {"translation": [0, 1, 0], "rotation": [0, 0.7071, 0, 0.7071]}]
+    doc["nodes"][0]["skin"] = 0
+    doc["nodes"][0]["children"] += [3, 4]
+    doc["skins"] = [{"joints": [3, 4], "inverseBindMatrices": matrices}]
+    doc["buffers"][0]["byteLength"] = len(buffer)
+    return glb(doc, buffer)
+
+
+put("gltf", "seed_skinned.glb", skinned_glb())
+
 # --- scene .json (fuzz_loaders.cpp puts model.gltf and env.hdr beside the scene) ---------------
 put("scene", "seed_textured.json", json.dumps({
     "models": [{"file": "model.gltf", "material": {

@@ -442,6 +442,70 @@ TEST_F(GltfLoad, NamesTheMaterialExtensionsItDoesNotRender) {
   EXPECT_EQ(load(builder).materials[2].ior, 0.0f);
 }
 
+// A skinned triangle (glTF 2.0 section 3.7.3) in its static pose: joint 0 moved by +5 in z, joint 1
+// turned 90 degrees about +Y (x -> -z) with an inverse bind matrix that undoes its +2 in y, so it
+// only turns. Vertex 0 follows joint 0, vertex 2 joint 1, vertex 1 half each (weights 2 and 2:
+// divided by their sum). The mesh node's own transform (scale 100) is not applied.
+TEST_F(GltfLoad, SkinnedMeshTakesItsJointsPose) {
+  GltfBuilder builder;
+  const std::uint8_t joints[12] = {0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0};
+  const std::vector<glm::vec4> weights = {glm::vec4(1, 0, 0, 0), glm::vec4(2, 2, 0, 0), glm::vec4(1, 0, 0, 0)};
+  const std::vector<glm::vec3> positions = {glm::vec3(1, 0, 0), glm::vec3(1, 1, 0), glm::vec3(1, 0, 0)};
+  const int mesh = builder.addMesh(json::array(
+      {{{"attributes",
+         {{"POSITION", builder.addFloats(positions)},
+          {"JOINTS_0", builder.addAccessor(joints, sizeof(joints), test::kUnsignedByte, 3, "VEC4")},
+          {"WEIGHTS_0", builder.addFloats(weights)}}}}}));
+  const float s = std::sqrt(0.5f);
+  const int joint0 = builder.addNode({{"translation", {0, 0, 5}}}, false);
+  const int joint1 = builder.addNode({{"translation", {0, 2, 0}}, {"rotation", {0, s, 0, s}}}, false);
+  const glm::mat4 inverseBind1 = glm::translate(glm::mat4(1.0f), glm::vec3(0, -2, 0));
+  std::vector<float> matrices(32, 0.0f);
+  for (int i = 0; i < 4; ++i) matrices[std::size_t(5 * i)] = 1.0f;
+  std::memcpy(matrices.data() + 16, &inverseBind1[0][0], 16 * sizeof(float));
+  builder.document()["accessors"].push_back(
+      {{"bufferView", builder.addBufferView(matrices.data(), matrices.size() * sizeof(float))},
+       {"componentType", test::kFloat},
+       {"count", 2},
+       {"type", "MAT4"}});
+  builder.document()["skins"] = {
+      {{"joints", {joint0, joint1}}, {"inverseBindMatrices", int(builder.document()["accessors"].size()) - 1}}};
+  builder.addNode({{"children", {joint0, joint1}}});
+  builder.addNode({{"mesh", mesh}, {"skin", 0}, {"scale", {100, 100, 100}}});
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 1u);
+  const std::vector<glm::vec3>& p = contents.meshes[0].positions;
+  EXPECT_LT(glm::distance(p[0], glm::vec3(1, 0, 5)), 1e-5f) << p[0].x << " " << p[0].y << " " << p[0].z;
+  // Half of (1, 1, 5) and half of the turned (0, 1, -1).
+  EXPECT_LT(glm::distance(p[1], glm::vec3(0.5f, 1.0f, 2.0f)), 1e-5f) << p[1].x << " " << p[1].y << " " << p[1].z;
+  EXPECT_LT(glm::distance(p[2], glm::vec3(0, 0, -1)), 1e-5f) << p[2].x << " " << p[2].y << " " << p[2].z;
+
+  // A joint index past the skin's joints is an error naming both.
+  const std::uint8_t far[12] = {0, 0, 0, 0, 7, 0, 0, 0, 1, 0, 0, 0};
+  builder.document()["meshes"][mesh]["primitives"][0]["attributes"]["JOINTS_0"] =
+      builder.addAccessor(far, sizeof(far), test::kUnsignedByte, 3, "VEC4");
+  EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: JOINTS refer to joint 7 of skin 0, which has 2"),
+            std::string::npos)
+      << loadError(builder);
+}
+
+// Morph targets at their default weights (section 3.7.2.2): the mesh's weights, or the node's,
+// which override them.
+TEST_F(GltfLoad, MorphTargetsAtTheirDefaultWeights) {
+  GltfBuilder builder;
+  const std::vector<glm::vec3> lift = {glm::vec3(0), glm::vec3(0), glm::vec3(0, 0, 2)};
+  const int mesh = builder.addMesh(json::array({{{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}},
+                                                 {"targets", {{{"POSITION", builder.addFloats(lift)}}}}}}));
+  builder.document()["meshes"][mesh]["weights"] = {0.5};
+  builder.addNode({{"mesh", mesh}});
+  builder.addNode({{"mesh", mesh}, {"weights", {1.0}}});
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 2u);
+  EXPECT_EQ(contents.meshes[0].positions[2], glm::vec3(0, 1, 1));
+  EXPECT_EQ(contents.meshes[1].positions[2], glm::vec3(0, 1, 2));
+  EXPECT_EQ(contents.meshes[0].positions[1], kTriangle[1]);
+}
+
 TEST_F(GltfLoad, ConvertsMaterials) {
   GltfBuilder builder;
   json& materials = builder.document()["materials"];
