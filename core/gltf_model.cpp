@@ -2,6 +2,7 @@
 
 #include <draco/compression/decode.h>
 #include <draco/core/decoder_buffer.h>
+#include <meshoptimizer.h>
 
 #include <algorithm>
 #include <array>
@@ -25,6 +26,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
+constexpr const char* kMeshoptExtension = "EXT_meshopt_compression";
 
 // ---------------------------------------------------------------------------------------------
 // Files and folders
@@ -202,6 +204,27 @@ std::vector<DracoIndices> takeDracoIndices(nlohmann::json& document) {
   return taken;
 }
 
+// EXT_meshopt_compression's fallback buffers (extension `fallback: true`) may have no data: a
+// reader that decodes the compressed views never reads them. tinygltf would copy a .glb's BIN
+// chunk into any buffer without a uri (and fail where the fallback is the larger), or look for a
+// file: each gets a 3-byte data URI instead. Returns whether the document changed. A view left
+// pointing into one reads past its 3 bytes: an error (bufferViewBytes).
+bool placeholdMeshoptFallbacks(nlohmann::json& document) {
+  if (!document.contains("buffers") || !document["buffers"].is_array()) return false;
+  bool changed = false;
+  for (nlohmann::json& buffer : document["buffers"]) {
+    if (!buffer.is_object() || buffer.contains("uri") || !buffer.contains("extensions") ||
+        !buffer["extensions"].is_object() || !buffer["extensions"].contains(kMeshoptExtension))
+      continue;
+    const nlohmann::json& extension = buffer["extensions"][kMeshoptExtension];
+    if (!extension.is_object() || !extension.contains("fallback") || extension["fallback"] != true) continue;
+    buffer["uri"] = "data:application/octet-stream;base64,AAAA";
+    buffer["byteLength"] = 3;
+    changed = true;
+  }
+  return changed;
+}
+
 void restoreDracoIndices(tinygltf::Model& model, const std::vector<DracoIndices>& taken) {
   for (const DracoIndices& t : taken)
     if (t.mesh < model.meshes.size() && t.primitive < model.meshes[t.mesh].primitives.size())
@@ -229,7 +252,7 @@ std::vector<std::string> messageLines(const std::string& text) {
 // them is an error; merely using them is handled per texture (gltf_load.cpp).
 void checkRequiredExtensions(const tinygltf::Model& model, const fs::path& file) {
   for (const std::string& name : model.extensionsRequired) {
-    const bool known = name == kDracoExtension || name == "KHR_mesh_quantization" ||
+    const bool known = name == kDracoExtension || name == kMeshoptExtension || name == "KHR_mesh_quantization" ||
                        name.rfind("KHR_materials_", 0) == 0 || name == "KHR_texture_transform" ||
                        name == "EXT_texture_webp";
     if (!known)
@@ -539,6 +562,97 @@ void decodeDracoPrimitive(tinygltf::Model& model, tinygltf::Primitive& primitive
   primitive.extensions.erase(kDracoExtension);
 }
 
+// ---------------------------------------------------------------------------------------------
+// EXT_meshopt_compression (meshoptimizer's codecs, the Debian package; the extension's README)
+
+// The most bytes one compressed view may decode to.
+constexpr std::size_t kMaxMeshoptViewBytes = std::size_t(256) << 20;
+
+std::size_t meshoptSize(const tinygltf::Value& extension, const char* key, bool required, const std::string& what,
+                        const fs::path& file) {
+  const tinygltf::Value& value = extension.Get(key);
+  if (!value.IsNumber()) {
+    if (required) fail(file, what + " needs an integer " + key);
+    return 0;
+  }
+  const double number = value.GetNumberAsDouble();
+  if (!(number >= 0.0 && number <= 9.0e15) || number != double(std::size_t(number)))
+    fail(file, what + "." + key + " must be an integer >= 0");
+  return std::size_t(number);
+}
+
+// Each buffer view with the extension is decoded from its compressed range (mode ATTRIBUTES,
+// TRIANGLES or INDICES; filter NONE, OCTAHEDRAL, QUATERNION or EXPONENTIAL) into a new buffer, and
+// the view points there; the extension is then gone from the model, as if the file had been
+// written uncompressed.
+void decodeMeshopt(tinygltf::Model& model, const fs::path& file) {
+  for (std::size_t v = 0; v < model.bufferViews.size(); ++v) {
+    tinygltf::BufferView& view = model.bufferViews[v];
+    const auto found = view.extensions.find(kMeshoptExtension);
+    if (found == view.extensions.end()) continue;
+    const tinygltf::Value extension = found->second;
+    const std::string what = "buffer view " + std::to_string(v) + " " + kMeshoptExtension;
+    if (!extension.IsObject()) fail(file, what + " must be an object");
+    const std::size_t buffer = meshoptSize(extension, "buffer", true, what, file);
+    const std::size_t offset = meshoptSize(extension, "byteOffset", false, what, file);
+    const std::size_t length = meshoptSize(extension, "byteLength", true, what, file);
+    const std::size_t stride = meshoptSize(extension, "byteStride", true, what, file);
+    const std::size_t count = meshoptSize(extension, "count", true, what, file);
+    const tinygltf::Value& modeValue = extension.Get("mode");
+    const tinygltf::Value& filterValue = extension.Get("filter");
+    const std::string mode = modeValue.IsString() ? modeValue.Get<std::string>() : "";
+    const std::string filter = filterValue.IsString() ? filterValue.Get<std::string>() : "NONE";
+    if (buffer >= model.buffers.size()) fail(file, what + ": buffer " + std::to_string(buffer) + " does not exist");
+    const std::vector<unsigned char>& data = model.buffers[buffer].data;
+    if (offset > data.size() || length > data.size() - offset)
+      fail(file, what + " reads past the end of buffer " + std::to_string(buffer));
+    if (stride == 0 || stride > 256) fail(file, what + ".byteStride must be in 1..256");
+    if (count > kMaxMeshoptViewBytes / stride)
+      fail(file, what + " decodes to " + std::to_string(count) + " x " + std::to_string(stride) +
+                     " bytes, beyond the limit of " + std::to_string(kMaxMeshoptViewBytes >> 20) + " MiB");
+    if (count * stride < view.byteLength)
+      fail(file, what + " decodes to " + std::to_string(count * stride) + " bytes, less than the view's " +
+                     std::to_string(view.byteLength));
+    std::vector<unsigned char> decoded(count * stride);
+    const unsigned char* source = data.data() + offset;
+    int status = 0;
+    if (mode == "ATTRIBUTES") {
+      if (stride % 4 != 0) fail(file, what + ": ATTRIBUTES needs a byteStride that is a multiple of 4");
+      status = meshopt_decodeVertexBuffer(decoded.data(), count, stride, source, length);
+    } else if (mode == "TRIANGLES" || mode == "INDICES") {
+      if (stride != 2 && stride != 4) fail(file, what + ": " + mode + " needs a byteStride of 2 or 4");
+      if (mode == "TRIANGLES" && count % 3 != 0) fail(file, what + ": TRIANGLES needs a count divisible by 3");
+      status = mode == "TRIANGLES" ? meshopt_decodeIndexBuffer(decoded.data(), count, stride, source, length)
+                                   : meshopt_decodeIndexSequence(decoded.data(), count, stride, source, length);
+    } else {
+      fail(file, what + ": unknown mode '" + printableExcerpt(mode) + "' (expected ATTRIBUTES, TRIANGLES or INDICES)");
+    }
+    if (status != 0) fail(file, what + ": compressed data does not decode (meshoptimizer error " + std::to_string(status) + ")");
+    if (filter != "NONE") {
+      if (mode != "ATTRIBUTES") fail(file, what + ": filter " + printableExcerpt(filter) + " needs mode ATTRIBUTES");
+      if (filter == "OCTAHEDRAL" && (stride == 4 || stride == 8))
+        meshopt_decodeFilterOct(decoded.data(), count, stride);
+      else if (filter == "QUATERNION" && stride == 8)
+        meshopt_decodeFilterQuat(decoded.data(), count, stride);
+      else if (filter == "EXPONENTIAL" && stride % 4 == 0)
+        meshopt_decodeFilterExp(decoded.data(), count, stride);
+      else
+        fail(file, what + ": filter '" + printableExcerpt(filter) + "' with byteStride " + std::to_string(stride) +
+                       " (OCTAHEDRAL 4 or 8, QUATERNION 8, EXPONENTIAL a multiple of 4)");
+    }
+    decoded.resize(view.byteLength ? view.byteLength : decoded.size());
+    tinygltf::Buffer out;
+    out.data = std::move(decoded);
+    model.buffers.push_back(std::move(out));
+    view.buffer = int(model.buffers.size()) - 1;
+    view.byteOffset = 0;
+    view.byteLength = model.buffers.back().data.size();
+    view.extensions.erase(kMeshoptExtension);
+  }
+  std::erase(model.extensionsUsed, kMeshoptExtension);
+  std::erase(model.extensionsRequired, kMeshoptExtension);
+}
+
 void decodeDraco(tinygltf::Model& model, const fs::path& file) {
   for (std::size_t m = 0; m < model.meshes.size(); ++m)
     for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
@@ -573,7 +687,8 @@ tinygltf::Model parse(const fs::path& file) {
   if (document.is_object()) {
     checkBufferUris(document, scene.folder, file);
     dracoIndices = takeDracoIndices(document);
-    if (!dracoIndices.empty()) {
+    const bool fallbacks = placeholdMeshoptFallbacks(document);
+    if (!dracoIndices.empty() || fallbacks) {
       const std::string json = document.dump();
       bytes = binary ? replaceGlbJson(bytes, *layout, json)
                      : std::vector<unsigned char>(json.begin(), json.end());
@@ -676,6 +791,7 @@ tinygltf::Model readModel(const fs::path& file) {
   try {
     tinygltf::Model model = parse(file);
     checkRequiredExtensions(model, file);
+    decodeMeshopt(model, file);
     decodeDraco(model, file);
     return model;
   } catch (const Error&) {

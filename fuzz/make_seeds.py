@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Regenerates the hand-made seeds of the fuzz corpora, fuzz/corpus/<target>/seed_* (committed; run
 by hand after edits). Small valid inputs of each format, so the fuzzer starts from files that get
-past the first checks. The other seeds (tests/data, assets/) are picked up by scripts/fuzz.sh at
+past the first checks. One seed is not made here: fuzz/corpus/gltf/seed_meshopt.glb is the file of
+tests/core/gltf_meshopt_test.cpp's first test (compressed by meshoptimizer's encoders, which Python
+does not have), copied by hand. The other seeds (tests/data, assets/) are picked up by scripts/fuzz.sh at
 run time; the findings (fuzz/corpus/<target>/finding_*) are added by hand, one per finding.
 """
 import base64

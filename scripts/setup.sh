@@ -8,7 +8,7 @@ packages=(
   libembree-dev libtbb-dev
   libglfw3-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libgles-dev libopengl-dev libepoxy-dev
   glslang-tools glslang-dev
-  libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libstb-dev libwebp-dev
+  libglm-dev libtinygltf-dev libdraco-dev libmeshoptimizer-dev nlohmann-json3-dev libstb-dev libwebp-dev
   libopenexr-dev libimath-dev zlib1g-dev
   libgtest-dev libbenchmark-dev libcli11-dev libimgui-dev
   clang libclang-rt-dev  # make fuzz: clang and its libFuzzer runtime (libclang_rt.fuzzer)

@@ -735,7 +735,7 @@ const BadFile kBadFiles[] = {
      "translation or matrix)"},
     {"points_only.gltf", "no triangle meshes"},
     {"node_cycle.gltf", "node 0 is reached twice in the scene graph (a cycle or two parents)"},
-    {"unsupported_extension.gltf", "requires unsupported extension EXT_meshopt_compression"},
+    {"unsupported_extension.gltf", "requires unsupported extension EXT_mesh_gpu_instancing"},
 };
 
 TEST_F(GltfLoad, BadFilesGiveExactMessages) {

@@ -137,7 +137,15 @@ void GltfBuilder::write(const std::filesystem::path& path, Storage storage) cons
     } else if (storage == Storage::DataUri) {
       buffer["uri"] = "data:application/octet-stream;base64," + base64(buffer_);
     }
-    document["buffers"] = {buffer};
+    // Buffer 0 is the builder's; buffers a test added after it (EXT_meshopt_compression's
+    // fallback buffer, say) are kept.
+    nlohmann::json buffers = document_.contains("buffers") && document_["buffers"].is_array() ? document_["buffers"]
+                                                                                             : nlohmann::json::array();
+    if (buffers.empty())
+      buffers.push_back(buffer);
+    else
+      buffers[0] = buffer;
+    document["buffers"] = buffers;
   }
   std::string json = document.dump();
   if (storage != Storage::Glb) {
