@@ -13,6 +13,7 @@
 #include <numeric>
 #include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <tbb/parallel_for.h>
@@ -333,6 +334,9 @@ class Loader {
     for (std::size_t i = 0; i < model_.materials.size(); ++i)
       contents_.materials.push_back(convertMaterial(model_.materials[i], int(i), model_.textures.size(), file_));
     warnUnrenderedMaterialExtensions(model_, file_);
+    if (!model_.lights.empty())
+      warn(file_, "KHR_lights_punctual: " + std::to_string(model_.lights.size()) +
+                      " light(s) not rendered (iblkit lights a scene with its environment map only)");
     loadTextures();
 
     localMeshes_.resize(model_.meshes.size());
@@ -415,11 +419,58 @@ class Loader {
       visited[index] = true;
       const tinygltf::Node& node = model_.nodes[index];
       const glm::mat4 world = parent * localTransform(node, index);
-      if (node.mesh >= 0) instantiate(node.mesh, index, world);
+      if (node.mesh >= 0) {
+        const std::vector<glm::mat4> instances = instanceTransforms(node, index);
+        if (instances.empty()) instantiate(node.mesh, index, world);
+        for (const glm::mat4& instance : instances) instantiate(node.mesh, index, world * instance);
+      }
       if (node.camera >= 0 && !contents_.camera) readCamera(node.camera, index, world);
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
         stack.emplace_back(*child, world);
     }
+  }
+
+  // EXT_mesh_gpu_instancing: the node's mesh drawn once per instance, each placed by its
+  // TRANSLATION, ROTATION and SCALE (any of them; the others identity) in the node's space. Empty
+  // for a node without the extension. ROTATION is float or normalised byte or short (the
+  // extension's types, as KHR_mesh_quantization's); at most kMaxInstances per node.
+  static constexpr std::size_t kMaxInstances = 1u << 20;
+  std::vector<glm::mat4> instanceTransforms(const tinygltf::Node& node, int index) const {
+    const auto found = node.extensions.find("EXT_mesh_gpu_instancing");
+    if (found == node.extensions.end()) return {};
+    const std::string what = "node " + std::to_string(index) + " EXT_mesh_gpu_instancing";
+    const tinygltf::Value& attributes = found->second.Get("attributes");
+    if (!attributes.IsObject()) fail(file_, what + " needs an attributes object");
+    std::vector<float> translations, rotations, scales;
+    std::size_t count = 0;
+    bool any = false;
+    const std::array<std::tuple<const char*, int, std::vector<float>*>, 3> streams = {
+        {{"TRANSLATION", 3, &translations}, {"ROTATION", 4, &rotations}, {"SCALE", 3, &scales}}};
+    for (const auto& [semantic, components, values] : streams) {
+      const tinygltf::Value& accessor = attributes.Get(semantic);
+      if (!accessor.IsInt()) continue;
+      *values = gltf::readFloats(model_, accessor.GetNumberAsInt(), components, semantic, file_);
+      requireFinite(*values, what + ": non-finite " + semantic + " value", file_);
+      const std::size_t n = values->size() / std::size_t(components);
+      if (any && n != count) fail(file_, what + ": TRANSLATION, ROTATION and SCALE have different counts");
+      count = n;
+      any = true;
+    }
+    if (!any) fail(file_, what + " has no TRANSLATION, ROTATION or SCALE accessor");
+    if (count > kMaxInstances)
+      fail(file_, what + ": " + std::to_string(count) + " instances, beyond the limit of " + std::to_string(kMaxInstances));
+    std::vector<glm::mat4> transforms(count, glm::mat4(1.0f));
+    for (std::size_t i = 0; i < count; ++i) {
+      glm::mat4& m = transforms[i];
+      if (!translations.empty()) m = glm::translate(m, glm::make_vec3(&translations[3 * i]));
+      if (!rotations.empty()) {
+        const glm::quat q(rotations[4 * i + 3], rotations[4 * i], rotations[4 * i + 1], rotations[4 * i + 2]);
+        if (!(glm::length(q) > 0.0f)) fail(file_, what + ": instance " + std::to_string(i) + " has a zero rotation");
+        m *= glm::mat4_cast(glm::normalize(q));
+      }
+      if (!scales.empty()) m = glm::scale(m, glm::make_vec3(&scales[3 * i]));
+    }
+    return transforms;
   }
 
   // The baker marks the ground of a .json scene with node extras {"isGround": true}

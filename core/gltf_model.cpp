@@ -253,6 +253,7 @@ std::vector<std::string> messageLines(const std::string& text) {
 void checkRequiredExtensions(const tinygltf::Model& model, const fs::path& file) {
   for (const std::string& name : model.extensionsRequired) {
     const bool known = name == kDracoExtension || name == kMeshoptExtension || name == "KHR_mesh_quantization" ||
+                       name == "EXT_mesh_gpu_instancing" ||
                        name.rfind("KHR_materials_", 0) == 0 || name == "KHR_texture_transform" ||
                        name == "EXT_texture_webp";
     if (!known)

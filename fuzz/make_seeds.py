@@ -305,6 +305,33 @@ def skinned_glb():
 
 put("gltf", "seed_skinned.glb", skinned_glb())
 
+
+def instanced_gltf():
+    """The triangle drawn three times by EXT_mesh_gpu_instancing (translations, rotations, scales),
+    with a KHR_lights_punctual light, so that the fuzzer reaches the instance reader."""
+    doc, buffer = triangle_gltf(embed=False)
+    def accessor(data, count, kind):
+        buffer_offset = len(buffer)
+        doc["bufferViews"].append({"buffer": 0, "byteOffset": buffer_offset, "byteLength": len(data)})
+        doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126, "count": count,
+                                 "type": kind})
+        return len(doc["accessors"]) - 1, data
+    t, td = accessor(struct.pack("<9f", 0, 0, 0, 1, 0, 0, 2, 0, 0), 3, "VEC3")
+    buffer += td
+    r, rd = accessor(struct.pack("<12f", 0, 0, 0, 1, 0, 0.7071, 0, 0.7071, 0, 1, 0, 0), 3, "VEC4")
+    buffer += rd
+    s, sd = accessor(struct.pack("<9f", 1, 1, 1, 2, 2, 2, 0.5, 0.5, 0.5), 3, "VEC3")
+    buffer += sd
+    doc["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": t, "ROTATION": r, "SCALE": s}}}
+    doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 3}]}}
+    doc["extensionsUsed"] += ["EXT_mesh_gpu_instancing", "KHR_lights_punctual"]
+    doc["buffers"][0]["byteLength"] = len(buffer)
+    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()
+    return json.dumps(doc)
+
+
+put("gltf", "seed_instanced.gltf", instanced_gltf())
+
 # --- scene .json (fuzz_loaders.cpp puts model.gltf and env.hdr beside the scene) ---------------
 put("scene", "seed_textured.json", json.dumps({
     "models": [{"file": "model.gltf", "material": {

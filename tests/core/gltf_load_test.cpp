@@ -506,6 +506,46 @@ TEST_F(GltfLoad, MorphTargetsAtTheirDefaultWeights) {
   EXPECT_EQ(contents.meshes[0].positions[1], kTriangle[1]);
 }
 
+// EXT_mesh_gpu_instancing: one mesh per instance, each instance's TRS in the node's space; a
+// file that requires the extension loads.
+TEST_F(GltfLoad, InstancingDrawsTheMeshOncePerInstance) {
+  GltfBuilder builder;
+  const int mesh = builder.addMesh(json::array({{{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}}}));
+  const std::vector<glm::vec3> translations = {glm::vec3(1, 0, 0), glm::vec3(2, 0, 0)};
+  const std::vector<glm::vec3> scales = {glm::vec3(1), glm::vec3(2)};
+  const int t = builder.addFloats(translations), sc = builder.addFloats(scales);
+  builder.addNode({{"mesh", mesh},
+                   {"translation", {0, 10, 0}},
+                   {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", t}, {"SCALE", sc}}}}}}}});
+  builder.document()["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+  builder.document()["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
+  const GltfContents contents = load(builder);
+  ASSERT_EQ(contents.meshes.size(), 2u);
+  EXPECT_EQ(contents.meshes[0].positions[1], glm::vec3(2, 10, 0));  // (1, 0, 0) + (1, 0, 0) + (0, 10, 0)
+  EXPECT_EQ(contents.meshes[1].positions[1], glm::vec3(4, 10, 0));  // 2 (1, 0, 0) + (2, 0, 0) + (0, 10, 0)
+  EXPECT_EQ(contents.meshes[1].positions[2], glm::vec3(2, 12, 0));
+  // Mismatched counts are an error.
+  const std::vector<glm::vec3> one = {glm::vec3(1)};
+  builder.document()["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] = builder.addFloats(one);
+  EXPECT_NE(loadError(builder).find("model.gltf: node 0 EXT_mesh_gpu_instancing: TRANSLATION, ROTATION and SCALE have "
+                                    "different counts"),
+            std::string::npos)
+      << loadError(builder);
+}
+
+// KHR_lights_punctual's lights are not rendered: the user is told.
+TEST_F(GltfLoad, PunctualLightsAreNamedAsNotRendered) {
+  GltfBuilder builder;
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}});
+  builder.document()["extensions"]["KHR_lights_punctual"] = {
+      {"lights", {{{"type", "point"}, {"intensity", 10}}, {{"type", "directional"}}}}};
+  builder.document()["extensionsUsed"] = {"KHR_lights_punctual"};
+  load(builder);
+  EXPECT_TRUE(warnings.contains(
+      "model.gltf: warning: KHR_lights_punctual: 2 light(s) not rendered (iblkit lights a scene with its environment "
+      "map only)"));
+}
+
 TEST_F(GltfLoad, ConvertsMaterials) {
   GltfBuilder builder;
   json& materials = builder.document()["materials"];
@@ -735,7 +775,7 @@ const BadFile kBadFiles[] = {
      "translation or matrix)"},
     {"points_only.gltf", "no triangle meshes"},
     {"node_cycle.gltf", "node 0 is reached twice in the scene graph (a cycle or two parents)"},
-    {"unsupported_extension.gltf", "requires unsupported extension EXT_mesh_gpu_instancing"},
+    {"unsupported_extension.gltf", "requires unsupported extension EXT_texture_avif"},
 };
 
 TEST_F(GltfLoad, BadFilesGiveExactMessages) {

@@ -131,8 +131,8 @@ def main():
 
     # A required extension iblkit does not implement.
     write("unsupported_extension.gltf", json.dumps(triangle_gltf(
-        TRIANGLE, extra={"extensionsUsed": ["EXT_mesh_gpu_instancing"],
-                         "extensionsRequired": ["EXT_mesh_gpu_instancing"]})))
+        TRIANGLE, extra={"extensionsUsed": ["EXT_texture_avif"],
+                         "extensionsRequired": ["EXT_texture_avif"]})))
 
 
 if __name__ == "__main__":
