@@ -188,27 +188,48 @@ doc, buffer = triangle_gltf(embed=False)
 put("gltf", "seed_triangle.glb", glb(doc, buffer))
 
 
+class Triangle:
+    """triangle_gltf's document and buffer 0, with data appended as 4-byte aligned buffer views and
+    accessors; glb() or gltf() writes it with the buffer's final length."""
+
+    def __init__(self):
+        self.doc, self.buffer = triangle_gltf(embed=False)
+
+    def view(self, data, **extra):
+        self.buffer += b"\0" * (-len(self.buffer) % 4)
+        self.doc["bufferViews"].append(dict({"buffer": 0, "byteOffset": len(self.buffer), "byteLength": len(data)},
+                                            **extra))
+        self.buffer += data
+        return len(self.doc["bufferViews"]) - 1
+
+    def accessor(self, data, count, kind, component=5126, **extra):
+        self.doc["accessors"].append(dict({"bufferView": self.view(data), "componentType": component, "count": count,
+                                           "type": kind}, **extra))
+        return len(self.doc["accessors"]) - 1
+
+    def glb(self):
+        self.doc["buffers"][0]["byteLength"] = len(self.buffer)
+        return glb(self.doc, self.buffer)
+
+    def gltf(self):
+        self.doc["buffers"][0]["byteLength"] = len(self.buffer)
+        self.doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(self.buffer).decode()
+        return json.dumps(self.doc)
+
+
 def textured_glb():
     """The triangle with TEXCOORD_0, TEXCOORD_1 and TANGENT, a PNG in the glb's buffer and a WebP
     (EXT_texture_webp; the lossless seed of fuzz/corpus/texture, made by make_texture_seeds) as a
     data: URI, two samplers, and every texture slot, KHR_texture_transform and alpha mode used."""
-    doc, buffer = triangle_gltf(embed=False)
-    def view(data, **extra):
-        nonlocal buffer
-        buffer += b"\0" * (-len(buffer) % 4)
-        doc["bufferViews"].append(dict({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data)}, **extra))
-        buffer += data
-        return len(doc["bufferViews"]) - 1
-    def accessor(data, count, kind):
-        doc["accessors"].append({"bufferView": view(data), "componentType": 5126, "count": count, "type": kind})
-        return len(doc["accessors"]) - 1
+    t = Triangle()
+    doc = t.doc
     primitive = doc["meshes"][0]["primitives"][0]
-    primitive["attributes"]["TEXCOORD_0"] = accessor(struct.pack("<6f", 0, 0, 1, 0, 0, 1), 3, "VEC2")
-    primitive["attributes"]["TEXCOORD_1"] = accessor(struct.pack("<6f", 0, 1, 1, 1, 0, 0), 3, "VEC2")
-    primitive["attributes"]["TANGENT"] = accessor(struct.pack("<12f", *([1, 0, 0, 1] * 3)), 3, "VEC4")
+    primitive["attributes"]["TEXCOORD_0"] = t.accessor(struct.pack("<6f", 0, 0, 1, 0, 0, 1), 3, "VEC2")
+    primitive["attributes"]["TEXCOORD_1"] = t.accessor(struct.pack("<6f", 0, 1, 1, 1, 0, 0), 3, "VEC2")
+    primitive["attributes"]["TANGENT"] = t.accessor(struct.pack("<12f", *([1, 0, 0, 1] * 3)), 3, "VEC4")
     with open(os.path.join(HERE, "corpus", "texture", "seed_rgba_lossless_4x4.webp"), "rb") as f:
         webp = f.read()
-    doc["images"] = [{"bufferView": view(png(2, 2, 6, 4)), "mimeType": "image/png", "name": "albedo"},
+    doc["images"] = [{"bufferView": t.view(png(2, 2, 6, 4)), "mimeType": "image/png", "name": "albedo"},
                      {"uri": "data:image/webp;base64," + base64.b64encode(webp).decode()}]
     doc["samplers"] = [{"magFilter": 9728, "minFilter": 9986, "wrapS": 33071, "wrapT": 33648}, {}]
     doc["textures"] = [{"source": 0, "sampler": 0},
@@ -225,8 +246,7 @@ def textured_glb():
     material["doubleSided"] = True
     doc["extensionsUsed"] += ["KHR_texture_transform", "EXT_texture_webp"]
     doc["extensionsRequired"] = ["KHR_texture_transform", "EXT_texture_webp"]
-    doc["buffers"][0]["byteLength"] = len(buffer)
-    return glb(doc, buffer)
+    return t.glb()
 
 
 put("gltf", "seed_textured.glb", textured_glb())
@@ -235,16 +255,11 @@ put("gltf", "seed_textured.glb", textured_glb())
 def coloured_glb():
     """The triangle with COLOR_0 as normalised unsigned bytes (VEC4, alpha below 1 on one corner)
     and a BLEND material, so that the fuzzer reaches the vertex colours' reader."""
-    doc, buffer = triangle_gltf(embed=False)
+    t = Triangle()
     colours = struct.pack("<12B", 255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 255)
-    doc["bufferViews"].append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(colours)})
-    buffer += colours
-    doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5121,
-                             "normalized": True, "count": 3, "type": "VEC4"})
-    doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = len(doc["accessors"]) - 1
-    doc["materials"][0]["alphaMode"] = "BLEND"
-    doc["buffers"][0]["byteLength"] = len(buffer)
-    return glb(doc, buffer)
+    t.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = t.accessor(colours, 3, "VEC4", 5121, normalized=True)
+    t.doc["materials"][0]["alphaMode"] = "BLEND"
+    return t.glb()
 
 
 put("gltf", "seed_colors.glb", coloured_glb())
@@ -253,22 +268,16 @@ put("gltf", "seed_colors.glb", coloured_glb())
 def sparse_glb():
     """The triangle with a sparse POSITION (vertex 1 moved) and a sparse custom attribute without a
     buffer view (zeros, two elements replaced), so that the fuzzer reaches the sparse reader."""
-    doc, buffer = triangle_gltf(embed=False)
-    def view(data):
-        nonlocal buffer
-        buffer += b"\0" * (-len(buffer) % 4)
-        doc["bufferViews"].append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data)})
-        buffer += data
-        return len(doc["bufferViews"]) - 1
-    doc["accessors"][0]["sparse"] = {"count": 1, "indices": {"bufferView": view(struct.pack("<H", 1)), "componentType": 5123},
-                                     "values": {"bufferView": view(struct.pack("<3f", 2, 0, 0))}}
+    t = Triangle()
+    doc = t.doc
+    doc["accessors"][0]["sparse"] = {"count": 1, "indices": {"bufferView": t.view(struct.pack("<H", 1)), "componentType": 5123},
+                                     "values": {"bufferView": t.view(struct.pack("<3f", 2, 0, 0))}}
     doc["accessors"][0]["max"] = [2, 1, 0]
     doc["accessors"].append({"componentType": 5126, "count": 3, "type": "SCALAR",
-                             "sparse": {"count": 2, "indices": {"bufferView": view(bytes([0, 2])), "componentType": 5121},
-                                        "values": {"bufferView": view(struct.pack("<2f", 0.25, 0.75))}}})
+                             "sparse": {"count": 2, "indices": {"bufferView": t.view(bytes([0, 2])), "componentType": 5121},
+                                        "values": {"bufferView": t.view(struct.pack("<2f", 0.25, 0.75))}}})
     doc["meshes"][0]["primitives"][0]["attributes"]["_W"] = len(doc["accessors"]) - 1
-    doc["buffers"][0]["byteLength"] = len(buffer)
-    return glb(doc, buffer)
+    return t.glb()
 
 
 put("gltf", "seed_sparse.glb", sparse_glb())
@@ -277,30 +286,21 @@ put("gltf", "seed_sparse.glb", sparse_glb())
 def skinned_glb():
     """The triangle skinned to two joints (one with an inverse bind matrix) and with a morph target
     at weight 0.5, so that the fuzzer reaches the static pose's readers."""
-    doc, buffer = triangle_gltf(embed=False)
-    def view(data):
-        nonlocal buffer
-        buffer += b"\0" * (-len(buffer) % 4)
-        doc["bufferViews"].append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data)})
-        buffer += data
-        return len(doc["bufferViews"]) - 1
-    def accessor(data, count, kind, component=5126):
-        doc["accessors"].append({"bufferView": view(data), "componentType": component, "count": count, "type": kind})
-        return len(doc["accessors"]) - 1
+    t = Triangle()
+    doc = t.doc
     attributes = doc["meshes"][0]["primitives"][0]["attributes"]
-    attributes["JOINTS_0"] = accessor(bytes([0, 1, 0, 0] * 3), 3, "VEC4", 5121)
-    attributes["WEIGHTS_0"] = accessor(struct.pack("<12f", 1, 0, 0, 0, 0.5, 0.5, 0, 0, 0, 1, 0, 0), 3, "VEC4")
-    doc["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": accessor(struct.pack("<9f", 0, 0, 0, 0, 0, 1, 0, 0, 0), 3, "VEC3")}]
+    attributes["JOINTS_0"] = t.accessor(bytes([0, 1, 0, 0] * 3), 3, "VEC4", 5121)
+    attributes["WEIGHTS_0"] = t.accessor(struct.pack("<12f", 1, 0, 0, 0, 0.5, 0.5, 0, 0, 0, 1, 0, 0), 3, "VEC4")
+    doc["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": t.accessor(struct.pack("<9f", 0, 0, 0, 0, 0, 1, 0, 0, 0), 3, "VEC3")}]
     doc["meshes"][0]["weights"] = [0.5]
     identity = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
     moved = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1]
-    matrices = accessor(struct.pack("<32f", *identity, *moved), 2, "MAT4")
+    matrices = t.accessor(struct.pack("<32f", *identity, *moved), 2, "MAT4")
     doc["nodes"] += [{"translation": [0, 0, 1]}, {"translation": [0, 1, 0], "rotation": [0, 0.7071, 0, 0.7071]}]
     doc["nodes"][0]["skin"] = 0
     doc["nodes"][0]["children"] += [3, 4]
     doc["skins"] = [{"joints": [3, 4], "inverseBindMatrices": matrices}]
-    doc["buffers"][0]["byteLength"] = len(buffer)
-    return glb(doc, buffer)
+    return t.glb()
 
 
 put("gltf", "seed_skinned.glb", skinned_glb())
@@ -309,25 +309,16 @@ put("gltf", "seed_skinned.glb", skinned_glb())
 def instanced_gltf():
     """The triangle drawn three times by EXT_mesh_gpu_instancing (translations, rotations, scales),
     with a KHR_lights_punctual light, so that the fuzzer reaches the instance reader."""
-    doc, buffer = triangle_gltf(embed=False)
-    def accessor(data, count, kind):
-        buffer_offset = len(buffer)
-        doc["bufferViews"].append({"buffer": 0, "byteOffset": buffer_offset, "byteLength": len(data)})
-        doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126, "count": count,
-                                 "type": kind})
-        return len(doc["accessors"]) - 1, data
-    t, td = accessor(struct.pack("<9f", 0, 0, 0, 1, 0, 0, 2, 0, 0), 3, "VEC3")
-    buffer += td
-    r, rd = accessor(struct.pack("<12f", 0, 0, 0, 1, 0, 0.7071, 0, 0.7071, 0, 1, 0, 0), 3, "VEC4")
-    buffer += rd
-    s, sd = accessor(struct.pack("<9f", 1, 1, 1, 2, 2, 2, 0.5, 0.5, 0.5), 3, "VEC3")
-    buffer += sd
-    doc["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": t, "ROTATION": r, "SCALE": s}}}
+    t = Triangle()
+    doc = t.doc
+    translations = t.accessor(struct.pack("<9f", 0, 0, 0, 1, 0, 0, 2, 0, 0), 3, "VEC3")
+    rotations = t.accessor(struct.pack("<12f", 0, 0, 0, 1, 0, 0.7071, 0, 0.7071, 0, 1, 0, 0), 3, "VEC4")
+    scales = t.accessor(struct.pack("<9f", 1, 1, 1, 2, 2, 2, 0.5, 0.5, 0.5), 3, "VEC3")
+    doc["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {
+        "attributes": {"TRANSLATION": translations, "ROTATION": rotations, "SCALE": scales}}}
     doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 3}]}}
     doc["extensionsUsed"] += ["EXT_mesh_gpu_instancing", "KHR_lights_punctual"]
-    doc["buffers"][0]["byteLength"] = len(buffer)
-    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()
-    return json.dumps(doc)
+    return t.gltf()
 
 
 put("gltf", "seed_instanced.gltf", instanced_gltf())
