@@ -36,7 +36,7 @@ TEST(RepairPixels, SetsBadComponentsToZeroWithOneWarning) {
   EXPECT_EQ(counts.nan, 3u);
   EXPECT_EQ(counts.inf, 2u);  // -Inf counts as Inf
   EXPECT_EQ(counts.negative, 2u);
-  EXPECT_EQ(capture.warnings(),
+  EXPECT_EQ(capture.lines(),
             std::vector<std::string>{"f.exr: warning: 3 NaN, 2 Inf and 2 negative pixel values set to 0"});
   EXPECT_EQ(levels[0].at(0, 0), glm::vec4(0.0f, 0.0f, 2.0f, 1.0f));
   EXPECT_EQ(levels[0].at(1, 0), glm::vec4(0.0f, 0.5f, 0.0f, 0.0f));
@@ -47,14 +47,14 @@ TEST(RepairPixels, MessageListsOnlyWhatWasFound) {
   test::WarningCapture capture;
   Image clean(2, 2, glm::vec4(1.0f));
   repairPixels("clean.exr", {&clean, 1});
-  EXPECT_TRUE(capture.warnings().empty());
+  EXPECT_TRUE(capture.lines().empty());
   Image one(1, 1, glm::vec4(1.0f, -1.0f, 1.0f, 1.0f));
   repairPixels("one.exr", {&one, 1});
   Image two(
       1, 1,
       glm::vec4(std::numeric_limits<float>::quiet_NaN(), 1.0f, std::numeric_limits<float>::infinity(), 1.0f));
   repairPixels("two.exr", {&two, 1});
-  EXPECT_EQ(capture.warnings(),
+  EXPECT_EQ(capture.lines(),
             (std::vector<std::string>{"one.exr: warning: 1 negative pixel value set to 0",
                                       "two.exr: warning: 1 NaN and 1 Inf pixel values set to 0"}));
 }
@@ -95,7 +95,7 @@ TEST(BadImageCorpus, NanPixelsAreRepairedWithOneWarning) {
   const std::filesystem::path file = test::dataDir() / "bad" / "nan_pixels.exr";
   test::WarningCapture capture;
   const Image image = readImage(file);
-  EXPECT_EQ(capture.warnings(),
+  EXPECT_EQ(capture.lines(),
             std::vector<std::string>{file.string() +
                                      ": warning: 3 NaN, 1 Inf and 2 negative pixel values set to 0"});
   ASSERT_EQ(image.width(), 4);
@@ -111,7 +111,7 @@ TEST(BadImageCorpus, KeepReadsInvalidValuesAsStoredWithoutWarning) {
   const std::filesystem::path file = test::dataDir() / "bad" / "nan_pixels.exr";
   test::WarningCapture capture;
   const Image image = readImage(file, PixelRepair::Keep);
-  EXPECT_TRUE(capture.warnings().empty());
+  EXPECT_TRUE(capture.lines().empty());
   EXPECT_TRUE(std::isnan(image.at(0, 0).r));
   EXPECT_EQ(image.at(3, 0).r, -1.0f);
   const PixelRepairCounts counts = countInvalidPixels(image);

@@ -1,12 +1,13 @@
 #pragma once
-// Helpers for tests of bad input: the message an Error carries, and the warnings emitted while a
-// WarningCapture is alive, so tests compare exact text.
+// Helpers for tests of bad input: the message an Error carries (and, through
+// support/warning_capture.h, the warnings emitted meanwhile), so tests compare exact text.
 
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "support/warning_capture.h"
 
 namespace iblkit::test {
 
@@ -21,25 +22,6 @@ std::string errorMessage(F&& f) {
   return "(no error)";
 }
 
-// Collects every warning line while alive (tests run one at a time in a test program), then
-// restores the default sink.
-class WarningCapture {
- public:
-  WarningCapture() {
-    lines().clear();
-    setWarningSink([](const std::string& line) { lines().push_back(line); });
-  }
-  ~WarningCapture() { setWarningSink(nullptr); }
-  WarningCapture(const WarningCapture&) = delete;
-  WarningCapture& operator=(const WarningCapture&) = delete;
-
-  const std::vector<std::string>& warnings() const { return lines(); }
-
- private:
-  static std::vector<std::string>& lines() {
-    static std::vector<std::string> captured;
-    return captured;
-  }
-};
+// WarningCapture (the warnings emitted while one is alive) is support/warning_capture.h's.
 
 }  // namespace iblkit::test
