@@ -129,6 +129,61 @@ TextureRef textureRef(const Info& info, const std::string& what, std::size_t tex
   return ref;
 }
 
+// A textureInfo inside an extension's JSON (tinygltf leaves extensions as Values), for textureRef.
+struct ValueTextureInfo {
+  int index = -1;
+  long long texCoord = 0;
+  tinygltf::ExtensionMap extensions;
+};
+
+ValueTextureInfo textureInfoFromValue(const tinygltf::Value& value, const std::string& what, const fs::path& file) {
+  ValueTextureInfo info;
+  if (!value.IsObject()) fail(file, what + " must be an object");
+  if (!value.Get("index").IsInt()) fail(file, what + ".index must be an integer");
+  info.index = value.Get("index").GetNumberAsInt();
+  if (info.index < 0) fail(file, what + ".index must be >= 0");
+  if (value.Has("texCoord")) {
+    if (!value.Get("texCoord").IsInt()) fail(file, what + ".texCoord must be an integer");
+    info.texCoord = value.Get("texCoord").GetNumberAsInt();
+  }
+  const tinygltf::Value& extensions = value.Get("extensions");
+  if (extensions.IsObject())
+    for (const std::string& key : extensions.Keys()) info.extensions[key] = extensions.Get(key);
+  return info;
+}
+
+// KHR_materials_pbrSpecularGlossiness (archived, common in older assets), converted to the
+// metallic-roughness model with KHR_materials_specular: base colour and alpha = diffuse (factor
+// and texture), metallic 0, roughness = 1 - glossiness, dielectric F0 = the specular factor
+// (specularColor = specular / 0.04, specular 1: min(0.04 specularColor, 1) = specular, the F0 the
+// extension gives). Without it such a material would be glTF's default, a rough white metal.
+// specularGlossinessTexture is not read (per-texel F0 and roughness have no slot): its factors are
+// used, and the caller warns.
+void convertSpecularGlossiness(const tinygltf::Value& ext, const std::string& what, std::size_t textureCount,
+                               const fs::path& file, Material& material) {
+  if (!ext.IsObject()) fail(file, what + " must be an object");
+  const std::vector<double> diffuse = extensionNumbers(ext, "diffuseFactor", {1.0, 1.0, 1.0, 1.0}, what, file);
+  const std::vector<double> specular = extensionNumbers(ext, "specularFactor", {1.0, 1.0, 1.0}, what, file);
+  const double glossiness = extensionNumber(ext, "glossinessFactor", 1.0, what, file);
+  const auto unit = [](double x) { return x >= 0.0 && x <= 1.0; };
+  if (diffuse.size() != 4 || !std::all_of(diffuse.begin(), diffuse.end(), unit))
+    fail(file, what + ".diffuseFactor must be 4 numbers in [0, 1]");
+  if (specular.size() != 3 || !std::all_of(specular.begin(), specular.end(), unit))
+    fail(file, what + ".specularFactor must be 3 numbers in [0, 1]");
+  if (!unit(glossiness)) fail(file, what + ".glossinessFactor must be in [0, 1]");
+  material.baseColor = glm::vec3(float(diffuse[0]), float(diffuse[1]), float(diffuse[2]));
+  material.alpha = float(diffuse[3]);
+  material.metallic = 0.0f;
+  material.roughness = float(1.0 - glossiness);
+  material.specular = 1.0f;
+  material.specularColor = glm::vec3(float(specular[0]), float(specular[1]), float(specular[2])) / 0.04f;
+  material.metallicRoughnessTexture = TextureRef{};
+  material.baseColorTexture = ext.Has("diffuseTexture")
+                                  ? textureRef(textureInfoFromValue(ext.Get("diffuseTexture"), what + " diffuseTexture", file),
+                                               what + " diffuseTexture", textureCount, file)
+                                  : TextureRef{};
+}
+
 AlphaMode alphaMode(const std::string& mode, const std::string& what, const fs::path& file) {
   if (mode == "OPAQUE" || mode.empty()) return AlphaMode::Opaque;
   if (mode == "MASK") return AlphaMode::Mask;
@@ -189,6 +244,14 @@ Material convertMaterial(const tinygltf::Material& source, int index, std::size_
     fail(file, what + " normalTexture.scale must be a finite number within +-1e6");
   material.normalScale = float(source.normalTexture.scale);
   material.occlusionStrength = unitFactor(source.occlusionTexture.strength, what + " occlusionTexture.strength", file);
+
+  const auto specularGlossiness = source.extensions.find("KHR_materials_pbrSpecularGlossiness");
+  if (specularGlossiness != source.extensions.end()) {
+    const std::string ext = what + " KHR_materials_pbrSpecularGlossiness";
+    convertSpecularGlossiness(specularGlossiness->second, ext, textureCount, file, material);
+    if (specularGlossiness->second.Has("specularGlossinessTexture"))
+      warn(file, ext + ": specularGlossinessTexture is not read (its specular and glossiness factors are)");
+  }
 
   material.alphaMode = alphaMode(source.alphaMode, what, file);
   if (!(source.alphaCutoff >= 0.0) || !std::isfinite(source.alphaCutoff))
@@ -305,7 +368,8 @@ std::vector<Vec> toVectors(const std::vector<float>& values) {
 // The material extensions that change how a material looks and that iblkit reads (the rest are
 // skipped, each named once in a warning by warnUnrenderedMaterialExtensions).
 bool renderedMaterialExtension(const std::string& name) {
-  return name == "KHR_materials_emissive_strength" || name == "KHR_materials_specular" || name == "KHR_materials_ior";
+  return name == "KHR_materials_emissive_strength" || name == "KHR_materials_specular" || name == "KHR_materials_ior" ||
+         name == "KHR_materials_pbrSpecularGlossiness";
 }
 
 // One warning per skipped material extension, with the materials that use it: glTF lets a

@@ -323,6 +323,24 @@ def instanced_gltf():
 
 put("gltf", "seed_instanced.gltf", instanced_gltf())
 
+
+def specular_glossiness_glb():
+    """The triangle with a KHR_materials_pbrSpecularGlossiness material (every factor, a diffuse
+    texture), so that the fuzzer reaches its conversion."""
+    t = Triangle()
+    primitive = t.doc["meshes"][0]["primitives"][0]
+    primitive["attributes"]["TEXCOORD_0"] = t.accessor(struct.pack("<6f", 0, 0, 1, 0, 0, 1), 3, "VEC2")
+    t.doc["images"] = [{"bufferView": t.view(png(2, 2, 6, 4)), "mimeType": "image/png"}]
+    t.doc["textures"] = [{"source": 0}]
+    t.doc["materials"] = [{"extensions": {"KHR_materials_pbrSpecularGlossiness": {
+        "diffuseFactor": [0.5, 0.25, 1, 0.8], "specularFactor": [0.04, 0.02, 0.5], "glossinessFactor": 0.75,
+        "diffuseTexture": {"index": 0}, "specularGlossinessTexture": {"index": 0}}}}]
+    t.doc["extensionsUsed"] = ["KHR_materials_pbrSpecularGlossiness"]
+    return t.glb()
+
+
+put("gltf", "seed_specular_glossiness.glb", specular_glossiness_glb())
+
 # --- scene .json (fuzz_loaders.cpp puts model.gltf and env.hdr beside the scene) ---------------
 put("scene", "seed_textured.json", json.dumps({
     "models": [{"file": "model.gltf", "material": {

@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/brdf.h"
 #include "core/error.h"
 #include "support/gltf_builder.h"
 #include "support/texture_files.h"
@@ -544,6 +545,40 @@ TEST_F(GltfLoad, PunctualLightsAreNamedAsNotRendered) {
   EXPECT_TRUE(warnings.contains(
       "model.gltf: warning: KHR_lights_punctual: 2 light(s) not rendered (iblkit lights a scene with its environment "
       "map only)"));
+}
+
+// KHR_materials_pbrSpecularGlossiness becomes metallic-roughness with KHR_materials_specular:
+// diffuse is the base colour (factor and texture), F0 the specular factor, roughness 1 - glossiness.
+TEST_F(GltfLoad, ConvertsSpecularGlossinessMaterials) {
+  GltfBuilder builder;
+  builder.addPrimitiveNode({{"attributes", {{"POSITION", builder.addFloats(kTriangle)}}}, {"material", 0}});
+  json& document = builder.document();
+  builder.addImage(test::encodePng(2, 2, std::vector<std::uint8_t>(16, 200)), "image/png");
+  document["textures"] = {{{"source", 0}}};
+  document["materials"] = {
+      {{"extensions",
+        {{"KHR_materials_pbrSpecularGlossiness",
+          {{"diffuseFactor", {0.5, 0.25, 1.0, 0.8}},
+           {"specularFactor", {0.04, 0.02, 0.5}},
+           {"glossinessFactor", 0.75},
+           {"diffuseTexture", {{"index", 0}, {"texCoord", 1}}},
+           {"specularGlossinessTexture", {{"index", 0}}}}}}}}};
+  document["extensionsUsed"] = {"KHR_materials_pbrSpecularGlossiness"};
+  const GltfContents contents = load(builder);
+  const Material& m = contents.materials[0];
+  EXPECT_EQ(m.baseColor, glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(m.alpha, 0.8f);
+  EXPECT_EQ(m.metallic, 0.0f);
+  EXPECT_EQ(m.roughness, 0.25f);
+  EXPECT_EQ(m.specular, 1.0f);
+  EXPECT_TRUE(m.baseColorTexture.present());
+  EXPECT_EQ(m.baseColorTexture.texCoord, 1);
+  EXPECT_FALSE(m.metallicRoughnessTexture.present());
+  const BrdfLobes lobes = brdfLobes(m);
+  EXPECT_LT(glm::distance(lobes.f0, glm::vec3(0.04f, 0.02f, 0.5f)), 1e-6f);
+  EXPECT_TRUE(warnings.contains("model.gltf: warning: material 0 KHR_materials_pbrSpecularGlossiness: "
+                                "specularGlossinessTexture is not read (its specular and glossiness factors are)"));
+  for (const std::string& line : warnings.lines()) EXPECT_EQ(line.find("is not rendered"), std::string::npos) << line;
 }
 
 TEST_F(GltfLoad, ConvertsMaterials) {
