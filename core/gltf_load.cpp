@@ -485,6 +485,7 @@ class Loader {
       const glm::mat4 world = parent * localTransform(node, index);
       if (node.mesh >= 0) {
         const std::vector<glm::mat4> instances = instanceTransforms(node, index);
+        countVertices(node.mesh, index, std::max<std::size_t>(instances.size(), 1));
         if (instances.empty()) instantiate(node.mesh, index, world);
         for (const glm::mat4& instance : instances) instantiate(node.mesh, index, world * instance);
       }
@@ -499,6 +500,12 @@ class Loader {
   // for a node without the extension. ROTATION is float or normalised byte or short (the
   // extension's types, as KHR_mesh_quantization's); at most kMaxInstances per node.
   static constexpr std::size_t kMaxInstances = 1u << 20;
+  // The most vertices a file may expand to, instances and reused meshes included, and the most
+  // morph target elements (targets x vertices) a primitive may hold: a small file can otherwise
+  // ask for any amount of memory (a mesh instanced a million times, thousands of targets, a sparse
+  // accessor without a view). 2^26 vertices are about 4 GiB of meshes.
+  static constexpr std::size_t kMaxSceneVertices = std::size_t(1) << 26;
+  static constexpr std::size_t kMaxMorphElements = std::size_t(1) << 26;
   std::vector<glm::mat4> instanceTransforms(const tinygltf::Node& node, int index) const {
     const auto found = node.extensions.find("EXT_mesh_gpu_instancing");
     if (found == node.extensions.end()) return {};
@@ -544,7 +551,8 @@ class Loader {
     return flag.IsBool() && flag.Get<bool>();
   }
 
-  void instantiate(int meshIndex, int nodeIndex, const glm::mat4& world) {
+  // Mesh `meshIndex`'s primitives in local space, read once.
+  const std::vector<std::optional<LocalPrimitive>>& localPrimitives(int meshIndex, int nodeIndex) {
     if (std::size_t(meshIndex) >= model_.meshes.size())
       fail(file_,
            "node " + std::to_string(nodeIndex) + ": mesh " + std::to_string(meshIndex) + " does not exist");
@@ -554,6 +562,22 @@ class Loader {
       for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
         locals.push_back(readPrimitive(meshIndex, int(p)));
     }
+    return locals;
+  }
+
+  // Adds `copies` instances of mesh `meshIndex` to the scene's vertex count, before they are made.
+  void countVertices(int meshIndex, int nodeIndex, std::size_t copies) {
+    std::size_t vertices = 0;
+    for (const std::optional<LocalPrimitive>& local : localPrimitives(meshIndex, nodeIndex))
+      if (local) vertices += local->mesh.vertexCount();
+    if (vertices > 0 && copies > (kMaxSceneVertices - sceneVertices_) / vertices)
+      fail(file_, "node " + std::to_string(nodeIndex) + ": the scene's meshes exceed " +
+                      std::to_string(kMaxSceneVertices) + " vertices (instances and reused meshes included)");
+    sceneVertices_ += copies * vertices;
+  }
+
+  void instantiate(int meshIndex, int nodeIndex, const glm::mat4& world) {
+    const std::vector<std::optional<LocalPrimitive>>& locals = localPrimitives(meshIndex, nodeIndex);
     const tinygltf::Node& node = model_.nodes[nodeIndex];
     // Morph targets at their default weights: the node's, else the mesh's (section 3.7.2.2).
     const std::vector<double>& defaultWeights = node.weights.empty() ? model_.meshes[meshIndex].weights : node.weights;
@@ -695,6 +719,10 @@ class Loader {
   std::vector<MorphTarget> readMorphTargets(const tinygltf::Primitive& primitive, std::size_t vertexCount,
                                             const std::string& where) const {
     std::vector<MorphTarget> targets;
+    if (vertexCount > 0 && primitive.targets.size() > kMaxMorphElements / vertexCount)
+      fail(file_, where + ": " + std::to_string(primitive.targets.size()) + " morph targets of " +
+                      std::to_string(vertexCount) + " vertices, beyond the limit of " +
+                      std::to_string(kMaxMorphElements) + " target vertices");
     for (std::size_t t = 0; t < primitive.targets.size(); ++t) {
       MorphTarget target;
       for (const auto& [semantic, accessor] : primitive.targets[t]) {
@@ -989,6 +1017,7 @@ class Loader {
   std::vector<std::vector<std::optional<LocalPrimitive>>> localMeshes_;  // per glTF mesh, per primitive
   std::vector<std::optional<std::vector<glm::mat4>>> jointMatrices_;     // per skin, once computed
   std::vector<int> parents_;  // per node, its parent (-1: a root), for globalTransform
+  std::size_t sceneVertices_ = 0;  // the vertices instantiated so far (kMaxSceneVertices)
   int defaultMaterial_ = -1;
   bool cameraZfarMissing_ = false;
 };

@@ -581,6 +581,50 @@ TEST_F(GltfLoad, ConvertsSpecularGlossinessMaterials) {
   for (const std::string& line : warnings.lines()) EXPECT_EQ(line.find("is not rendered"), std::string::npos) << line;
 }
 
+// A small file may not ask for unbounded memory: a mesh of 65,535 vertices (a sparse accessor
+// without a view: zeros) instanced 1,025 times, or carrying 1,025 morph targets, passes the 2^26
+// vertices a scene (and the target vertices a primitive) may have; each is refused before the
+// copies are made.
+TEST_F(GltfLoad, ExpansionBeyondTheVertexBudgetIsRefused) {
+  const auto zerosMesh = [](GltfBuilder& builder) {
+    const std::uint8_t at[1] = {0};
+    const float value[3] = {0, 0, 0};
+    json& accessors = builder.document()["accessors"];
+    accessors.push_back(
+        {{"componentType", test::kFloat},
+         {"count", 65535},
+         {"type", "VEC3"},
+         {"sparse",
+          {{"count", 1},
+           {"indices", {{"bufferView", builder.addBufferView(at, 1)}, {"componentType", test::kUnsignedByte}}},
+           {"values", {{"bufferView", builder.addBufferView(value, sizeof(value))}}}}}});
+    return int(accessors.size()) - 1;
+  };
+  {
+    GltfBuilder builder;
+    const int positions = zerosMesh(builder);
+    const int mesh = builder.addMesh(json::array({{{"attributes", {{"POSITION", positions}}}}}));
+    const std::vector<glm::vec3> translations(1025, glm::vec3(0.0f));
+    builder.addNode({{"mesh", mesh},
+                     {"extensions",
+                      {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", builder.addFloats(translations)}}}}}}}});
+    EXPECT_NE(loadError(builder).find("model.gltf: node 0: the scene's meshes exceed 67108864 vertices (instances and "
+                                      "reused meshes included)"),
+              std::string::npos)
+        << loadError(builder);
+  }
+  {
+    GltfBuilder builder;
+    const int positions = zerosMesh(builder);
+    const json targets(1025, json{{"POSITION", positions}});
+    builder.addPrimitiveNode({{"attributes", {{"POSITION", positions}}}, {"targets", targets}});
+    EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: 1025 morph targets of 65535 vertices, beyond the "
+                                      "limit of 67108864 target vertices"),
+              std::string::npos)
+        << loadError(builder);
+  }
+}
+
 TEST_F(GltfLoad, ConvertsMaterials) {
   GltfBuilder builder;
   json& materials = builder.document()["materials"];
