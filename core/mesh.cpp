@@ -110,37 +110,65 @@ long long firstVertexOutOfRange(const Mesh& mesh) {
   return -1;
 }
 
+namespace {
+
+// An affine transform of one vertex's position, normal and tangent (transformMesh's rules).
+struct VertexTransform {
+  glm::mat4 matrix;
+  glm::mat3 linear;
+  glm::mat3 normalMatrix;  // the cofactor matrix det(M) M^-T times the sign of det(M)
+  bool mirrors;
+
+  explicit VertexTransform(const glm::mat4& m) : matrix(m), linear(m) {
+    const float determinant = glm::determinant(linear);
+    mirrors = determinant < 0.0f;
+    // Columns c1 x c2, c2 x c0, c0 x c1: the cofactor matrix, det(M) M^-T.
+    const glm::mat3 cofactor(glm::cross(linear[1], linear[2]), glm::cross(linear[2], linear[0]),
+                             glm::cross(linear[0], linear[1]));
+    normalMatrix = mirrors ? -cofactor : cofactor;
+  }
+
+  void apply(Mesh& mesh, std::size_t i) const {
+    mesh.positions[i] = glm::vec3(matrix * glm::vec4(mesh.positions[i], 1.0f));
+    if (i < mesh.normals.size()) {
+      glm::vec3 n = normalMatrix * mesh.normals[i];
+      const float length = glm::length(n);
+      mesh.normals[i] = length > 0.0f ? n / length : n;
+    }
+    // Tangents are directions in the surface (dp/du), so they move by M itself, not the normal
+    // matrix; re-orthogonalised to the new normal (a non-uniform scale shears them off its plane).
+    // A mirror reverses cross(n, t), so w changes sign with det(M) to keep the bitangent
+    // w cross(n, t) pointing along the same uv direction.
+    if (i < mesh.tangents.size()) {
+      glm::vec3 t = linear * glm::vec3(mesh.tangents[i]);
+      if (i < mesh.normals.size()) t -= mesh.normals[i] * glm::dot(mesh.normals[i], t);
+      const float length = glm::length(t);
+      if (length > 0.0f) t /= length;
+      mesh.tangents[i] = glm::vec4(t, mesh.tangents[i].w * (mirrors ? -1.0f : 1.0f));
+    }
+  }
+};
+
+void flipWinding(Mesh& mesh) {
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+}
+
+}  // namespace
+
 void transformMesh(Mesh& mesh, const glm::mat4& transform) {
-  for (glm::vec3& p : mesh.positions) p = glm::vec3(transform * glm::vec4(p, 1.0f));
+  const VertexTransform vertex(transform);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) vertex.apply(mesh, i);
+  if (vertex.mirrors) flipWinding(mesh);
+}
 
-  const glm::mat3 linear(transform);
-  const float determinant = glm::determinant(linear);
-  // Columns c1 x c2, c2 x c0, c0 x c1: the cofactor matrix, det(M) M^-T.
-  const glm::mat3 cofactor(glm::cross(linear[1], linear[2]), glm::cross(linear[2], linear[0]),
-                           glm::cross(linear[0], linear[1]));
-  const glm::mat3 normalMatrix = determinant < 0.0f ? -cofactor : cofactor;
-  for (glm::vec3& n : mesh.normals) {
-    n = normalMatrix * n;
-    const float length = glm::length(n);
-    if (length > 0.0f) n /= length;
+void transformMeshPerVertex(Mesh& mesh, std::span<const glm::mat4> matrices) {
+  std::size_t mirrored = 0;
+  for (std::size_t i = 0; i < mesh.positions.size() && i < matrices.size(); ++i) {
+    const VertexTransform vertex(matrices[i]);
+    vertex.apply(mesh, i);
+    mirrored += vertex.mirrors;
   }
-
-  // Tangents are directions in the surface (dp/du), so they move by M itself, not the normal
-  // matrix; re-orthogonalised to the new normal (a non-uniform scale shears them off its plane).
-  // A mirror reverses cross(n, t), so w changes sign with det(M) to keep the bitangent w cross(n, t)
-  // pointing along the same uv direction.
-  const float handedness = determinant < 0.0f ? -1.0f : 1.0f;
-  for (std::size_t i = 0; i < mesh.tangents.size(); ++i) {
-    glm::vec3 t = linear * glm::vec3(mesh.tangents[i]);
-    if (i < mesh.normals.size()) t -= mesh.normals[i] * glm::dot(mesh.normals[i], t);
-    const float length = glm::length(t);
-    if (length > 0.0f) t /= length;
-    mesh.tangents[i] = glm::vec4(t, mesh.tangents[i].w * handedness);
-  }
-
-  if (determinant < 0.0f)
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
-      std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+  if (2 * mirrored > mesh.positions.size()) flipWinding(mesh);
 }
 
 }  // namespace iblkit

@@ -112,4 +112,8 @@ long long firstVertexOutOfRange(const Mesh& mesh);
 // transformed normal and re-normalised, w times the sign of the determinant; texcoords unchanged.
 void transformMesh(Mesh& mesh, const glm::mat4& transform);
 
+// transformMesh with one matrix per vertex (a skin's, core/static_pose.h): each vertex by its own
+// matrix under the same rules; the winding is flipped when most vertices' matrices mirror.
+void transformMeshPerVertex(Mesh& mesh, std::span<const glm::mat4> matrices);
+
 }  // namespace iblkit

@@ -1,7 +1,6 @@
 #include "core/static_pose.h"
 
 #include <algorithm>
-#include <utility>
 
 namespace iblkit {
 
@@ -35,34 +34,6 @@ std::vector<glm::mat4> skinningMatrices(std::span<const VertexInfluences> influe
     matrices[v] = m;
   }
   return matrices;
-}
-
-void transformMeshPerVertex(Mesh& mesh, std::span<const glm::mat4> matrices) {
-  std::size_t mirrored = 0;
-  for (std::size_t i = 0; i < mesh.positions.size() && i < matrices.size(); ++i) {
-    const glm::mat4& m = matrices[i];
-    mesh.positions[i] = glm::vec3(m * glm::vec4(mesh.positions[i], 1.0f));
-    const glm::mat3 linear(m);
-    const float determinant = glm::determinant(linear);
-    mirrored += determinant < 0.0f;
-    // The cofactor matrix det(M) M^-T (columns c1 x c2, c2 x c0, c0 x c1), as transformMesh.
-    const glm::mat3 cofactor(glm::cross(linear[1], linear[2]), glm::cross(linear[2], linear[0]),
-                             glm::cross(linear[0], linear[1]));
-    if (i < mesh.normals.size()) {
-      glm::vec3 n = (determinant < 0.0f ? -cofactor : cofactor) * mesh.normals[i];
-      const float length = glm::length(n);
-      mesh.normals[i] = length > 0.0f ? n / length : n;
-    }
-    if (i < mesh.tangents.size()) {
-      glm::vec3 t = linear * glm::vec3(mesh.tangents[i]);
-      if (i < mesh.normals.size()) t -= mesh.normals[i] * glm::dot(mesh.normals[i], t);
-      const float length = glm::length(t);
-      if (length > 0.0f) t /= length;
-      mesh.tangents[i] = glm::vec4(t, mesh.tangents[i].w * (determinant < 0.0f ? -1.0f : 1.0f));
-    }
-  }
-  if (2 * mirrored > mesh.positions.size())
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
 }
 
 }  // namespace iblkit

@@ -3,8 +3,8 @@
 // "Skins"): what a viewer shows of a skinned or morphed asset without playing an animation.
 // Morph targets at their default weights (the node's `weights`, else the mesh's) add their
 // displacements first; a skin then moves every vertex by the weighted sum of its joints' matrices
-// (joint world transform times inverse bind matrix). No animation is read: the pose is the one the
-// node hierarchy holds.
+// (joint world transform times inverse bind matrix), applied by transformMeshPerVertex (core/mesh.h).
+// No animation is read: the pose is the one the node hierarchy holds.
 
 #include <array>
 #include <cstdint>
@@ -39,10 +39,5 @@ struct VertexInfluences {
 // identity. Joint indices must be below jointMatrices.size() (the loader checks them).
 std::vector<glm::mat4> skinningMatrices(std::span<const VertexInfluences> influences,
                                         std::span<const glm::mat4> jointMatrices);
-
-// transformMesh (core/mesh.h) with one matrix per vertex: positions by their matrix, normals by
-// its cofactor matrix times the sign of its determinant, tangents by its upper 3x3, re-orthogonalised
-// to the normal, w times that sign; the winding is flipped when most vertices' matrices mirror.
-void transformMeshPerVertex(Mesh& mesh, std::span<const glm::mat4> matrices);
 
 }  // namespace iblkit

@@ -126,12 +126,11 @@ bool AlphaFilter::accept(unsigned geometry, unsigned primitive, glm::vec2 baryce
   if (!(g.needs & kAlphaTest)) return true;
 
   const Material& material = g.material;
-  float alpha = material.alpha;
   const Mesh& mesh = *g.mesh;
   const std::uint32_t* corner = &mesh.indices[3 * std::size_t(primitive)];
   // The vertex colour's alpha multiplies the base colour's (surfaceAlpha, in the same order).
   const float vertexAlpha = g.alphaFromVertices ? interpolateAtHit(mesh.colors, corner, barycentrics).a : 1.0f;
-  if (!g.alphaFromTexture) alpha *= vertexAlpha;
+  float alpha = material.alpha * vertexAlpha;
   if (g.alphaFromTexture) {
     const TextureRef& ref = material.baseColorTexture;
     const std::vector<glm::vec2>& uvs = ref.texCoord == 1 ? mesh.texcoords1 : mesh.texcoords;
