@@ -45,6 +45,7 @@ EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, co
   step(2);
   SpecularPrefilterOptions specular;
   specular.sampleCount = options.specularSamples;
+  specular.baseSize = options.specularBaseSize;
   stages.specular = prefilterSpecular(environment, specular);
   measured.specular = stopwatch.lap();
   step(3);

@@ -20,6 +20,9 @@ struct EnvironmentStageOptions {
   // The sinc^4 window's cutoff in bands (0: none); unset: automaticShWindowCutoff.
   std::optional<float> shWindowCutoff;
   std::uint32_t specularSamples = 1024;  // GGX samples per texel of the roughest level
+  // Face size of the specular chains' level 0, a power of two; 0: defaultSpecularBaseSize of the
+  // map's width.
+  int specularBaseSize = 0;
   int lutSize = 128;
   std::uint32_t lutSamples = 512;
   int irradianceCubeSize = 16;  // face size of the brute-force irradiance cube; 0: not computed
@@ -50,7 +53,8 @@ struct EnvironmentStageTimes {
 
 // Computes the stages of `environment` (its rotation and intensity applied): the SH9 projection,
 // its window (sh9 = the windowed projection), the irradiance cube, the full specular chain with a
-// face size of defaultSpecularBaseSize(environment.width()), and the DFG table; with
+// face size of options.specularBaseSize (or defaultSpecularBaseSize(environment.width())), and the
+// DFG table; with
 // options.lights, then the suns and the median-cut regions (stages.lights), and the residual's
 // windowed SH9 and specular chain. Parallel (TBB). `progress` (optional) is called with (stages
 // done, 4, or 6 with lights) before and after each stage; `times` (optional) receives the seconds

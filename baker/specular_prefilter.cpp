@@ -229,7 +229,8 @@ CubeMap prefilterSpecularLevel(const CubeMapLevels& source, int size, float roug
 }
 
 int defaultSpecularBaseSize(int latLongWidth) {
-  return static_cast<int>(std::bit_floor(static_cast<unsigned>(std::max(1, latLongWidth / 4))));
+  const int quarter = std::clamp(latLongWidth / 4, 1, kMaxDefaultSpecularBaseSize);
+  return static_cast<int>(std::bit_floor(static_cast<unsigned>(quarter)));
 }
 
 SpecularCube prefilterSpecular(const EnvironmentMap& environment, const SpecularPrefilterOptions& options) {

@@ -52,9 +52,19 @@ CubeMapLevels specularSourceChain(const EnvironmentMap& environment, int size);
 CubeMap prefilterSpecularLevel(const CubeMapLevels& source, int size, float roughness,
                                std::uint32_t sampleCount);
 
+// The largest face size defaultSpecularBaseSize gives: 1024, a level 0 texel of about 0.11 degree
+// at a face's centre, finer than a 1280 x 720 frame's pixel on a mirror sphere that fills it (about
+// 0.25 degree). Users' photographs come at 8192 and 16384 texels wide, where width / 4 would be a
+// 2048 or 4096 base: 4x or 16x the prefiltering time, files and GPU memory of a 1024 base for
+// detail no frame shows (docs/prefilter.md "Large maps"). Filament's cmgen makes a 256 base. A
+// larger base is asked for explicitly (SpecularPrefilterOptions::baseSize, iblkit-bake
+// --specular-size).
+inline constexpr int kMaxDefaultSpecularBaseSize = 1024;
+
 // The default face size of level 0 for a lat-long map `latLongWidth` texels wide: the largest
-// power of two at most width / 4 (128 for 512 x 256, 512 for a 3000 x 1500 photograph), so any map
-// at least 8 wide prefilters; the source cube samples the map by direction, so no size must divide.
+// power of two at most width / 4 (128 for 512 x 256, 512 for a 3000 x 1500 photograph) and at most
+// kMaxDefaultSpecularBaseSize, so any map at least 8 wide prefilters; the source cube samples the
+// map by direction, so no size must divide.
 int defaultSpecularBaseSize(int latLongWidth);
 
 // The whole chain. Throws std::invalid_argument for a base size that is not a power of two, or a

@@ -8,8 +8,10 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <thread>
 
 #include "core/error.h"
+#include "core/image_io.h"
 #include "core/temporary_files.h"
 #include "core/usage_error.h"
 
@@ -76,10 +78,22 @@ void printError(const std::string& program, const std::string& message) {
   std::cerr << program << ": " << line << '\n';
 }
 
+ThreadLimit::ThreadLimit(int threads) {
+  if (threads <= 0) return;
+  control_ = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                   static_cast<std::size_t>(threads));
+  setExrThreads(threads);
+}
+
+ThreadLimit::~ThreadLimit() {
+  if (control_) setExrThreads(static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run) {
   const std::string program = app.get_name();
   app.footer(kExitStatusHelp);
   installInterruptCleanup();
+  setExrThreads(static_cast<int>(std::thread::hardware_concurrency()));
   checkFloatOptionsAreFinite(app);
   try {
     app.parse(argc, argv);

@@ -3,9 +3,12 @@
 // parses the command line, `--help` prints the help and exits 0, and every error, the parser's
 // included, is one line "PROGRAM: message" on stderr with one exit status table for all programs.
 
+#include <tbb/global_control.h>
+
 #include <CLI/CLI.hpp>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,10 +39,26 @@ extern const char* const kExitStatusHelp;
 // error or a UsageError exits kExitUsage, any other exception kExitFailure, each after one line
 // on stderr. Before parsing it installs the interrupt cleanup (core/temporary_files.h): SIGINT or
 // SIGTERM removes every temporary of the atomic writes and ends the program by that signal, so
-// an interrupted program leaves no partial output. Each program declares what it reads and
+// an interrupted program leaves no partial output. It also gives OpenEXR the machine's cores
+// (setExrThreads, core/image_io.h). Each program declares what it reads and
 // writes with checkOutputs (core/output_path.h) before it writes anything; a refused output is a
 // run-time failure (kExitFailure), as it depends on what is on disk, not on the command line.
 int runProgram(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run);
+
+// Limits every parallel part of the program, TBB's worker threads and OpenEXR's (setExrThreads), to
+// `threads` for the object's lifetime; 0 leaves every core (runProgram's default). For --threads
+// of iblkit-bake and iblkit-trace, whose set-up (the map's tables, ground visibility) runs in
+// parallel before the render's own arena.
+class ThreadLimit {
+ public:
+  explicit ThreadLimit(int threads);
+  ~ThreadLimit();
+  ThreadLimit(const ThreadLimit&) = delete;
+  ThreadLimit& operator=(const ThreadLimit&) = delete;
+
+ private:
+  std::unique_ptr<tbb::global_control> control_;
+};
 
 // A CLI11 check that refuses NaN and infinite numbers (and those beyond double's range).
 // runProgram gives it to every option whose type is FLOAT, the options of subcommands included.

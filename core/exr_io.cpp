@@ -11,6 +11,7 @@
 #include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
 #include <ImfTestFile.h>
+#include <ImfThreading.h>
 #include <ImfTiledInputFile.h>
 #include <ImfTiledOutputFile.h>
 
@@ -598,5 +599,7 @@ void writeExrLevels(const std::filesystem::path& file, const std::vector<Image>&
                     const ExrWriteOptions& options) {
   writeLevels(file, levels, options);
 }
+
+void setExrThreads(int count) { Imf::setGlobalThreadCount(std::max(count, 0)); }
 
 }  // namespace iblkit

@@ -60,6 +60,12 @@ void writeExr(const std::filesystem::path& file, const Image& image, const ExrWr
 void writeExrLevels(const std::filesystem::path& file, const std::vector<Image>& levels,
                     const ExrWriteOptions& options = {});
 
+// Threads OpenEXR decodes and encodes line blocks and tiles with, for every file read or written
+// after the call (Imf::setGlobalThreadCount; 0, OpenEXR's default, decodes on the calling thread).
+// The same pixels whatever the count. runProgram (cli/program.h) gives every program the machine's
+// cores: a large photograph's compressed blocks are most of its load time.
+void setExrThreads(int count);
+
 // Radiance RGBE (.hdr / .pic), flat or run-length encoded, -Y +X orientation.
 Image readRadianceHdr(const std::filesystem::path& file, PixelRepair repair = PixelRepair::Repair);
 

@@ -14,11 +14,11 @@
 // OUTDIR/bake.json  inputs, parameters, per-stage timings, ray and light counts.
 // OUTDIR appears only when everything is written (output_directory.h).
 
-#include <tbb/global_control.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -68,6 +68,7 @@ struct Options {
   std::string envFormat = "latlong";
   std::string shWindow = "auto";  // "auto", "none" or a cutoff in bands
   std::uint32_t specularSamples = 1024;
+  std::string specularSize = "auto";  // "auto" or a power of two
   int lutSize = 128;
   std::string sunThreshold = "auto";  // "auto" or a luminance
   int maxSuns = SunExtractionOptions{}.maxLights;
@@ -131,6 +132,22 @@ float sunThreshold(const std::string& choice) {
   failUsage("--sun-threshold", "expected auto or a positive luminance, got '" + choice + "'");
 }
 
+// The specular chains' face size of level 0: automatic (0: defaultSpecularBaseSize of the map's
+// width, at most kMaxDefaultSpecularBaseSize) or a power of two up to kMaxSpecularSize.
+constexpr int kMaxSpecularSize = 8192;
+int specularBaseSize(const std::string& choice) {
+  if (choice == "auto") return 0;
+  try {
+    std::size_t used = 0;
+    const int size = std::stoi(choice, &used);
+    if (used == choice.size() && size >= 1 && size <= kMaxSpecularSize && std::has_single_bit(unsigned(size)))
+      return size;
+  } catch (const std::exception&) {
+  }
+  failUsage("--specular-size", "expected auto or a power of two from 1 to " + std::to_string(kMaxSpecularSize) +
+                                   ", got '" + choice + "'");
+}
+
 // The environment stages (baker/environment_stages.h), their seconds added to `timings`. Computed
 // before the output's temporary folder exists, so that an interrupt during the long stages finds
 // nothing to clean up, and the folder lives only while files are written into it.
@@ -139,6 +156,7 @@ EnvironmentStages bakeEnvironment(const EnvironmentMap& environment, const Optio
   EnvironmentStageOptions stageOptions;
   stageOptions.shWindowCutoff = windowCutoff;
   stageOptions.specularSamples = options.specularSamples;
+  stageOptions.specularBaseSize = specularBaseSize(options.specularSize);
   stageOptions.lutSize = options.lutSize;
   stageOptions.lights = true;
   stageOptions.suns.threshold = sunThreshold(options.sunThreshold);
@@ -178,6 +196,7 @@ int bake(const Options& options) {
   // Checked before any work.
   const std::optional<float> windowCutoff = shWindowCutoff(options.shWindow);
   sunThreshold(options.sunThreshold);
+  specularBaseSize(options.specularSize);
   checkEnvironmentOverride(options.environment);
   Stopwatch stopwatch;
   json timings;
@@ -254,6 +273,7 @@ int bake(const Options& options) {
                                           {"seed", options.seed},
                                           {"sh_window", options.shWindow},
                                           {"specular_samples", options.specularSamples},
+                                          {"specular_size", options.specularSize},
                                           {"sun_threshold", options.sunThreshold},
                                           {"max_suns", options.maxSuns},
                                           {"median_cut_levels", options.medianCutLevels}});
@@ -316,6 +336,10 @@ int main(int argc, char** argv) {
                  "GGX samples per texel for the roughest level")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
+  app.add_option("--specular-size", options.specularSize,
+                 "face size of the specular chains' sharpest level: auto (map width / 4 as a power of two, "
+                 "at most 1024) or a power of two up to 8192")
+      ->capture_default_str();
   app.add_option("--lut-size", options.lutSize, "DFG table size")
       ->check(CLI::Range(8, 1024))
       ->capture_default_str();
@@ -334,10 +358,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, iblkit::kMaxThreads))
       ->capture_default_str();
   return iblkit::runProgram(app, argc, argv, [&] {
-    std::unique_ptr<tbb::global_control> threads;
-    if (options.threads > 0)
-      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      std::size_t(options.threads));
+    const iblkit::ThreadLimit threads(options.threads);
     return iblkit::bake(options);
   });
 }

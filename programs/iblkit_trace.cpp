@@ -107,6 +107,7 @@ int run(const Options& options, const CLI::App& app) {
   if (app.count("--width")) requireInRange("--width", options.width, 1, kMaxImageSide);
   if (app.count("--height")) requireInRange("--height", options.height, 1, kMaxImageSide);
   requireInRange("--threads", options.threads, 0, kMaxThreads);
+  const ThreadLimit threads(options.threads);
   if (options.maxDepth < 1)
     failUsage("--max-depth", "must be at least 1, got " + std::to_string(options.maxDepth));
   if (!(options.aoDistance > 0.0f)) failUsage("--ao-distance", "must be positive");

@@ -1,5 +1,6 @@
 #include "engine/gl/gpu_textures.h"
 
+#include <string>
 #include <utility>
 
 #include "core/error.h"
@@ -28,10 +29,19 @@ GLuint createTargetTexture(GLenum format, int width, int height) {
   return texture;
 }
 
+void requireTextureFits(int width, int height, GLenum limit, const char* what) {
+  GLint largest = 0;
+  glGetIntegerv(limit, &largest);
+  if (width <= largest && height <= largest) return;
+  throw Error(std::string(what) + " is " + std::to_string(width) + " x " + std::to_string(height) +
+              " texels, larger than this OpenGL's largest texture (" + std::to_string(largest) + " on a side)");
+}
+
 namespace {
 
-GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT) {
+GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT, const char* what) {
   if (image.empty()) throw Error("texture upload: empty image");
+  requireTextureFits(image.width(), image.height(), GL_MAX_TEXTURE_SIZE, what);
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
   glTextureStorage2D(id, 1, GL_RGBA32F, image.width(), image.height());
@@ -45,15 +55,18 @@ GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT) {
 
 }  // namespace
 
-GlTexture uploadLatLong(const Image& latLong) { return upload2D(latLong, GL_REPEAT, GL_CLAMP_TO_EDGE); }
+GlTexture uploadLatLong(const Image& latLong) {
+  return upload2D(latLong, GL_REPEAT, GL_CLAMP_TO_EDGE, "the environment map");
+}
 
-GlTexture uploadTable(const Image& table) { return upload2D(table, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE); }
+GlTexture uploadTable(const Image& table) { return upload2D(table, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, "a table"); }
 
 GlTexture uploadCubeLevels(const CubeMapLevels& levels) {
   if (levels.empty() || levels.front().size < 1) throw Error("texture upload: empty cube map chain");
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
   const int size = levels.front().size;
+  requireTextureFits(size, size, GL_MAX_CUBE_MAP_TEXTURE_SIZE, "a cube map's face");
   glTextureStorage2D(id, GLsizei(levels.size()), GL_RGBA32F, size, size);
   for (std::size_t level = 0; level < levels.size(); ++level) {
     const CubeMap& cube = levels[level];

@@ -27,6 +27,13 @@ class GlTexture {
 // the edge: a render target's attachment. The caller owns the name (GlTexture, or its own).
 GLuint createTargetTexture(GLenum format, int width, int height);
 
+// Throws Error("<what> is W x H texels, larger than this OpenGL's largest texture (N on a side)")
+// when width or height exceeds the context's `limit` (GL_MAX_TEXTURE_SIZE, or
+// GL_MAX_CUBE_MAP_TEXTURE_SIZE for a cube's faces): the upload would fail with GL_INVALID_VALUE and
+// leave the texture empty, drawing black where the map or texture belongs. A 32768-wide photograph
+// exceeds llvmpipe's 16384; some GPUs stop at 8192 or 16384.
+void requireTextureFits(int width, int height, GLenum limit, const char* what);
+
 // A lat-long map as RGBA32F with image row 0 first (v = 0 at t = 0), bilinear, no mip-maps,
 // repeating in s and clamped in t: the core's sampleLatLongBilinear (environment.glsl).
 GlTexture uploadLatLong(const Image& latLong);

@@ -33,6 +33,7 @@ float maxTextureAnisotropy() {
 GlTexture uploadMipChain(const MipChain& chain) {
   if (chain.levels.empty() || chain.width() < 1 || chain.height() < 1)
     throw Error("texture upload: empty mip chain");
+  requireTextureFits(chain.width(), chain.height(), GL_MAX_TEXTURE_SIZE, "a material texture");
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
   GlTexture texture(id);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <fstream>
 #include <glm/gtc/constants.hpp>
@@ -269,6 +270,38 @@ TEST(IblkitBake, BadShWindowIsRefusedWithoutOutput) {
       bake(scene.string() + " --env " + env.string() + " -o " + out.string() + " --sh-window wide", &status);
   EXPECT_EQ(status, 2);  // a usage error (cli/program.h)
   EXPECT_EQ(log, "iblkit-bake: --sh-window: expected auto, none or a positive number of bands, got 'wide'\n");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(leftovers(root), 0);
+}
+
+// --specular-size sets the face size of both specular chains' sharpest level (auto: a quarter of the
+// map's width); anything but auto or a power of two up to 8192 is refused before any work.
+TEST(IblkitBake, SpecularSizeSetsBothChainsAndBadSizesAreRefused) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out", env = root / "sky.exr";
+  writeExr(env, Image(64, 32, glm::vec4(1.0f)), {});
+  const std::string common =
+      scene.string() + " --env " + env.string() + " -o " + out.string() + " --ao-rays 4 --specular-samples 16 --lut-size 8";
+  int status = 0;
+  for (const auto& [size, face] : {std::pair{"auto", 16}, std::pair{"4", 4}, std::pair{"32", 32}}) {
+    const std::string log = bake(common + " --specular-size " + size, &status);
+    ASSERT_EQ(status, 0) << log;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "bake.json"));
+    EXPECT_EQ(report["parameters"]["specular_size"], size);
+    EXPECT_EQ(report["environment"]["specular_face_size"], face) << size;
+    for (const char* chain : {"specular.exr", "residual_specular.exr"}) {
+      ExrInfo info;
+      EXPECT_EQ(readExr(out / "env" / chain, &info).width(), face) << chain;
+      EXPECT_EQ(info.levels, std::bit_width(unsigned(face)) + 2) << chain;  // + OpenEXR's 1 x 3 and 1 x 1
+    }
+  }
+  fs::remove_all(out);
+  for (const char* bad : {"0", "24", "16384", "-8", "big", "8x"}) {
+    const std::string log = bake(common + " --specular-size " + bad, &status);
+    EXPECT_EQ(status, 2) << bad;
+    EXPECT_EQ(log, std::string("iblkit-bake: --specular-size: expected auto or a power of two from 1 to 8192, got '") +
+                       bad + "'\n");
+  }
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(leftovers(root), 0);
 }

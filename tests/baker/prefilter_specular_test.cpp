@@ -114,12 +114,15 @@ TEST(SpecularPrefilter, ConstantEnvironmentStaysConstantAtEveryLevel) {
 }
 
 // Photographs come in any size (3000 x 1500, 6000 x 3000): the default base is the largest power
-// of two at most width / 4, and a map whose width / 4 is not a power of two still prefilters.
+// of two at most width / 4, and a map whose width / 4 is not a power of two still prefilters. Large
+// photographs (8192 and 16384 wide) stop at kMaxDefaultSpecularBaseSize.
 TEST(SpecularPrefilter, AnyMapWidthGetsAPowerOfTwoBase) {
   EXPECT_EQ(defaultSpecularBaseSize(8), 2);
   EXPECT_EQ(defaultSpecularBaseSize(512), 128);
   EXPECT_EQ(defaultSpecularBaseSize(3000), 512);
   EXPECT_EQ(defaultSpecularBaseSize(6000), 1024);
+  EXPECT_EQ(defaultSpecularBaseSize(8192), 1024);
+  EXPECT_EQ(defaultSpecularBaseSize(16384), 1024);
   const SpecularCube cube = prefilterSpecular(EnvironmentMap::constant(glm::vec3(0.25f), 48));
   ASSERT_EQ(cube.levels.size(), 4u);  // 48 / 4 = 12 -> base 8 -> 8, 4, 2, 1
   EXPECT_EQ(cube.levels[0].size, 8);

@@ -290,6 +290,39 @@ TEST(Exr, TileShorterThanItsPixelsIsRefused) {
                             "(corrupt or truncated file?)");
 }
 
+// The programs decode with OpenEXR's threads (setExrThreads, cli/program.h): a compressed file
+// reads the same pixels as on one thread, and a damaged one fails with the same one-line error.
+TEST(Exr, ThreadedDecodingReadsTheSamePixelsAndFailsTheSameWay) {
+  const std::filesystem::path file = test::scratchDir() / "piz.exr";
+  const int width = 257, height = 131;  // PIZ blocks of 32 lines: 5, the last one partial
+  {
+    std::vector<Imf::Rgba> pixels;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        pixels.emplace_back(0.01f * float(x), 0.02f * float(y), float((x * 7 + y * 13) % 31), 1.0f);
+    Imf::RgbaOutputFile out(file.c_str(), width, height, Imf::WRITE_RGBA, 1.0f, Imath::V2f(0.0f, 0.0f), 1.0f,
+                            Imf::INCREASING_Y, Imf::PIZ_COMPRESSION);
+    out.setFrameBuffer(pixels.data(), 1, width);
+    out.writePixels(height);
+  }
+  setExrThreads(0);
+  const Image oneThread = readExr(file);
+  setExrThreads(4);
+  const Image threaded = readExr(file);
+  ASSERT_EQ(threaded.width(), width);
+  EXPECT_TRUE(std::equal(oneThread.pixels().begin(), oneThread.pixels().end(), threaded.pixels().begin()));
+  EXPECT_EQ(threaded.at(256, 130).g, float(Imath::half(0.02f * 130.0f)));
+  // Cut inside the third block's compressed data.
+  std::vector<char> bytes = fileBytes(file);
+  bytes.resize(bytes.size() * 3 / 5);
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  const std::string threadedError = test::errorMessage([&] { readExr(file); });
+  setExrThreads(0);
+  const std::string oneThreadError = test::errorMessage([&] { readExr(file); });
+  EXPECT_EQ(threadedError.rfind(file.string() + ": ", 0), 0u) << threadedError;
+  EXPECT_EQ(threadedError, oneThreadError);
+}
+
 // Layouts our writer never makes are committed files in tests/data/exr, written once with
 // OpenEXR's general interface as uncompressed float channels; their pixel values are listed here.
 

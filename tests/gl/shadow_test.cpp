@@ -430,7 +430,9 @@ TEST_F(ShadowTest, ShadowMaskGivesTheLitPassShadows) {
       EXPECT_LT(halfOffFraction, 0.03);
       // The depth test keeps the ground's shadow off the lit silhouettes: 0 pixels measured (16 of
       // 3852 with every mask pixel kept).
-      if (sunBehindCamera) EXPECT_LE(objectsOff, objects / 1000);
+      if (sunBehindCamera) {
+        EXPECT_LE(objectsOff, objects / 1000);
+      }
     }
 }
 
