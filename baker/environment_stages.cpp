@@ -30,7 +30,7 @@ EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, co
   EnvironmentStageTimes measured;
   Stopwatch stopwatch;
   EnvironmentStages stages;
-  stages.latLong = environment.image();
+  if (options.copyLatLong) stages.latLong = environment.image();
   stages.rotationDegrees = environment.rotationDegrees();
   stages.intensity = environment.intensity();
   step(0);

@@ -23,6 +23,9 @@ struct EnvironmentStageOptions {
   // Face size of the specular chains' level 0, a power of two; 0: defaultSpecularBaseSize of the
   // map's width.
   int specularBaseSize = 0;
+  // Whether stages.latLong gets a copy of the map (the viewer draws it); iblkit-bake writes no
+  // lat-long, and a 16384 x 8192 map's copy is 2 GiB.
+  bool copyLatLong = true;
   int lutSize = 128;
   std::uint32_t lutSamples = 512;
   int irradianceCubeSize = 16;  // face size of the brute-force irradiance cube; 0: not computed

@@ -157,6 +157,7 @@ EnvironmentStages bakeEnvironment(const EnvironmentMap& environment, const Optio
   stageOptions.shWindowCutoff = windowCutoff;
   stageOptions.specularSamples = options.specularSamples;
   stageOptions.specularBaseSize = specularBaseSize(options.specularSize);
+  stageOptions.copyLatLong = false;  // the viewer reads the map itself
   stageOptions.lutSize = options.lutSize;
   stageOptions.lights = true;
   stageOptions.suns.threshold = sunThreshold(options.sunThreshold);
