@@ -18,6 +18,8 @@ vec2 latLongUv(vec3 d) {
 
 // sampleLatLongBilinear of core/latlong.h: bilinear between texel centres, u wrapping across the
 // seam, v clamped to the centres of the first and last rows. The texture is uploaded with image
-// row 0 first (v = 0 at t = 0), GL_REPEAT in s, GL_CLAMP_TO_EDGE in t, GL_LINEAR without mip-maps,
-// which is exactly that filter. Explicit lod 0: the seam's jump in u must not pick a mip level.
+// row 0 first (v = 0 at t = 0), GL_REPEAT in s, GL_CLAMP_TO_EDGE in t, GL_LINEAR: at lod 0, which
+// this reads explicitly, exactly that filter (its mip levels are for sampleLatLongFootprint,
+// latlong_footprint.glsl).
 vec3 sampleLatLongBilinear(sampler2D latLong, vec2 uv) { return textureLod(latLong, uv, 0.0).rgb; }
+

@@ -3,7 +3,7 @@
 // radiance (or the normal / depth layer); alpha 1 on objects, 0 on the ground.
 
 #include "shared_constants.glsl"
-#include "environment.glsl"
+#include "latlong_footprint.glsl"
 #include "sh9.glsl"
 #include "brdf.glsl"
 #include "material.glsl"
@@ -155,6 +155,11 @@ void main() {
   m.metallic = 0.0;  // the factor is 0 (hasSpecularLayer), so the texture's product is too
 #endif
   vec3 n = shadingNormal(m.normal, geometric, v);
+  // The mirror's lookup takes screen derivatives of its direction (sampleLatLongFootprint): here,
+  // before any discard, in a branch on a uniform.
+  vec3 mirrorRadiance = vec3(0.0);
+  if (mode == kShadingModeMirror)
+    mirrorRadiance = latLongIntensity * sampleLatLongFootprint(latLongMap, rotateAboutY(reflect(-v, n), latLongRotation));
   // Alpha (docs/engine.md "Alpha"), in every layer: MASK exact, BLEND as coverage of the samples.
   // Compiled in for those modes only (ALPHA_MODE, renderer.cpp): a shader that may discard or
   // write gl_SampleMask loses the early depth test, which opaque meshes keep.
@@ -184,7 +189,7 @@ void main() {
   if (mode == kShadingModeUnlit) {
     radiance = albedo;
   } else if (mode == kShadingModeMirror) {
-    radiance = latLongIntensity * sampleLatLongBilinear(latLongMap, latLongUv(rotateAboutY(reflect(-v, n), latLongRotation)));
+    radiance = mirrorRadiance;
   } else if (mode == kShadingModeSh) {
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, n);
   } else if (mode == kShadingModeIrradiance) {

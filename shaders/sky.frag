@@ -1,9 +1,10 @@
 #version 450 core
 // The environment seen directly behind the objects: the camera ray of each pixel looked up in the
-// lat-long map, with the same filter and rotation as every other lookup. Alpha 0 (no object).
+// lat-long map through the pixel's footprint (sampleLatLongFootprint), with the same rotation as
+// every other lookup. Alpha 0 (no object).
 
 #include "shared_constants.glsl"
-#include "environment.glsl"
+#include "latlong_footprint.glsl"
 
 in vec2 ndc;
 
@@ -19,5 +20,5 @@ void main() {
   vec4 nearPoint = inverseViewProjection * vec4(ndc, -1.0, 1.0);
   vec4 farPoint = inverseViewProjection * vec4(ndc, 1.0, 1.0);
   vec3 direction = farPoint.xyz / farPoint.w - nearPoint.xyz / nearPoint.w;
-  fragColor = vec4(latLongIntensity * sampleLatLongBilinear(latLongMap, latLongUv(rotateAboutY(direction, latLongRotation))), 0.0);
+  fragColor = vec4(latLongIntensity * sampleLatLongFootprint(latLongMap, rotateAboutY(direction, latLongRotation)), 0.0);
 }

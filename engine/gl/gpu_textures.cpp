@@ -1,5 +1,7 @@
 #include "engine/gl/gpu_textures.h"
 
+#include <algorithm>
+#include <bit>
 #include <string>
 #include <utility>
 
@@ -39,14 +41,20 @@ void requireTextureFits(int width, int height, GLenum limit, const char* what) {
 
 namespace {
 
-GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT, const char* what) {
+// `image` as RGBA32F, row 0 first, bilinear; with `mipmaps`, the whole chain of box-filtered levels
+// (glGenerateTextureMipmap), trilinear between them. Not anisotropic: llvmpipe's anisotropic
+// lookups of this float texture left bright specks along a mirror sphere's rings (the
+// frame's relMSE 9.5 against 0.3 without them).
+GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT, const char* what, bool mipmaps = false) {
   if (image.empty()) throw Error("texture upload: empty image");
   requireTextureFits(image.width(), image.height(), GL_MAX_TEXTURE_SIZE, what);
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
-  glTextureStorage2D(id, 1, GL_RGBA32F, image.width(), image.height());
+  const int levels = mipmaps ? std::bit_width(unsigned(std::max(image.width(), image.height()))) : 1;
+  glTextureStorage2D(id, levels, GL_RGBA32F, image.width(), image.height());
   glTextureSubImage2D(id, 0, 0, 0, image.width(), image.height(), GL_RGBA, GL_FLOAT, image.pixels().data());
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  if (mipmaps) glGenerateTextureMipmap(id);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_WRAP_S, GLint(wrapS));
   glTextureParameteri(id, GL_TEXTURE_WRAP_T, GLint(wrapT));
@@ -56,7 +64,7 @@ GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT, const char* w
 }  // namespace
 
 GlTexture uploadLatLong(const Image& latLong) {
-  return upload2D(latLong, GL_REPEAT, GL_CLAMP_TO_EDGE, "the environment map");
+  return upload2D(latLong, GL_REPEAT, GL_CLAMP_TO_EDGE, "the environment map", true);
 }
 
 GlTexture uploadTable(const Image& table) { return upload2D(table, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, "a table"); }

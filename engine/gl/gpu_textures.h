@@ -34,8 +34,10 @@ GLuint createTargetTexture(GLenum format, int width, int height);
 // exceeds llvmpipe's 16384; some GPUs stop at 8192 or 16384.
 void requireTextureFits(int width, int height, GLenum limit, const char* what);
 
-// A lat-long map as RGBA32F with image row 0 first (v = 0 at t = 0), bilinear, no mip-maps,
-// repeating in s and clamped in t: the core's sampleLatLongBilinear (environment.glsl).
+// A lat-long map as RGBA32F with image row 0 first (v = 0 at t = 0), repeating in s and clamped
+// in t, with its chain of box-filtered mip levels. Read at lod 0 it is the core's
+// sampleLatLongBilinear; sampleLatLongFootprint (latlong_footprint.glsl) reads it trilinearly
+// through a pixel's footprint.
 GlTexture uploadLatLong(const Image& latLong);
 
 // A cube mip chain (cube_map.h, OpenGL's face layout; level sizes halving down to 1) as an RGBA32F

@@ -133,6 +133,72 @@ void expectMirrorMatches(float rotationDegrees) {
 
 TEST(Renderer, MirrorSphereMatchesTheCpuReflectionLookup) { expectMirrorMatches(0.0f); }
 
+// A map with detail at the texel scale (testSky's radiance times +-60% noise per texel, 2048 x
+// 1024: a photograph's foliage) seen through 128 x 96 pixels: the mirror sphere's reflection and
+// the sky behind it are minified, so what a pixel should show is the map averaged over its
+// footprint (the path tracer's pixel average; here 8 x 8 lookups of the core's bilinear map over
+// the pixel). The engine reads the map through the footprint (sampleLatLongFootprint); the lookup
+// at the pixel's centre alone, what it did before, is the yardstick.
+TEST(Renderer, MirrorAndSkyAverageADetailedMapOverThePixel) {
+  BakedScene bake = test::makeTestBake({.sphereMaterial = chrome()});
+  bake.env.latLong = latLongFromRadiance(2048, 1024, 1, [](const glm::vec3& d) {
+    const glm::vec3 smooth = test::testSkyRadiance(d);
+    // A hash of the direction, in [-1, 1): texel-scale noise.
+    const std::uint32_t h = std::uint32_t(std::int64_t(d.x * 1e6f) * 73856093 ^ std::int64_t(d.y * 1e6f) * 19349663 ^
+                                          std::int64_t(d.z * 1e6f) * 83492791);
+    return smooth * (1.0f + 0.6f * (float((h * 2654435761u) >> 8) / float(1u << 23) - 1.0f));
+  });
+  const EnvironmentMap environment = EnvironmentMap::fromImage(bake.env.latLong, "detail");
+  test::glContext();
+  Renderer renderer(bake);
+  RenderTarget target(kWidth, kHeight, 1);
+  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+  FrameSettings settings;
+  settings.mode = ShadingMode::Mirror;
+  renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+  const Image image = target.readColor();
+  checkGlErrors("detailed map render");
+  const auto seen = [&](glm::vec2 p) {
+    const glm::vec3 direction = camera.primaryRay(p, kWidth, kHeight).direction;
+    const std::optional<glm::vec3> hit = hitUnitSphere(camera, p);
+    return environment.radiance(hit ? glm::reflect(direction, glm::normalize(*hit)) : direction);
+  };
+  constexpr int kSub = 8;
+  struct Errors {
+    double engine = 0.0, centre = 0.0;
+    int pixels = 0;
+  } sphere, sky;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const glm::vec2 corner(x, y);
+      bool anyHit = false, allHit = true;
+      for (glm::vec2 offset : {glm::vec2(-1.0f), glm::vec2(2.0f), glm::vec2(-1.0f, 2.0f), glm::vec2(2.0f, -1.0f)}) {
+        anyHit = anyHit || hitUnitSphere(camera, corner + offset).has_value();
+        allHit = allHit && hitUnitSphere(camera, corner + offset).has_value();
+      }
+      if (anyHit && !allHit) continue;  // the silhouette: coverage and tessellation decide
+      glm::vec3 average(0.0f);
+      for (int j = 0; j < kSub; ++j)
+        for (int i = 0; i < kSub; ++i) average += seen(corner + (glm::vec2(i, j) + 0.5f) / float(kSub));
+      average /= float(kSub * kSub);
+      Errors& errors = allHit ? sphere : sky;
+      errors.engine += relativeError(glm::vec3(image.at(x, y)), average);
+      errors.centre += relativeError(seen(corner + 0.5f), average);
+      ++errors.pixels;
+    }
+  for (Errors* errors : {&sphere, &sky}) {
+    errors->engine /= errors->pixels;
+    errors->centre /= errors->pixels;
+  }
+  std::cout << "detailed map, mean relative error against the pixel average: sphere (" << sphere.pixels
+            << " pixels) " << sphere.engine << ", centre lookup " << sphere.centre << "; sky (" << sky.pixels
+            << " pixels) " << sky.engine << ", centre lookup " << sky.centre << '\n';
+  EXPECT_GT(sphere.pixels, 1500);
+  EXPECT_GT(sky.pixels, 5000);
+  EXPECT_LT(sphere.engine, 0.5 * sphere.centre);
+  EXPECT_LT(sky.engine, 0.5 * sky.centre);
+}
+
 TEST(Renderer, EnvironmentRotationTurnsEveryLookup) { expectMirrorMatches(90.0f); }
 
 // E(n) of `environment` by brute force (every texel a light) at one normal.

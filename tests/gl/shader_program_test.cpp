@@ -9,8 +9,9 @@
 namespace iblkit {
 namespace {
 
-// mesh.frag includes the generated constants and seven files (material.glsl includes the constants
-// again, under their include guard; shadow.glsl includes light_directions.glsl): each is preceded by "#line 1 N" and
+// mesh.frag includes the generated constants and the files below (material.glsl includes the
+// constants again, under their include guard; shadow.glsl includes light_directions.glsl,
+// latlong_footprint.glsl environment.glsl): each is preceded by "#line 1 N" and
 // followed by the line after the #include in file 0, so compiler messages map back to the
 // original files.
 TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
@@ -21,18 +22,19 @@ TEST(ShaderProgram, IncludesAreExpandedWithLineDirectives) {
   EXPECT_NE(source.find("#line 1 4\n"), std::string::npos);
   for (const EmbeddedShader& shader : embeddedShaders())
     if (shader.name == "mesh.frag") {
-      ASSERT_EQ(shader.files.size(), 11u);
+      ASSERT_EQ(shader.files.size(), 12u);
       EXPECT_EQ(shader.files[0], "shaders/mesh.frag");
       EXPECT_EQ(shader.files[1], "generated/shared_constants.glsl");
-      EXPECT_EQ(shader.files[2], "shaders/environment.glsl");
-      EXPECT_EQ(shader.files[3], "shaders/sh9.glsl");
-      EXPECT_EQ(shader.files[4], "shaders/brdf.glsl");
-      EXPECT_EQ(shader.files[5], "shaders/material.glsl");
-      EXPECT_EQ(shader.files[6], "shaders/lights.glsl");
-      EXPECT_EQ(shader.files[7], "shaders/shadow.glsl");
-      EXPECT_EQ(shader.files[8], "shaders/light_directions.glsl");  // included by shadow.glsl
-      EXPECT_EQ(shader.files[9], "shaders/visibility_cone.glsl");
-      EXPECT_EQ(shader.files[10], "shaders/dominant_lights.glsl");
+      EXPECT_EQ(shader.files[2], "shaders/latlong_footprint.glsl");
+      EXPECT_EQ(shader.files[3], "shaders/environment.glsl");  // included by latlong_footprint.glsl
+      EXPECT_EQ(shader.files[4], "shaders/sh9.glsl");
+      EXPECT_EQ(shader.files[5], "shaders/brdf.glsl");
+      EXPECT_EQ(shader.files[6], "shaders/material.glsl");
+      EXPECT_EQ(shader.files[7], "shaders/lights.glsl");
+      EXPECT_EQ(shader.files[8], "shaders/shadow.glsl");
+      EXPECT_EQ(shader.files[9], "shaders/light_directions.glsl");  // included by shadow.glsl
+      EXPECT_EQ(shader.files[10], "shaders/visibility_cone.glsl");
+      EXPECT_EQ(shader.files[11], "shaders/dominant_lights.glsl");
     }
 }
 
