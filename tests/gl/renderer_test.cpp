@@ -46,6 +46,25 @@ float relativeError(const glm::vec3& value, const glm::vec3& expected) {
   return glm::length(value - expected) / glm::length(expected);
 }
 
+// The test bake's renderer, a kWidth x kHeight target and the scene's camera (the GL context first).
+struct SceneFrame {
+  explicit SceneFrame(const BakedScene& bake, int samples = 1)
+      : renderer(bake), target(kWidth, kHeight, samples), camera(sceneCamera(bake.scene, float(kWidth) / float(kHeight))) {}
+  Image render(const FrameSettings& settings) {
+    renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+    return target.readColor();
+  }
+  Image render(ShadingMode mode) {
+    FrameSettings settings;
+    settings.mode = mode;
+    return render(settings);
+  }
+  bool context = (test::glContext(), true);
+  Renderer renderer;
+  RenderTarget target;
+  Camera camera;
+};
+
 struct Comparison {
   int pixels = 0;
   float maxError = 0.0f, meanError = 0.0f;
@@ -57,12 +76,9 @@ struct Comparison {
 template <class Expected>
 Comparison compareSphere(const BakedScene& bake, const FrameSettings& settings, Expected&& expected,
                          Comparison* sky = nullptr) {
-  test::glContext();
-  Renderer renderer(bake);
-  RenderTarget target(kWidth, kHeight, 1);
-  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
-  renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
-  const Image image = target.readColor();
+  SceneFrame frame(bake);
+  const Camera& camera = frame.camera;
+  const Image image = frame.render(settings);
   checkGlErrors("sphere render");
   EnvironmentMap environment = test::testSky();
   environment.setRotationDegrees(settings.envRotationDegrees);
@@ -149,14 +165,9 @@ TEST(Renderer, MirrorAndSkyAverageADetailedMapOverThePixel) {
     return smooth * (1.0f + 0.6f * (float((h * 2654435761u) >> 8) / float(1u << 23) - 1.0f));
   });
   const EnvironmentMap environment = EnvironmentMap::fromImage(bake.env.latLong, "detail");
-  test::glContext();
-  Renderer renderer(bake);
-  RenderTarget target(kWidth, kHeight, 1);
-  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
-  FrameSettings settings;
-  settings.mode = ShadingMode::Mirror;
-  renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
-  const Image image = target.readColor();
+  SceneFrame frame(bake);
+  const Camera& camera = frame.camera;
+  const Image image = frame.render(ShadingMode::Mirror);
   checkGlErrors("detailed map render");
   const auto seen = [&](glm::vec2 p) {
     const glm::vec3 direction = camera.primaryRay(p, kWidth, kHeight).direction;
@@ -264,15 +275,9 @@ TEST(Renderer, IrradianceModeMatchesTheCpuBruteForceIrradiance) {
 TEST(Renderer, IrradianceModesNeedTheCube) {
   BakedScene bake = test::makeTestBake({.sphereMaterial = lambertWhite(), .rings = 4, .segments = 8});
   bake.env.irradiance = CubeMap();
-  test::glContext();
-  Renderer renderer(bake);
-  RenderTarget target(kWidth, kHeight, 1);
-  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
-  FrameSettings settings;
-  settings.mode = ShadingMode::Sh;
-  EXPECT_NO_THROW(renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight));
-  settings.mode = ShadingMode::IrradianceAoBent;
-  EXPECT_EQ(test::errorMessage([&] { renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight); }),
+  SceneFrame frame(bake);
+  EXPECT_NO_THROW(frame.render(ShadingMode::Sh));
+  EXPECT_EQ(test::errorMessage([&] { frame.render(ShadingMode::IrradianceAoBent); }),
             "irradiance-ao-bent mode: the environment stages have no irradiance cube (env/irradiance.exr)");
   checkGlErrors("after the refused frame");
 }
@@ -297,17 +302,9 @@ TEST(Renderer, ShAndIrradianceModesDifferByTheSh9Truncation) {
                                                .lutSize = 8,
                                                .lutSamples = 16,
                                                .irradianceCubeSize = 16});
-  test::glContext();
-  Renderer renderer(bake);
-  RenderTarget target(kWidth, kHeight, 1);
-  const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
-  auto render = [&](ShadingMode mode) {
-    FrameSettings settings;
-    settings.mode = mode;
-    renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
-    return target.readColor();
-  };
-  const Image sh = render(ShadingMode::Sh), irradiance = render(ShadingMode::Irradiance);
+  SceneFrame frame(bake);
+  const Camera& camera = frame.camera;
+  const Image sh = frame.render(ShadingMode::Sh), irradiance = frame.render(ShadingMode::Irradiance);
   checkGlErrors("sh and irradiance");
   const glm::vec3 brightest = white.baseColor / glm::pi<float>() * bruteForceIrradianceAt(peaked, sun);
   std::vector<glm::ivec2> interior;
