@@ -663,9 +663,7 @@ class Loader {
         fail(file_, what + ": " + std::to_string(read.size()) + " inverse bind matrices for " +
                         std::to_string(source.joints.size()) + " joints");
       for (const glm::mat4& m : read)
-        for (int c = 0; c < 4; ++c)
-          for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) fail(file_, what + ": non-finite inverse bind matrix");
+        requireFinite(std::span<const float>(glm::value_ptr(m), 16), what + ": non-finite inverse bind matrix", file_);
       std::copy_n(read.begin(), source.joints.size(), inverseBind.begin());
     }
     std::vector<glm::mat4> joints;

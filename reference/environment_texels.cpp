@@ -1,6 +1,5 @@
 #include "reference/environment_texels.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -24,15 +23,6 @@ std::vector<float> rowEdges(int height) {
   edges.back() = -1.0f;
   return edges;
 }
-// body(y) for each row y of a map `height` rows high, rows in parallel (TBB): the tables of a
-// 16384 x 8192 photograph are 134 M texels. Each row writes only its own entries, so the tables
-// are the same whatever the threads.
-template <class Body>
-void forEachRow(int height, const Body& body) {
-  tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y < rows.end(); ++y) body(y);
-  });
-}
 // Floor of the compensated weights, relative to the mean (pbrt-v4).
 constexpr float kCompensationFloor = 1e-3f;
 // Maps whose weights vary by less than this fraction of their mean are not compensated (Mitsuba 3).
@@ -42,12 +32,14 @@ constexpr float kNearConstant = 1e-2f;
 EnvironmentTexels::EnvironmentTexels(const EnvironmentMap& map)
     : map_(map), rowCosTheta_(rowEdges(map.height())) {
   luminance_.resize(static_cast<std::size_t>(map.width()) * static_cast<std::size_t>(map.height()));
-  forEachRow(map.height(), [&](int y) {
+  // Rows in parallel here and in nodeWeights (a 16384 x 8192 map is 134 M texels); each row writes
+  // only its own entries, so the tables are the same whatever the threads.
+  tbb::parallel_for(0, map.height(), [&](int y) {
     for (int x = 0; x < map.width(); ++x)
       luminance_[static_cast<std::size_t>(y) * map.width() + x] = map.texelLuminance(x, y);
   });
   shaped_.assign(luminance_.size(), 0);
-  forEachRow(map.height(), [&](int y) {
+  tbb::parallel_for(0, map.height(), [&](int y) {
     for (int x = 0; x < map.width(); ++x) {
       const Nodes n = nodes({x, y});
       shaped_[static_cast<std::size_t>(y) * map.width() + x] = n.mean > 0.0f && n.highest() > kFlatRatio * n.lowest();
@@ -64,7 +56,7 @@ EnvironmentTexels::EnvironmentTexels(const EnvironmentMap& map)
 std::vector<float> EnvironmentTexels::nodeWeights(float (*luminance)(const Nodes&)) const {
   const int width = map_.width(), height = map_.height();
   std::vector<float> weights(luminance_.size());
-  forEachRow(height, [&](int y) {
+  tbb::parallel_for(0, height, [&](int y) {
     const float rowSolidAngle =
         (rowCosTheta_[static_cast<std::size_t>(y)] - rowCosTheta_[static_cast<std::size_t>(y) + 1]) * 0.5f *
         static_cast<float>(height);

@@ -488,6 +488,16 @@ TEST_F(GltfLoad, SkinnedMeshTakesItsJointsPose) {
   EXPECT_NE(loadError(builder).find("model.gltf: mesh 0 primitive 0: JOINTS refer to joint 7 of skin 0, which has 2"),
             std::string::npos)
       << loadError(builder);
+  // So is a non-finite inverse bind matrix.
+  matrices[21] = std::numeric_limits<float>::quiet_NaN();
+  builder.document()["accessors"].push_back(
+      {{"bufferView", builder.addBufferView(matrices.data(), matrices.size() * sizeof(float))},
+       {"componentType", test::kFloat},
+       {"count", 2},
+       {"type", "MAT4"}});
+  builder.document()["skins"][0]["inverseBindMatrices"] = int(builder.document()["accessors"].size()) - 1;
+  EXPECT_NE(loadError(builder).find("model.gltf: skin 0: non-finite inverse bind matrix"), std::string::npos)
+      << loadError(builder);
 }
 
 // Morph targets at their default weights (section 3.7.2.2): the mesh's weights, or the node's,
