@@ -513,7 +513,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       const glm::vec3 wo = -p.ray.direction, n = point.shadingNormal, ng = point.geometricNormal;
       const BrdfAtPoint* brdf = p.reflection();
       if (p.covered) {
-        sampleGroundOcclusion(p, i, lightSamples, split > 1 ? &splitDraws[i * std::size_t(split)] : nullptr,
+        sampleGroundOcclusion(p, i, lightSamples, lightSamples > 1 ? &splitDraws[i * std::size_t(split)] : nullptr,
                               out[i], shadows);
         continue;
       }
