@@ -6,16 +6,27 @@ namespace iblkit {
 
 EnvironmentSampler::EnvironmentSampler(const EnvironmentMap& map, bool misCompensation,
                                        LightOrientation orientation)
-    : texels_(map), distribution_(std::vector<float>{0.0f}, 1, 1) {
+    : texels_(map) {
   // Uncompensated: each texel by its mean bilinear luminance and the point inside it by the
   // bilinear luminance itself (EnvironmentTexels::sampleWithin), so the density follows the
   // lookups' radiance instead of being flat across a texel next to a sun.
-  const std::vector<float> weights = texels_.samplingWeights(misCompensation, &compensated_);
+  std::vector<float> weights = texels_.samplingWeights(misCompensation, &compensated_);
   bilinear_ = !compensated_;
-  distribution_ = PiecewiseConstant2D(weights, map.width(), map.height());
-  black_ = distribution_.integral() <= 0.0f;
+  // Black: every weight 0 (they are finite and non-negative, PiecewiseConstant2D checks them).
+  black_ = std::none_of(weights.begin(), weights.end(), [](float w) { return w > 0.0f; });
   if (black_) bilinear_ = false;
-  if (orientation == LightOrientation::ByNormal && !black_) oriented_.emplace(texels_, weights);
+  if (orientation == LightOrientation::ByNormal && !black_) {
+    oriented_.emplace(texels_, std::move(weights));
+    return;
+  }
+  std::call_once(plainBuilt_, [&] { distribution_.emplace(weights, map.width(), map.height()); });
+}
+
+const PiecewiseConstant2D& EnvironmentSampler::plain() const {
+  std::call_once(plainBuilt_, [&] {
+    distribution_.emplace(oriented_->weights(), texels_.map().width(), texels_.map().height());
+  });
+  return *distribution_;
 }
 
 EnvironmentSampler::Sample EnvironmentSampler::pointIn(glm::ivec2 texel, glm::vec2 within, float pdfUv) const {
@@ -34,12 +45,13 @@ float EnvironmentSampler::withinDensity(const EnvironmentTexels::Location& at) c
 }
 
 EnvironmentSampler::Sample EnvironmentSampler::sample(glm::vec2 u) const {
-  const PiecewiseConstant2D::Sample s = distribution_.sample(u);
+  const PiecewiseConstant2D& distribution = plain();
+  const PiecewiseConstant2D::Sample s = distribution.sample(u);
   // The point inside the texel: across its columns, and down its row's solid angle (linear in
   // cos(theta)), uniform or by the bilinear luminance.
   const glm::vec2 within(
-      std::clamp(s.p.x * static_cast<float>(distribution_.width()) - static_cast<float>(s.offset.x), 0.0f, 1.0f),
-      std::clamp(s.p.y * static_cast<float>(distribution_.height()) - static_cast<float>(s.offset.y), 0.0f, 1.0f));
+      std::clamp(s.p.x * static_cast<float>(distribution.width()) - static_cast<float>(s.offset.x), 0.0f, 1.0f),
+      std::clamp(s.p.y * static_cast<float>(distribution.height()) - static_cast<float>(s.offset.y), 0.0f, 1.0f));
   return pointIn(s.offset, within, s.pdf);
 }
 
@@ -47,16 +59,16 @@ float EnvironmentSampler::pdf(const glm::vec3& worldDirection) const { return lo
 
 EnvironmentSampler::Lookup EnvironmentSampler::lookupAt(glm::vec2 uv) const {
   const EnvironmentTexels::Location at = texels_.locateUv(uv);
-  return {at.radiance, texels_.solidAnglePdf(distribution_.pdf(at.uv) * withinDensity(at), at.texel.y)};
+  return {at.radiance, texels_.solidAnglePdf(plain().pdf(at.uv) * withinDensity(at), at.texel.y)};
 }
 
 void EnvironmentSampler::prefetchSample(glm::vec2 u, int stage) const {
-  const glm::ivec2 cell = distribution_.prefetchSample(u, stage);
+  const glm::ivec2 cell = plain().prefetchSample(u, stage);
   if (cell.x >= 0) texels_.prefetchAround(cell);
 }
 
 void EnvironmentSampler::prefetchLookup(glm::vec2 uv) const {
-  distribution_.prefetchPdf(uv);
+  plain().prefetchPdf(uv);
   texels_.prefetchAround(texels_.texelAt(uv));
 }
 

@@ -42,7 +42,7 @@ std::vector<int> cellOfTexel(const std::vector<int>& edge, int size) {
 
 }  // namespace
 
-OrientedEnvironment::OrientedEnvironment(const EnvironmentTexels& texels, std::span<const float> weights)
+OrientedEnvironment::OrientedEnvironment(const EnvironmentTexels& texels, std::vector<float> weights)
     : texels_(texels),
       width_(texels.map().width()),
       height_(texels.map().height()),
@@ -52,7 +52,7 @@ OrientedEnvironment::OrientedEnvironment(const EnvironmentTexels& texels, std::s
       rowStart_(edges(height_, rows_)),
       columnCell_(cellOfTexel(columnStart_, width_)),
       rowCell_(cellOfTexel(rowStart_, height_)),
-      weights_(weights.begin(), weights.end()) {
+      weights_(std::move(weights)) {
   const std::size_t cellCount = static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_);
   cellWeight_.assign(cellCount, 0.0f);
   cellOffset_.assign(cellCount + 1, 0);

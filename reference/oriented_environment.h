@@ -40,7 +40,8 @@ class OrientedEnvironment {
 
   // `weights`: the texels' sampling weights row by row (EnvironmentTexels::weights of `texels`' map).
   // Keeps a reference to `texels`, which must outlive this.
-  OrientedEnvironment(const EnvironmentTexels& texels, std::span<const float> weights);
+  // (Taken by value: the caller moves them in, and a large map's tables are not held twice.)
+  OrientedEnvironment(const EnvironmentTexels& texels, std::vector<float> weights);
 
   struct Pick {
     glm::ivec2 texel{0};       // (column, row)
@@ -65,6 +66,8 @@ class OrientedEnvironment {
   void prefetchPdf(int bucket, glm::ivec2 texel) const;
 
   glm::ivec2 cells() const { return {columns_, rows_}; }
+  // The texels' weights it was built from, row by row.
+  std::span<const float> weights() const { return weights_; }
   // c_b of cell (column, row) of the grid (for the tests).
   float cosineBound(int bucket, glm::ivec2 cell) const;
   // The cell a texel lies in.

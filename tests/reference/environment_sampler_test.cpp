@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <thread>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 
@@ -167,6 +170,34 @@ TEST(EnvironmentSampler, SampleWithinIsTheSameDrawStoppedOutsideTheCone) {
       }
   std::printf("stopped early: %d of %d draws\n", empty, total);
   EXPECT_GT(empty, total / 4);
+}
+
+// An oriented sampler builds the plain distribution only when it is first used (its integrator
+// never does): its plain samples and lookups are then those of a sampler built without
+// orientation, bit for bit, also when several threads use it first at once.
+TEST(EnvironmentSampler, AnOrientedSamplersPlainDistributionIsBuiltOnFirstUse) {
+  EnvironmentMap map = spotMap(128);
+  map.setRotationDegrees(31.0f);
+  const EnvironmentSampler plain(map, false, LightOrientation::None);
+  const EnvironmentSampler oriented(map, false, LightOrientation::ByNormal);
+  ASSERT_FALSE(plain.oriented());
+  ASSERT_TRUE(oriented.oriented());
+  std::vector<std::thread> threads;
+  std::atomic<int> mismatches{0};
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      PCG32 rng(9, static_cast<std::uint64_t>(t));
+      for (int i = 0; i < 2000; ++i) {
+        const glm::vec2 u = rng.uniform2D();
+        const EnvironmentSampler::Sample a = plain.sample(u), b = oriented.sample(u);
+        const EnvironmentSampler::Lookup la = plain.lookup(a.direction), lb = oriented.lookup(a.direction);
+        if (a.direction != b.direction || a.radiance != b.radiance || a.pdf != b.pdf || la.pdf != lb.pdf ||
+            la.radiance != lb.radiance)
+          ++mismatches;
+      }
+    });
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(mismatches.load(), 0);
 }
 
 TEST(EnvironmentSampler, BlackMapSamplesUniformlyInUv) {
