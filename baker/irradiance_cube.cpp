@@ -13,7 +13,8 @@ namespace iblkit {
 CubeMap irradianceCube(const EnvironmentMap& environment, int size) {
   if (size < 1) throw std::invalid_argument("irradianceCube: size must be >= 1");
   if (environment.width() <= kIrradianceSourceWidth) return bruteForceIrradianceCube(environment, size);
-  Image image = environment.image();
+  // Halved from the map itself, not from a copy of it (a 16384 x 8192 map is 2 GiB).
+  Image image = downsample2x(environment.image());
   while (image.width() > kIrradianceSourceWidth) image = downsample2x(image);
   EnvironmentMap small = EnvironmentMap::fromImage(std::move(image), "downsampled environment");
   small.setRotationDegrees(environment.rotationDegrees());
