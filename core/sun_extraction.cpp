@@ -14,7 +14,7 @@
 namespace iblkit {
 namespace {
 
-// Union-find over texel indices (path halving, union by index: the smaller index is the root, so
+// Union-find over indices (path halving, union by index: the smaller index is the root, so
 // the labelling does not depend on the order of the unions).
 class TexelRegions {
  public:
@@ -171,50 +171,59 @@ ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions&
       options.threshold > 0.0f ? options.threshold : automaticSunThreshold(map, options.peakToMean);
   result.residual = map.image();
   const int width = map.width(), height = map.height();
-  const std::size_t count = std::size_t(width) * std::size_t(height);
-  std::vector<char> above(count, 0);
+  // The texels above the threshold, in index order (y * width + x), and where each row starts:
+  // the regions are found among them alone, so the tables grow with the bright texels, not with
+  // the map (a 16384 x 8192 map held two 8-byte tables per texel, 2 GiB).
+  std::vector<std::size_t> aboveTexels;
+  std::vector<std::size_t> rowStart(std::size_t(height) + 1, 0);
   double mapEnergy = 0.0;
   for (int y = 0; y < height; ++y) {
+    rowStart[std::size_t(y)] = aboveTexels.size();
     const float dOmega = map.texelSolidAngle(y);
     for (int x = 0; x < width; ++x) {
       const float lum = map.texelLuminance(x, y);
-      above[std::size_t(y) * std::size_t(width) + std::size_t(x)] = lum > result.threshold;
+      if (lum > result.threshold) aboveTexels.push_back(std::size_t(y) * std::size_t(width) + std::size_t(x));
       mapEnergy += double(lum) * dOmega;
     }
   }
-  TexelRegions regions(count);
-  auto index = [width](int x, int y) { return std::size_t(y) * std::size_t(width) + std::size_t(x); };
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      if (!above[index(x, y)]) continue;
-      // Half of the 8 neighbours (the other half joins from their side), longitude wrapping.
-      const int right = (x + 1) % width;
-      if (above[index(right, y)]) regions.join(index(x, y), index(right, y));
-      if (y + 1 < height)
-        for (const int nx : {(x + width - 1) % width, x, right})
-          if (above[index(nx, y + 1)]) regions.join(index(x, y), index(nx, y + 1));
-    }
-  // The texels of the top row all touch at the pole (+Y), those of the bottom row at -Y.
-  for (const int y : {0, height - 1}) {
-    int first = -1;
-    for (int x = 0; x < width; ++x) {
-      if (!above[index(x, y)]) continue;
-      if (first < 0) first = x;
-      regions.join(index(first, y), index(x, y));
-    }
+  rowStart[std::size_t(height)] = aboveTexels.size();
+  // The position in aboveTexels of texel (x, y), or none when it is not above.
+  constexpr std::size_t kNone = ~std::size_t(0);
+  auto above = [&](int x, int y) {
+    const auto first = aboveTexels.begin() + std::ptrdiff_t(rowStart[std::size_t(y)]);
+    const auto last = aboveTexels.begin() + std::ptrdiff_t(rowStart[std::size_t(y) + 1]);
+    const std::size_t texel = std::size_t(y) * std::size_t(width) + std::size_t(x);
+    const auto found = std::lower_bound(first, last, texel);
+    return found != last && *found == texel ? std::size_t(found - aboveTexels.begin()) : kNone;
+  };
+  // Positions keep the texels' order, so the smaller position is the smaller texel index: the
+  // union-find's roots, and so the regions and their order, are those of one over all texels.
+  TexelRegions regions(aboveTexels.size());
+  for (std::size_t i = 0; i < aboveTexels.size(); ++i) {
+    const int x = int(aboveTexels[i] % std::size_t(width)), y = int(aboveTexels[i] / std::size_t(width));
+    // Half of the 8 neighbours (the other half joins from their side), longitude wrapping.
+    const int right = (x + 1) % width;
+    if (const std::size_t j = above(right, y); j != kNone) regions.join(i, j);
+    if (y + 1 < height)
+      for (const int nx : {(x + width - 1) % width, x, right})
+        if (const std::size_t j = above(nx, y + 1); j != kNone) regions.join(i, j);
   }
+  // The texels of the top row all touch at the pole (+Y), those of the bottom row at -Y.
+  for (const int y : {0, height - 1})
+    for (std::size_t i = rowStart[std::size_t(y)]; i < rowStart[std::size_t(y) + 1]; ++i)
+      regions.join(rowStart[std::size_t(y)], i);
   std::vector<Region> found;
-  std::vector<std::size_t> regionOfRoot(count, count);
-  for (std::size_t i = 0; i < count; ++i) {
-    if (!above[i]) continue;
+  std::vector<std::size_t> regionOfRoot(aboveTexels.size(), kNone);
+  for (std::size_t i = 0; i < aboveTexels.size(); ++i) {
     const std::size_t root = regions.root(i);
-    if (regionOfRoot[root] == count) {
+    if (regionOfRoot[root] == kNone) {
       regionOfRoot[root] = found.size();
       found.emplace_back();
     }
     Region& region = found[regionOfRoot[root]];
-    region.texels.push_back(i);
-    const int x = int(i % std::size_t(width)), y = int(i / std::size_t(width));
+    const std::size_t texel = aboveTexels[i];
+    region.texels.push_back(texel);
+    const int x = int(texel % std::size_t(width)), y = int(texel / std::size_t(width));
     region.energy += double(map.texelLuminance(x, y) - result.threshold) * map.texelSolidAngle(y);
   }
   // Brightest first; ties by first texel, so the order is the same on every run.
