@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <iostream>
 #include <string>
 #include <utility>
 
 #include "core/error.h"
+#include "core/image.h"
 
 namespace iblkit {
 
@@ -63,8 +65,28 @@ GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT, const char* w
 
 }  // namespace
 
+bool latLongFits(int width, int height) {
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+  if (width > largest || height > largest) return false;
+  // The proxy target answers without allocating (OpenGL 4.5 section 8.22): its level 0 has width 0
+  // when the implementation cannot hold the texture.
+  glTexStorage2D(GL_PROXY_TEXTURE_2D, std::bit_width(unsigned(std::max(width, height))), GL_RGBA32F, width, height);
+  GLint proxyWidth = 0;
+  glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &proxyWidth);
+  return proxyWidth == width;
+}
+
 GlTexture uploadLatLong(const Image& latLong) {
-  return upload2D(latLong, GL_REPEAT, GL_CLAMP_TO_EDGE, "the environment map", true);
+  if (latLong.empty()) throw Error("texture upload: empty image");
+  if (latLongFits(latLong.width(), latLong.height()))
+    return upload2D(latLong, GL_REPEAT, GL_CLAMP_TO_EDGE, "the environment map", true);
+  Image halved = downsample2x(latLong);
+  while (!latLongFits(halved.width(), halved.height()) && halved.width() > 1) halved = downsample2x(halved);
+  std::cerr << "the environment map (" << latLong.width() << " x " << latLong.height() << ") is drawn at "
+            << halved.width() << " x " << halved.height()
+            << ": this OpenGL cannot hold it with its mip levels as RGBA32F\n";
+  return upload2D(halved, GL_REPEAT, GL_CLAMP_TO_EDGE, "the environment map", true);
 }
 
 GlTexture uploadTable(const Image& table) { return upload2D(table, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, "a table"); }

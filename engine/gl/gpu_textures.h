@@ -37,8 +37,15 @@ void requireTextureFits(int width, int height, GLenum limit, const char* what);
 // A lat-long map as RGBA32F with image row 0 first (v = 0 at t = 0), repeating in s and clamped
 // in t, with its chain of box-filtered mip levels. Read at lod 0 it is the core's
 // sampleLatLongBilinear; sampleLatLongFootprint (latlong_footprint.glsl) reads it trilinearly
-// through a pixel's footprint.
+// through a pixel's footprint. A map this OpenGL cannot hold so (latLongFits) is drawn from its
+// largest box-filtered half that it can (downsample2x, the chain's next level), with a note on
+// stderr: wider than the largest texture, or, on llvmpipe, past its 1 GiB a texture (a 16384 x
+// 8192 map's chain is 2.7 GiB; 8192 x 4096, 683 MiB, fits).
 GlTexture uploadLatLong(const Image& latLong);
+
+// Whether this OpenGL can hold a width x height RGBA32F texture with its whole mip chain: both
+// sides within GL_MAX_TEXTURE_SIZE, and the proxy texture of that storage accepted.
+bool latLongFits(int width, int height);
 
 // A cube mip chain (cube_map.h, OpenGL's face layout; level sizes halving down to 1) as an RGBA32F
 // cube map, trilinear (GL_LINEAR_MIPMAP_LINEAR) between levels. Seamless filtering across faces is
