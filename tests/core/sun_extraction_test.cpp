@@ -237,6 +237,36 @@ TEST(SunExtraction, ASunOverThePoleIsOneLight) {
   EXPECT_EQ(extractSuns(EnvironmentMap::fromImage(image, "poles")).suns.size(), 1u);
 }
 
+// A region is the texels above the threshold joined through any of their 8 neighbours, the
+// longitude wrapping: texels touching only at a corner are one light (also across the seam), one
+// dark texel between them makes two. The regions are found among the bright texels alone (a
+// binary search in each row's list), so each neighbour lookup is exercised: right, and the three
+// below.
+TEST(SunExtraction, TexelsTouchingAtACornerAreOneLightAndAGapMakesTwo) {
+  const auto lights = [](std::initializer_list<glm::ivec2> bright) {
+    Image image(64, 32, glm::vec4(0.01f));
+    for (const glm::ivec2 texel : bright) image.at(texel.x, texel.y) = glm::vec4(1e3f);
+    SunExtractionOptions options;
+    options.threshold = 1.0f;
+    options.minEnergyFraction = 0.0f;
+    options.maxAngularRadius = kPi;  // the chain below is wide
+    return extractSuns(EnvironmentMap::fromImage(image, "corners"), options).suns.size();
+  };
+  EXPECT_EQ(lights({{10, 10}, {11, 11}}), 1u);   // down and right
+  EXPECT_EQ(lights({{10, 10}, {9, 11}}), 1u);    // down and left
+  EXPECT_EQ(lights({{10, 10}, {10, 11}}), 1u);   // down
+  EXPECT_EQ(lights({{10, 10}, {11, 10}}), 1u);   // right
+  EXPECT_EQ(lights({{63, 10}, {0, 11}}), 1u);    // down and right, across the seam
+  EXPECT_EQ(lights({{0, 10}, {63, 11}}), 1u);    // down and left, across the seam
+  EXPECT_EQ(lights({{10, 10}, {12, 10}}), 2u);   // a dark texel between
+  EXPECT_EQ(lights({{10, 10}, {10, 12}}), 2u);
+  EXPECT_EQ(lights({{10, 10}, {12, 11}}), 2u);
+  // A chain that only joins through its last texel: one light.
+  EXPECT_EQ(lights({{10, 10}, {20, 10}, {11, 11}, {12, 12}, {13, 12}, {14, 12}, {15, 12}, {16, 12}, {17, 12},
+                    {18, 12}, {19, 11}}),
+            1u);
+}
+
 TEST(SunExtraction, KeepsTheBrightestAboveTheEnergyFloorAndLeavesTheOthersWhole) {
   const SunDisk bright{.direction = fromSpherical(40.0f, 0.0f), .angularRadius = 0.05f};
   const SunDisk dim{
