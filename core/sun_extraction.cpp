@@ -1,7 +1,9 @@
 // extractSuns and automaticSunThreshold (core/environment_lights.h, docs/dominant-lights.md).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <glm/gtc/constants.hpp>
 #include <numeric>
 #include <stdexcept>
@@ -122,41 +124,68 @@ EnvironmentLight regionLight(const EnvironmentMap& map, const Region& region, fl
 float automaticSunThreshold(const EnvironmentMap& map, float peakToMean) {
   if (!(peakToMean >= 1.0f)) throw std::invalid_argument("automaticSunThreshold: peakToMean must be >= 1");
   const int width = map.width(), height = map.height();
-  // (luminance, solid angle) of every texel, brightest first.
-  std::vector<std::pair<float, float>> texels;
-  texels.reserve(std::size_t(width) * std::size_t(height));
+  const std::size_t count = std::size_t(width) * std::size_t(height);
+  // The luminances' histogram by the top 16 bits of their float (the order of non-negative floats
+  // is their bits' order), for the cutoffs below.
+  std::vector<std::size_t> histogram(std::size_t(1) << 16, 0);
+  const auto bucket = [](float lum) { return std::bit_cast<std::uint32_t>(lum > 0.0f ? lum : 0.0f) >> 16; };
   double lit = 0.0, sphere = 0.0;  // sum of luminance x solid angle; the solid angle (4 pi)
+  float brightest = 0.0f;
   for (int y = 0; y < height; ++y) {
     const float dOmega = map.texelSolidAngle(y);
     for (int x = 0; x < width; ++x) {
       const float lum = map.texelLuminance(x, y);
-      texels.emplace_back(lum, dOmega);
+      ++histogram[bucket(lum)];
       lit += double(lum) * dOmega;
       sphere += dOmega;
+      brightest = std::max(brightest, lum);
     }
   }
-  std::sort(texels.begin(), texels.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   const double k = peakToMean;
+  if (k * lit / sphere >= double(brightest)) return float(k * lit / sphere);
   // g(t) = k mean(min(lum, t)) - t is concave with g(0) = 0, so g >= 0 exactly on [0, t*]. Between
   // the i-th and (i+1)-th brightest luminance, mean(min(lum, t)) = (below + t above) / sphere with
   // `above` the solid angle of the i brightest texels and `below` the energy of the others: g is
   // linear there and its root t = k below / (sphere - k above). The largest root is in the first
   // interval (from the top) that holds its own root.
-  if (k * lit / sphere >= double(texels.front().first)) return float(k * lit / sphere);
-  double above = 0.0, below = lit;
-  for (std::size_t i = 0; i < texels.size(); ++i) {
-    // t in [texels[i].first, previous luminance]: texels 0..i-1 above t.
-    const double upper = i == 0 ? INFINITY : double(texels[i - 1].first);
-    const double lower = texels[i].first;
-    const double denominator = sphere - k * above;
-    if (denominator <= 0.0) return 0.0f;  // g falls for every t below: the root is 0
-    const double root = k * below / denominator;
-    if (root >= lower && root <= upper) return float(root);
-    above += texels[i].second;
-    below -= double(texels[i].first) * texels[i].second;
-    below = std::max(below, 0.0);
+  // The walk needs the texels brightest first only down to that interval, which on a sunny map
+  // lies just below the sun's texels (thousands of the 134 million of a 16384 x 8192 map, whose
+  // full sort was most of the lights' stage). So it takes the texels at or above a cutoff, the
+  // lowest edge of the histogram's buckets that holds `wanted` of them, sorted; past them it takes
+  // 16 times as many, and at last all. Every texel it leaves out is below every one it takes: the
+  // walk over those it takes is the walk over all of them, as far as it goes.
+  std::vector<std::pair<float, float>> texels;  // (luminance, solid angle), brightest first
+  for (std::size_t wanted = std::size_t(1) << 16;; wanted *= 16) {
+    std::uint32_t first = 0;  // the lowest bucket taken
+    if (wanted < count) {
+      std::size_t taken = 0;
+      for (first = std::uint32_t(histogram.size()); first > 0 && taken < wanted;) taken += histogram[--first];
+    }
+    texels.clear();
+    for (int y = 0; y < height; ++y) {
+      const float dOmega = map.texelSolidAngle(y);
+      for (int x = 0; x < width; ++x) {
+        const float lum = map.texelLuminance(x, y);
+        if (bucket(lum) >= first) texels.emplace_back(lum, dOmega);
+      }
+    }
+    const bool all = texels.size() == count;
+    std::sort(texels.begin(), texels.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    double above = 0.0, below = lit;
+    for (std::size_t i = 0; i < texels.size(); ++i) {
+      // t in [texels[i].first, previous luminance]: texels 0..i-1 above t.
+      const double upper = i == 0 ? INFINITY : double(texels[i - 1].first);
+      const double lower = texels[i].first;
+      const double denominator = sphere - k * above;
+      if (denominator <= 0.0) return 0.0f;  // g falls for every t below: the root is 0
+      const double root = k * below / denominator;
+      if (root >= lower && root <= upper) return float(root);
+      above += texels[i].second;
+      below -= double(texels[i].first) * texels[i].second;
+      below = std::max(below, 0.0);
+    }
+    if (all) return 0.0f;
   }
-  return 0.0f;
 }
 
 ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions& options) {
