@@ -12,13 +12,14 @@ EnvironmentSampler::EnvironmentSampler(const EnvironmentMap& map, bool misCompen
   // lookups' radiance instead of being flat across a texel next to a sun.
   std::vector<float> weights = texels_.samplingWeights(misCompensation, &compensated_);
   bilinear_ = !compensated_;
-  // Black: every weight 0 (they are finite and non-negative, PiecewiseConstant2D checks them).
+  // Black: every weight 0 (the weights are finite and non-negative: the map's radiance is).
   black_ = std::none_of(weights.begin(), weights.end(), [](float w) { return w > 0.0f; });
   if (black_) bilinear_ = false;
   if (orientation == LightOrientation::ByNormal && !black_) {
     oriented_.emplace(texels_, std::move(weights));
     return;
   }
+  // Built here, through the flag, so that plain() does not build it again.
   std::call_once(plainBuilt_, [&] { distribution_.emplace(weights, map.width(), map.height()); });
 }
 
