@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
+
+#include "core/latlong.h"
 
 namespace iblkit {
 
@@ -17,13 +20,22 @@ SphericalHarmonics9 projectEnvironmentSh9(const EnvironmentMap& environment) {
   // bake stage after them are reproducible to the last bit; parallel_reduce's split follows the
   // scheduling and changed the sixth digit from run to run.
   constexpr int kRowsPerTask = 4;
+  // The texels' directions are EnvironmentMap::texelDirection's, bit for bit, with each column's
+  // sines taken once (latLongLongitude) instead of at every texel: half of the projection's time
+  // on a 16384 x 8192 map.
+  const int width = environment.width(), height = environment.height();
+  std::vector<glm::vec2> longitudes(static_cast<std::size_t>(width));
+  for (int x = 0; x < width; ++x)
+    longitudes[static_cast<std::size_t>(x)] = latLongLongitude((static_cast<float>(x) + 0.5f) / static_cast<float>(width));
   return tbb::parallel_deterministic_reduce(
-      tbb::blocked_range<int>(0, environment.height(), kRowsPerTask), SphericalHarmonics9{},
+      tbb::blocked_range<int>(0, height, kRowsPerTask), SphericalHarmonics9{},
       [&](const tbb::blocked_range<int>& rows, SphericalHarmonics9 sum) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
           const float solidAngle = environment.texelSolidAngle(y);
-          for (int x = 0; x < environment.width(); ++x)
-            sum.accumulate(environment.texelDirection(x, y), environment.texelRadiance(x, y), solidAngle);
+          const glm::vec2 latitude = latLongLatitude((static_cast<float>(y) + 0.5f) / static_cast<float>(height));
+          for (int x = 0; x < width; ++x)
+            sum.accumulate(environment.toWorldDirection(latLongDirection(longitudes[static_cast<std::size_t>(x)], latitude)),
+                           environment.texelRadiance(x, y), solidAngle);
         }
         return sum;
       },

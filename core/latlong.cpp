@@ -28,11 +28,18 @@ glm::vec2 latLongUv(const glm::vec3& direction) {
   return {0.5f - longitude / (2.0f * kPi), 0.5f - latitude / kPi};
 }
 
+glm::vec2 latLongLongitude(float u) {
+  const float longitude = 2.0f * kPi * (0.5f - u);
+  return {std::sin(longitude), std::cos(longitude)};
+}
+
+glm::vec2 latLongLatitude(float v) {
+  const float latitude = kPi * (0.5f - v);
+  return {std::cos(latitude), std::sin(latitude)};
+}
+
 glm::vec3 latLongDirection(const glm::vec2& uv) {
-  const float longitude = 2.0f * kPi * (0.5f - uv.x);
-  const float latitude = kPi * (0.5f - uv.y);
-  const float cosLatitude = std::cos(latitude);
-  return {cosLatitude * std::sin(longitude), std::sin(latitude), cosLatitude * std::cos(longitude)};
+  return latLongDirection(latLongLongitude(uv.x), latLongLatitude(uv.y));
 }
 
 float latLongTexelSolidAngle(int width, int height, int y) {

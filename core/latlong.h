@@ -25,6 +25,15 @@ glm::vec2 latLongUv(const glm::vec3& direction);
 
 // (u, v) -> unit direction; u, v outside [0, 1] follow the same formula (u is periodic).
 glm::vec3 latLongDirection(const glm::vec2& uv);
+// latLongDirection's factors of u alone (sin and cos of the longitude) and of v alone (cos and sin
+// of the latitude), for loops over a map's texels that take each column's and each row's once:
+// latLongDirection(uv) is latLongDirection(latLongLongitude(uv.x), latLongLatitude(uv.y)), bit for
+// bit.
+glm::vec2 latLongLongitude(float u);
+glm::vec2 latLongLatitude(float v);
+inline glm::vec3 latLongDirection(const glm::vec2& longitude, const glm::vec2& latitude) {
+  return {latitude.x * longitude.x, latitude.y, latitude.x * longitude.y};
+}
 
 // Exact solid angle (steradians) of any texel in row y of a width x height lat-long image:
 // (2*pi/width) * (sin(lat_top) - sin(lat_bottom)). All texels of a map sum to 4*pi.

@@ -161,7 +161,9 @@ TEST(SunExtraction, TheAutomaticThresholdIsTheWalkOverAllTheTexelsSorted) {
       int above = 0;
       for (int y = 0; y < 256; ++y)
         for (int x = 0; x < 512; ++x) above += map.texelLuminance(x, y) > t;
-      if (image == &ramp && k == 1.05f) EXPECT_GT(above, 65536);  // past the first cut
+      if (image == &ramp && k == 1.05f) {
+        EXPECT_GT(above, 65536);  // past the first cut
+      }
     }
 }
 
