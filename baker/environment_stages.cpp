@@ -20,9 +20,14 @@ void requireEnvironmentForStages(const EnvironmentMap& environment, const std::f
                    "; prefiltering needs a width of at least 8");
 }
 
-EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, const EnvironmentStageOptions& options,
-                                           const std::function<void(std::size_t, std::size_t)>& progress,
-                                           EnvironmentStageTimes* times) {
+namespace {
+
+// computeEnvironmentStages of `environment`; `owned`, when given, is the same map, which the
+// lights' stage turns into the residual in place once nothing reads the map any more.
+EnvironmentStages stagesOf(const EnvironmentMap& environment, EnvironmentMap* owned,
+                           const EnvironmentStageOptions& options,
+                           const std::function<void(std::size_t, std::size_t)>& progress,
+                           EnvironmentStageTimes* times) {
   const std::size_t stageCount = options.lights ? 6 : 4;
   auto step = [&](std::size_t done) {
     if (progress) progress(done, stageCount);
@@ -53,15 +58,22 @@ EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, co
   measured.brdfLut = stopwatch.lap();
   step(4);
   if (options.lights) {
-    ExtractedSuns extracted = extractSuns(environment, options.suns);
+    SunExtractionOptions suns = options.suns;
+    suns.residualImage = owned == nullptr;
+    ExtractedSuns extracted = extractSuns(environment, suns);
     stages.lights.suns = std::move(extracted.suns);
     stages.lights.sunThreshold = extracted.threshold;
     stages.lights.medianCut = medianCutLights(environment, options.medianCutLevels);
     stages.lights.medianCutLevels = options.medianCutLevels;
-    // The residual in the map's own frame, as the map: the same rotation and intensity.
-    EnvironmentMap residual = EnvironmentMap::fromImage(std::move(extracted.residual), "residual");
-    residual.setRotationDegrees(environment.rotationDegrees());
-    residual.setIntensity(environment.intensity());
+    // The residual in the map's own frame, as the map: the same rotation and intensity. From here
+    // on only the residual is read.
+    const float rotationDegrees = environment.rotationDegrees(), intensity = environment.intensity();
+    Image residualImage = owned ? std::move(*owned).releaseImage() : std::move(extracted.residual);
+    if (owned)
+      for (const auto& [texel, value] : extracted.residualTexels) residualImage.pixels()[texel] = value;
+    EnvironmentMap residual = EnvironmentMap::fromImage(std::move(residualImage), "residual");
+    residual.setRotationDegrees(rotationDegrees);
+    residual.setIntensity(intensity);
     measured.lights = stopwatch.lap();
     step(5);
     // The same window as sh9: windowing is linear, so residualSh9 plus the suns' windowed sh9 is sh9.
@@ -74,6 +86,20 @@ EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, co
   }
   if (times) *times = measured;
   return stages;
+}
+
+}  // namespace
+
+EnvironmentStages computeEnvironmentStages(const EnvironmentMap& environment, const EnvironmentStageOptions& options,
+                                           const std::function<void(std::size_t, std::size_t)>& progress,
+                                           EnvironmentStageTimes* times) {
+  return stagesOf(environment, nullptr, options, progress, times);
+}
+
+EnvironmentStages computeEnvironmentStages(EnvironmentMap&& environment, const EnvironmentStageOptions& options,
+                                           const std::function<void(std::size_t, std::size_t)>& progress,
+                                           EnvironmentStageTimes* times) {
+  return stagesOf(environment, &environment, options, progress, times);
 }
 
 }  // namespace iblkit

@@ -18,6 +18,8 @@
 // like the map itself (rotation and intensity not applied), so that an EnvironmentMap made from
 // one with the map's rotation and intensity is the residual in world space.
 #include <glm/glm.hpp>
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "core/environment_map.h"
@@ -81,13 +83,21 @@ struct SunExtractionOptions {
   // Regions whose light (the disk of the same spread) is wider than this (radians) are no sun and
   // stay in the residual: a bright cap of sky, which SH9 holds, not a compact source to shadow.
   float maxAngularRadius = kMaxSunAngularRadius;
+  // Whether ExtractedSuns::residual gets the residual image (a copy of the map with the suns'
+  // texels replaced); without it only residualTexels (computeEnvironmentStages turns a map it owns
+  // into the residual in place: a 16384 x 8192 map's copy is 2 GiB).
+  bool residualImage = true;
 };
 
 struct ExtractedSuns {
   std::vector<EnvironmentLight> suns;  // kind Sun, brightest first
   // The map without the suns (stored like the map: rotation and intensity not applied), the same
   // size; lights + residual integrate to the map exactly.
+  // Empty when options.residualImage is false: then residualTexels alone say what differs.
   Image residual;
+  // The texels the suns took (index y * width + x) with their value in the residual: the
+  // residual is the map with these replaced.
+  std::vector<std::pair<std::size_t, glm::vec4>> residualTexels;
   float threshold = 0.0f;  // the threshold used (intensity applied)
 };
 

@@ -34,6 +34,9 @@ class EnvironmentMap {
 
   // The lat-long map as loaded (rotation and intensity not applied).
   const Image& image() const { return image_; }
+  // The image, moved out of a map that is done with (it is left empty): a large map's stages turn
+  // it into the residual in place (computeEnvironmentStages) instead of copying it.
+  Image releaseImage() && { return std::move(image_); }
   // The largest R, G or B of any texel, intensity not applied.
   float brightestTexel() const;
   int width() const { return image_.width(); }

@@ -198,7 +198,7 @@ ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions&
   ExtractedSuns result;
   result.threshold =
       options.threshold > 0.0f ? options.threshold : automaticSunThreshold(map, options.peakToMean);
-  result.residual = map.image();
+  if (options.residualImage) result.residual = map.image();
   const int width = map.width(), height = map.height();
   // The texels above the threshold, in index order (y * width + x), and where each row starts:
   // the regions are found among them alone, so the tables grow with the bright texels, not with
@@ -265,7 +265,9 @@ ExtractedSuns extractSuns(const EnvironmentMap& map, const SunExtractionOptions&
     if (light.angularRadius > options.maxAngularRadius) continue;  // no sun: it stays in the residual
     for (const std::size_t i : region.texels) {
       const int x = int(i % std::size_t(width)), y = int(i / std::size_t(width));
-      result.residual.at(x, y) = glm::vec4(residualPart(map, x, y, result.threshold), map.image().at(x, y).a);
+      const glm::vec4 residual(residualPart(map, x, y, result.threshold), map.image().at(x, y).a);
+      result.residualTexels.emplace_back(i, residual);
+      if (options.residualImage) result.residual.at(x, y) = residual;
     }
     result.suns.push_back(std::move(light));
   }

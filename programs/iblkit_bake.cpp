@@ -29,6 +29,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "bakefile/bake_layout.h"
 #include "bakefile/bake_record.h"
@@ -153,7 +154,7 @@ int specularBaseSize(const std::string& choice) {
 // The environment stages (baker/environment_stages.h), their seconds added to `timings`. Computed
 // before the output's temporary folder exists, so that an interrupt during the long stages finds
 // nothing to clean up, and the folder lives only while files are written into it.
-EnvironmentStages bakeEnvironment(const EnvironmentMap& environment, const Options& options,
+EnvironmentStages bakeEnvironment(EnvironmentMap&& environment, const Options& options,
                                   std::optional<float> windowCutoff, json& timings) {
   EnvironmentStageOptions stageOptions;
   stageOptions.shWindowCutoff = windowCutoff;
@@ -167,7 +168,7 @@ EnvironmentStages bakeEnvironment(const EnvironmentMap& environment, const Optio
   stageOptions.medianCutLevels = options.medianCutLevels;
   EnvironmentStageTimes times;
   EnvironmentStages stages =
-      computeEnvironmentStages(environment, stageOptions, progressBar("environment"), &times);
+      computeEnvironmentStages(std::move(environment), stageOptions, progressBar("environment"), &times);
   timings["sh9_s"] = times.sh9;
   timings["irradiance_s"] = times.irradiance;
   timings["specular_s"] = times.specular;
@@ -251,7 +252,8 @@ int bake(const Options& options) {
                           .environmentIntensity = environment.intensity};
   std::optional<EnvironmentStages> stages;
   if (environmentMap) {
-    stages = bakeEnvironment(*environmentMap, options, windowCutoff, timings);
+    // The stages make the residual out of the map itself: nothing reads it after them.
+    stages = bakeEnvironment(std::move(*environmentMap), options, windowCutoff, timings);
     stopwatch.lap();  // the stages timed themselves
   }
   writeDirectoryAtomically(options.output, [&](const fs::path& folder) {

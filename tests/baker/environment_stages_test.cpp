@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <utility>
 
 #include "bakefile/bake_layout.h"
 #include "core/environment_lights.h"
@@ -148,6 +149,42 @@ TEST(EnvironmentStages, LightsAreTheSunsAndMedianCutAndTheResidualHasItsOwnShAnd
   const float mapAtSun = luminance(sampleCubeBilinear(stages.specular.levels[0], sun));
   EXPECT_LE(residualAtSun, stages.lights.sunThreshold * 1.001f);
   EXPECT_GT(mapAtSun, 3.0f * residualAtSun);
+}
+
+// From a map the caller is done with (iblkit-bake's), the residual is the map's own image with the
+// suns' texels replaced, not a copy: the same stages, bit for bit, and the map left empty. The
+// extraction's list of the replaced texels is the difference between the map and its residual.
+TEST(EnvironmentStages, AMovedMapBecomesTheResidualInPlaceWithTheSameStages) {
+  EnvironmentMap map = quickSunnySky();
+  map.setRotationDegrees(23.0f);
+  const EnvironmentStages copied = computeEnvironmentStages(map, kQuickLightStages);
+  EnvironmentMap moved = map;
+  const EnvironmentStages inPlace = computeEnvironmentStages(std::move(moved), kQuickLightStages);
+  EXPECT_TRUE(moved.image().empty());
+  EXPECT_EQ(inPlace.residualSh9.coefficients, copied.residualSh9.coefficients);
+  EXPECT_EQ(inPlace.sh9.coefficients, copied.sh9.coefficients);
+  ASSERT_EQ(inPlace.residualSpecular.levels.size(), copied.residualSpecular.levels.size());
+  for (std::size_t level = 0; level < copied.residualSpecular.levels.size(); ++level)
+    for (int face = 0; face < 6; ++face)
+      EXPECT_EQ(inPlace.residualSpecular.levels[level].faces[std::size_t(face)].pixels(),
+                copied.residualSpecular.levels[level].faces[std::size_t(face)].pixels())
+          << "level " << level << ", face " << face;
+  EXPECT_EQ(inPlace.residualIrradiance.faces[0].pixels(), copied.residualIrradiance.faces[0].pixels());
+  ASSERT_EQ(inPlace.lights.suns.size(), 1u);
+  EXPECT_EQ(inPlace.lights.suns[0].irradiance, copied.lights.suns[0].irradiance);
+  // The replaced texels: where the map and its residual differ, and nowhere else.
+  const ExtractedSuns extracted = extractSuns(map);
+  ASSERT_FALSE(extracted.residualTexels.empty());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < map.image().pixels().size(); ++i)
+    differing += map.image().pixels()[i] != extracted.residual.pixels()[i];
+  EXPECT_EQ(differing, extracted.residualTexels.size());
+  for (const auto& [texel, value] : extracted.residualTexels) EXPECT_EQ(extracted.residual.pixels()[texel], value);
+  SunExtractionOptions noImage;
+  noImage.residualImage = false;
+  const ExtractedSuns texelsOnly = extractSuns(map, noImage);
+  EXPECT_TRUE(texelsOnly.residual.empty());
+  EXPECT_EQ(texelsOnly.residualTexels, extracted.residualTexels);
 }
 
 TEST(EnvironmentStages, TheBakeFolderHoldsTheLightsAndTheResidual) {
