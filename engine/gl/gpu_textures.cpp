@@ -33,9 +33,22 @@ GLuint createTargetTexture(GLenum format, int width, int height) {
   return texture;
 }
 
-void requireTextureFits(int width, int height, GLenum limit, const char* what) {
+namespace {
+
+// The context's `limit`: GL_MAX_TEXTURE_SIZE or GL_MAX_CUBE_MAP_TEXTURE_SIZE.
+GLint largestTexture(GLenum limit) {
   GLint largest = 0;
   glGetIntegerv(limit, &largest);
+  return largest;
+}
+
+// The levels of a whole mip chain of a width x height texture, down to 1 x 1.
+GLsizei fullMipLevels(int width, int height) { return GLsizei(std::bit_width(unsigned(std::max(width, height)))); }
+
+}  // namespace
+
+void requireTextureFits(int width, int height, GLenum limit, const char* what) {
+  const GLint largest = largestTexture(limit);
   if (width <= largest && height <= largest) return;
   throw Error(std::string(what) + " is " + std::to_string(width) + " x " + std::to_string(height) +
               " texels, larger than this OpenGL's largest texture (" + std::to_string(largest) + " on a side)");
@@ -52,7 +65,7 @@ GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT, const char* w
   requireTextureFits(image.width(), image.height(), GL_MAX_TEXTURE_SIZE, what);
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
-  const int levels = mipmaps ? std::bit_width(unsigned(std::max(image.width(), image.height()))) : 1;
+  const GLsizei levels = mipmaps ? fullMipLevels(image.width(), image.height()) : 1;
   glTextureStorage2D(id, levels, GL_RGBA32F, image.width(), image.height());
   glTextureSubImage2D(id, 0, 0, 0, image.width(), image.height(), GL_RGBA, GL_FLOAT, image.pixels().data());
   if (mipmaps) glGenerateTextureMipmap(id);
@@ -66,12 +79,11 @@ GlTexture upload2D(const Image& image, GLenum wrapS, GLenum wrapT, const char* w
 }  // namespace
 
 bool latLongFits(int width, int height) {
-  GLint largest = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+  const GLint largest = largestTexture(GL_MAX_TEXTURE_SIZE);
   if (width > largest || height > largest) return false;
   // The proxy target answers without allocating (OpenGL 4.5 section 8.22): its level 0 has width 0
   // when the implementation cannot hold the texture.
-  glTexStorage2D(GL_PROXY_TEXTURE_2D, std::bit_width(unsigned(std::max(width, height))), GL_RGBA32F, width, height);
+  glTexStorage2D(GL_PROXY_TEXTURE_2D, fullMipLevels(width, height), GL_RGBA32F, width, height);
   GLint proxyWidth = 0;
   glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &proxyWidth);
   return proxyWidth == width;
