@@ -10,6 +10,10 @@
 //   _SHT1        VEC3    t3, t4, t5
 //   _SHT2        VEC3    t6, t7, t8
 // with t_k in shBasis9's order (k = l(l+1) + m) and normalisation (baker/vertex_visibility.h).
+// Optional (a bake of a map with suns; bakes older than it lack it, and the engine then estimates
+// the bounce from the transfer):
+//   _SUNBOUNCE   VEC4    the suns' first bounce g_i (baker/vertex_visibility.h bakeSunBounce) for
+//                        the first four suns of env/lights.json, in its order; 0 past the last
 
 #include <cstddef>
 #include <filesystem>
@@ -25,6 +29,7 @@ inline constexpr const char* kBentNormalAttribute = "_BENTNORMAL";
 inline constexpr const char* kBentLengthAttribute = "_BENTLENGTH";
 // _SHT0, _SHT1, _SHT2: three VEC3 attributes holding the nine transfer coefficients in order.
 inline constexpr const char* kTransferAttributes[3] = {"_SHT0", "_SHT1", "_SHT2"};
+inline constexpr const char* kSunBounceAttribute = "_SUNBOUNCE";
 
 // The nine transfer coefficients of vertex `vertex`, read back from _SHT0.._SHT2 (the inverse
 // packing). Throws Error("vertex visibility attributes: ...") when an attribute is missing, is not

@@ -33,6 +33,12 @@ BakedScene bakeInMemory(const fs::path& sceneFile, const InMemoryBakeOptions& op
   } else {
     bake.env = computeEnvironmentStages(*environment, options.stages, stagesProgress);
   }
+  if (!bake.env.lights.suns.empty()) {
+    settings.albedo = meshDiffuseAlbedos(bake.scene);
+    settings.progress = nullptr;
+    attachSunBounceAttribute(bake.scene.meshes,
+                             bakeSunBounce(bake.scene.meshes, sunBounceDirections(bake.env.lights), settings));
+  }
   return bake;
 }
 

@@ -221,15 +221,14 @@ VertexResult vertexVisibility(const RayScene& scene, const VertexSampler& sample
   return result;
 }
 
-// One bounce of interreflected transfer at a vertex (VisibilitySettings::bounces): albedo / N
-// times the sum over its blocked rays of the previous bounce's transfer at the front-face hit
-// (weighted by how much the ray is blocked when there is a falloff).
-ShBasis9 vertexBounce(const RayScene& scene, const VertexSampler& sampler,
-                      const std::vector<std::vector<ShBasis9>>& previous, const std::vector<Mesh>& meshes,
-                      float albedo, const VisibilitySettings& settings, std::size_t& rays) {
+// Calls gather(blocked, mesh, corner, w) for each of a vertex's rays that hits a front face
+// (closest hit): how much the ray is blocked (below 1 with a falloff), the hit mesh's index, its
+// triangle's three vertex indices and the hit's barycentric weights for them. Counts the rays.
+template <class Gather>
+void forEachFrontHit(const RayScene& scene, const VertexSampler& sampler, const std::vector<Mesh>& meshes,
+                     const VisibilitySettings& settings, std::size_t& rays, const Gather& gather) {
   const float tmax = rayLength(settings);
   const auto count = static_cast<std::uint32_t>(settings.rayCount);
-  ShBasis9 gathered{};
   Ray ray;
   std::size_t rejected = 0;
   for (std::uint32_t i = 0; i < count; ++i) {
@@ -238,17 +237,61 @@ ShBasis9 vertexBounce(const RayScene& scene, const VertexSampler& sampler,
     Hit hit;
     const float blocked = rayOcclusion(scene, ray, tmax, settings.falloff, &hit);
     if (blocked <= 0.0f || !(glm::dot(ray.direction, hit.geometricNormal) < 0.0f)) continue;
-    const Mesh& mesh = meshes[hit.geomId];
-    const std::uint32_t* corner = &mesh.indices[3 * std::size_t(hit.primId)];
+    const std::uint32_t* corner = &meshes[hit.geomId].indices[3 * std::size_t(hit.primId)];
     const float w[3] = {1.0f - hit.barycentrics.x - hit.barycentrics.y, hit.barycentrics.x,
                         hit.barycentrics.y};
-    for (int c = 0; c < 3; ++c) {
-      const ShBasis9& t = previous[hit.geomId][corner[c]];
-      for (int k = 0; k < kShCoefficients; ++k) gathered[k] += blocked * w[c] * t[k];
-    }
+    gather(blocked, hit.geomId, corner, w);
   }
-  for (float& t : gathered) t *= albedo / float(count);
+}
+
+// One bounce of interreflected transfer at a vertex (VisibilitySettings::bounces): albedo / N
+// times the sum over its blocked rays of the previous bounce's transfer at the front-face hit
+// (weighted by how much the ray is blocked when there is a falloff).
+ShBasis9 vertexBounce(const RayScene& scene, const VertexSampler& sampler,
+                      const std::vector<std::vector<ShBasis9>>& previous, const std::vector<Mesh>& meshes,
+                      float albedo, const VisibilitySettings& settings, std::size_t& rays) {
+  ShBasis9 gathered{};
+  forEachFrontHit(scene, sampler, meshes, settings, rays,
+                  [&](float blocked, unsigned mesh, const std::uint32_t* corner, const float* w) {
+                    for (int c = 0; c < 3; ++c) {
+                      const ShBasis9& t = previous[mesh][corner[c]];
+                      for (int k = 0; k < kShCoefficients; ++k) gathered[k] += blocked * w[c] * t[k];
+                    }
+                  });
+  for (float& t : gathered) t *= albedo / float(settings.rayCount);
   return gathered;
+}
+
+// One pass of the suns' bounce at a vertex (bakeSunBounce): 1/N times the sum over its rays that
+// hit a front face of the hit mesh's albedo times `lit` interpolated at the hit (per sun: the
+// direct sunlight and the last pass's bounce there, per unit of the sun's irradiance).
+glm::vec4 vertexSunBounce(const RayScene& scene, const VertexSampler& sampler,
+                          const std::vector<std::vector<glm::vec4>>& lit, const std::vector<Mesh>& meshes,
+                          const VisibilitySettings& settings, std::size_t& rays) {
+  glm::vec4 gathered(0.0f);
+  forEachFrontHit(scene, sampler, meshes, settings, rays,
+                  [&](float blocked, unsigned mesh, const std::uint32_t* corner, const float* w) {
+                    const std::vector<glm::vec4>& values = lit[mesh];
+                    gathered += blocked * settings.albedo[mesh] *
+                                (w[0] * values[corner[0]] + w[1] * values[corner[1]] + w[2] * values[corner[2]]);
+                  });
+  return gathered / float(settings.rayCount);
+}
+
+// The direct sunlight at a vertex per unit of each sun's irradiance: max(0, n . l) where a shadow
+// ray from the vertex (off its surface along the normal) towards l escapes.
+glm::vec4 vertexSunlight(const RayScene& scene, const Mesh& mesh, std::size_t vertex,
+                         std::span<const glm::vec3> suns, std::size_t& rays) {
+  const glm::vec3& normal = mesh.normals[vertex];
+  const glm::vec3 origin = offsetRayOrigin(mesh.positions[vertex], normal);
+  glm::vec4 lit(0.0f);
+  for (std::size_t s = 0; s < suns.size(); ++s) {
+    const float cosine = glm::dot(normal, suns[s]);
+    if (!(cosine > 0.0f)) continue;
+    ++rays;
+    if (!scene.occluded(origin, suns[s], 0.0f, std::numeric_limits<float>::infinity())) lit[int(s)] = cosine;
+  }
+  return lit;
 }
 
 void checkInput(const std::vector<Mesh>& meshes, const VisibilitySettings& settings) {
@@ -278,6 +321,29 @@ void checkInput(const std::vector<Mesh>& meshes, const VisibilitySettings& setti
                                     std::to_string(meshes[m].positions.size()) + " vertices");
 }
 
+// Calls visit(m, v, sampler, rays) for every vertex v of every mesh m, in parallel, with the
+// vertex's ray sampler; adds the rays the visits count to `rays` and calls done(vertices) after
+// each range of vertices.
+template <class Visit, class Done>
+void forEachVertexSampler(const std::vector<Mesh>& meshes, const std::vector<OneRings>& rings,
+                          const VisibilitySettings& settings, std::atomic<std::size_t>& rays, const Visit& visit,
+                          const Done& done) {
+  tbb::parallel_for(std::size_t(0), meshes.size(), [&](std::size_t m) {
+    const Mesh& mesh = meshes[m];
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertexCount(), kVertexGrain),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        std::size_t rangeRays = 0;
+                        for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                          const VertexSampler sampler(mesh, rings[m], v, vertexSeed(settings.seed, m, v),
+                                                      settings.areaSampling);
+                          visit(m, v, sampler, rangeRays);
+                        }
+                        rays += rangeRays;
+                        done(range.size());
+                      });
+  });
+}
+
 double secondsSince(std::chrono::steady_clock::time_point& last) {
   const auto now = std::chrono::steady_clock::now();
   const double seconds = std::chrono::duration<double>(now - last).count();
@@ -287,13 +353,11 @@ double secondsSince(std::chrono::steady_clock::time_point& last) {
 
 }  // namespace
 
-std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes,
-                                                 const VisibilitySettings& settings,
-                                                 VisibilityStatistics* statistics) {
-  checkInput(meshes, settings);
-  auto clock = std::chrono::steady_clock::now();
-  VisibilityStatistics counts;
-  RayScene scene;
+namespace {
+
+// The visibility bake's Embree scene: every mesh, with the materials' alpha filter when some
+// material can drop a point.
+void buildScene(RayScene& scene, const std::vector<Mesh>& meshes, const VisibilitySettings& settings) {
   for (const Mesh& mesh : meshes) scene.addTriangleMesh(mesh.positions, mesh.indices);
   if (!settings.materials.empty()) {
     std::vector<const Mesh*> geometryMeshes;
@@ -305,6 +369,18 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
     if (anyTest) scene.setAlphaFilter(std::move(filter));
   }
   scene.commit();
+}
+
+}  // namespace
+
+std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes,
+                                                 const VisibilitySettings& settings,
+                                                 VisibilityStatistics* statistics) {
+  checkInput(meshes, settings);
+  auto clock = std::chrono::steady_clock::now();
+  VisibilityStatistics counts;
+  RayScene scene;
+  buildScene(scene, meshes, settings);
   counts.buildSeconds = secondsSince(clock);
 
   std::size_t totalVertices = 0;
@@ -353,22 +429,13 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
     for (const MeshVisibility& r : results) previous.push_back(r.transfer);
   for (int bounce = 1; bounce <= settings.bounces; ++bounce) {
     std::vector<std::vector<ShBasis9>> next(meshes.size());
-    tbb::parallel_for(std::size_t(0), meshes.size(), [&](std::size_t m) {
-      const Mesh& mesh = meshes[m];
-      next[m].resize(mesh.vertexCount());
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertexCount(), kVertexGrain),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
-                          std::size_t rangeRays = 0;
-                          for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                            const VertexSampler sampler(mesh, rings[m], v, vertexSeed(settings.seed, m, v),
-                                                        settings.areaSampling);
-                            next[m][v] = vertexBounce(scene, sampler, previous, meshes, settings.albedo[m],
-                                                      settings, rangeRays);
-                          }
-                          bounceRays += rangeRays;
-                          report(range.size());
-                        });
-    });
+    for (std::size_t m = 0; m < meshes.size(); ++m) next[m].resize(meshes[m].vertexCount());
+    forEachVertexSampler(
+        meshes, rings, settings, bounceRays,
+        [&](std::size_t m, std::size_t v, const VertexSampler& sampler, std::size_t& vertexRays) {
+          next[m][v] = vertexBounce(scene, sampler, previous, meshes, settings.albedo[m], settings, vertexRays);
+        },
+        report);
     for (std::size_t m = 0; m < meshes.size(); ++m)
       for (std::size_t v = 0; v < next[m].size(); ++v)
         for (int k = 0; k < kShCoefficients; ++k) results[m].transfer[v][k] += next[m][v][k];
@@ -382,6 +449,99 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
   counts.bounceRays = bounceRays.load();
   if (statistics) *statistics = counts;
   return results;
+}
+
+std::vector<std::vector<glm::vec4>> bakeSunBounce(const std::vector<Mesh>& meshes,
+                                                  std::span<const glm::vec3> sunDirections,
+                                                  const VisibilitySettings& settings,
+                                                  VisibilityStatistics* statistics) {
+  checkInput(meshes, settings);
+  if (sunDirections.size() > std::size_t(kMaxSunBounceLights))
+    fail("vertex visibility", std::to_string(sunDirections.size()) + " suns for the bounce, at most " +
+                                  std::to_string(kMaxSunBounceLights));
+  for (const glm::vec3& l : sunDirections)
+    if (!(std::abs(glm::length(l) - 1.0f) < 1e-3f))
+      fail("vertex visibility", "a sun direction for the bounce is not unit length");
+  if (settings.albedo.size() != meshes.size())
+    fail("vertex visibility", "the sun bounce needs one albedo per mesh: got " + std::to_string(settings.albedo.size()) +
+                                  " for " + std::to_string(meshes.size()) + " meshes");
+  for (float a : settings.albedo)
+    if (!(a >= 0.0f && a <= 1.0f)) fail("vertex visibility", "albedo " + std::to_string(a) + " is not in [0, 1]");
+  auto clock = std::chrono::steady_clock::now();
+  std::vector<std::vector<glm::vec4>> results(meshes.size()), lit(meshes.size());
+  for (std::size_t m = 0; m < meshes.size(); ++m) results[m].assign(meshes[m].vertexCount(), glm::vec4(0.0f));
+  std::atomic<std::size_t> rays{0};
+  if (!sunDirections.empty()) {
+    RayScene scene;
+    buildScene(scene, meshes, settings);
+    std::vector<OneRings> rings(meshes.size());
+    // Each vertex's direct sunlight, then the bounces pass by pass: pass k gathers what the hits
+    // reflect of the sunlight and of pass k - 1's bounce there.
+    tbb::parallel_for(std::size_t(0), meshes.size(), [&](std::size_t m) {
+      rings[m] = oneRings(meshes[m]);
+      lit[m].resize(meshes[m].vertexCount());
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, meshes[m].vertexCount(), kVertexGrain),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          std::size_t rangeRays = 0;
+                          for (std::size_t v = range.begin(); v != range.end(); ++v)
+                            lit[m][v] = vertexSunlight(scene, meshes[m], v, sunDirections, rangeRays);
+                          rays += rangeRays;
+                        });
+    });
+    for (int pass = 0; pass < kSunBouncePasses; ++pass) {
+      std::vector<std::vector<glm::vec4>> next(meshes.size());
+      for (std::size_t m = 0; m < meshes.size(); ++m) next[m].resize(meshes[m].vertexCount());
+      forEachVertexSampler(
+          meshes, rings, settings, rays,
+          [&](std::size_t m, std::size_t v, const VertexSampler& sampler, std::size_t& vertexRays) {
+            next[m][v] = vertexSunBounce(scene, sampler, lit, meshes, settings, vertexRays);
+          },
+          [](std::size_t) {});
+      // The sources of the next pass: sunlight plus this pass's bounce.
+      for (std::size_t m = 0; m < meshes.size(); ++m)
+        for (std::size_t v = 0; v < next[m].size(); ++v) {
+          lit[m][v] += next[m][v] - results[m][v];
+          results[m][v] = next[m][v];
+        }
+    }
+  }
+  if (statistics) {
+    statistics->bounceRays = rays.load();
+    statistics->bounceSeconds = secondsSince(clock);
+  }
+  return results;
+}
+
+namespace {
+
+// The mean linear RGB of a texture's image (sRGB decoded), or 1 when there is none to read.
+glm::vec3 meanTextureColor(const Scene& scene, const TextureRef& ref) {
+  if (!ref.present() || std::size_t(ref.texture) >= scene.textures.size()) return glm::vec3(1.0f);
+  const int image = scene.textures[std::size_t(ref.texture)].image;
+  if (image < 0 || std::size_t(image) >= scene.images.size()) return glm::vec3(1.0f);
+  const std::vector<std::uint8_t>& rgba = scene.images[std::size_t(image)].rgba;
+  const std::size_t texels = rgba.size() / 4;
+  if (texels == 0) return glm::vec3(1.0f);
+  glm::dvec3 sum(0.0);
+  for (std::size_t i = 0; i < texels; ++i)
+    for (int c = 0; c < 3; ++c) sum[c] += srgbToLinear(rgba[4 * i + std::size_t(c)]);
+  return glm::vec3(sum / double(texels));
+}
+
+}  // namespace
+
+float meshDiffuseAlbedo(const Scene& scene, const Mesh& mesh) {
+  if (mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size()) return 0.0f;
+  const Material& material = scene.materials[std::size_t(mesh.material)];
+  const glm::vec3 diffuse =
+      material.baseColor * meanTextureColor(scene, material.baseColorTexture) * (1.0f - material.metallic);
+  return std::clamp(glm::dot(diffuse, glm::vec3(0.2126f, 0.7152f, 0.0722f)), 0.0f, 1.0f);
+}
+
+std::vector<float> meshDiffuseAlbedos(const Scene& scene) {
+  std::vector<float> albedo;
+  for (const Mesh& mesh : scene.meshes) albedo.push_back(meshDiffuseAlbedo(scene, mesh));
+  return albedo;
 }
 
 void useSceneMaterials(VisibilitySettings& settings, const Scene& scene) {

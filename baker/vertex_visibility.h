@@ -26,6 +26,7 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "core/material.h"
@@ -117,6 +118,37 @@ struct VisibilityStatistics {
 std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes,
                                                  const VisibilitySettings& settings,
                                                  VisibilityStatistics* statistics = nullptr);
+
+// The suns' light bounced onto every vertex (docs/dominant-lights.md, "Bounce light of the suns"),
+// for the engine's lights modes, per unit of each sun's irradiance E_i (at normal incidence), as
+// the vertex's Lambert irradiance b_i: the bounced irradiance from sun i is E_i b_i.
+// Radiosity over the vertices, gathered with the vertex's rays of bakeVertexVisibility (the same
+// directions, origins, maximum distance, falloff and alpha): each vertex's direct sunlight
+// s_i = max(0, n . l_i) V_i (n its normal, l_i the world direction towards sun i, V_i 1 where a
+// shadow ray towards l_i escapes); then kSunBouncePasses passes of
+//   b_i(v) = 1/N sum over the rays that hit a front face of rho (s_i + b_i) at the hit,
+// the hit's values interpolated from its triangle's vertices, rho the hit mesh's grey albedo
+// (settings.albedo, required: one per mesh), b_i on the right the last pass's (0 in the first).
+// The hits reflect rho / pi (s_i + b_i) E_i, and the cosine-distributed rays' pdf cos / pi makes
+// pi / N times the sum of that the estimate of the irradiance they give: one bounce per pass. Components
+// past the suns given are 0. Throws like bakeVertexVisibility, and Error("vertex visibility: ...")
+// for more than kMaxSunBounceLights suns, a direction that is not unit length, or a missing albedo.
+// `statistics`, when given, gets the rays traced (closest-hit and shadow) in bounceRays and the
+// seconds in bounceSeconds.
+inline constexpr int kMaxSunBounceLights = 4;
+inline constexpr int kSunBouncePasses = 3;
+std::vector<std::vector<glm::vec4>> bakeSunBounce(const std::vector<Mesh>& meshes,
+                                                  std::span<const glm::vec3> sunDirections,
+                                                  const VisibilitySettings& settings,
+                                                  VisibilityStatistics* statistics = nullptr);
+
+// The grey diffuse albedo of a mesh (VisibilitySettings::albedo): the Rec. 709 luminance of the
+// Lambert lobe's colour, baseColor * (1 - metallic) (material.h), clamped to [0, 1]; 0 without a
+// material. A base colour texture counts as its image's mean (sRGB decoded); vertex colours, the
+// metallic texture and the specular layer's share are not read.
+float meshDiffuseAlbedo(const Scene& scene, const Mesh& mesh);
+// meshDiffuseAlbedo of every mesh of `scene`, in order.
+std::vector<float> meshDiffuseAlbedos(const Scene& scene);
 
 // Sets settings.materials and settings.textures to the scene's (its materials, SceneTextures of
 // its textures), so masked texels let the bake's rays through.

@@ -38,4 +38,27 @@ void attachVisibilityAttributes(std::vector<Mesh>& meshes, const std::vector<Mes
   }
 }
 
+std::vector<glm::vec3> sunBounceDirections(const EnvironmentLights& lights) {
+  std::vector<glm::vec3> directions;
+  for (const EnvironmentLight& sun : lights.suns)
+    if (directions.size() < std::size_t(kMaxSunBounceLights)) directions.push_back(sun.direction);
+  return directions;
+}
+
+void attachSunBounceAttribute(std::vector<Mesh>& meshes, const std::vector<std::vector<glm::vec4>>& bounce) {
+  if (meshes.size() != bounce.size())
+    fail(kSubject, std::to_string(bounce.size()) + " sun bounce results for " + std::to_string(meshes.size()) +
+                       " meshes");
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const std::size_t n = meshes[m].vertexCount();
+    if (bounce[m].size() != n)
+      fail(kSubject, "mesh " + std::to_string(m) + " has " + std::to_string(n) +
+                         " vertices but its sun bounce has " + std::to_string(bounce[m].size()));
+    VertexAttribute attribute{4, std::vector<float>(4 * n)};
+    for (std::size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 4; ++c) attribute.data[4 * i + std::size_t(c)] = bounce[m][i][c];
+    meshes[m].attributes[kSunBounceAttribute] = std::move(attribute);
+  }
+}
+
 }  // namespace iblkit

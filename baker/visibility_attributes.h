@@ -6,6 +6,7 @@
 
 #include "baker/vertex_visibility.h"
 #include "bakefile/vertex_attributes.h"
+#include "core/environment_lights.h"
 #include "core/mesh.h"
 
 namespace iblkit {
@@ -13,5 +14,13 @@ namespace iblkit {
 // Stores visibility[i] in meshes[i].attributes under the names above (replacing any present).
 // Throws Error("vertex visibility attributes: ...") when the counts of meshes or vertices differ.
 void attachVisibilityAttributes(std::vector<Mesh>& meshes, const std::vector<MeshVisibility>& visibility);
+
+// The suns whose first bounce a bake stores: the directions of the first kMaxSunBounceLights of
+// lights.suns (brightest first), the suns the engine draws first.
+std::vector<glm::vec3> sunBounceDirections(const EnvironmentLights& lights);
+
+// Stores bounce[i] (bakeSunBounce) in meshes[i].attributes as _SUNBOUNCE. Throws like
+// attachVisibilityAttributes.
+void attachSunBounceAttribute(std::vector<Mesh>& meshes, const std::vector<std::vector<glm::vec4>>& bounce);
 
 }  // namespace iblkit

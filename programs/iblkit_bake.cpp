@@ -98,15 +98,6 @@ std::function<void(std::size_t, std::size_t)> progressBar(const char* stage) {
   };
 }
 
-// The grey diffuse albedo of a mesh for --bounces: the Rec. 709 luminance of the Lambert lobe's
-// colour, baseColor * (1 - metallic) (material.h), clamped to [0, 1].
-float diffuseAlbedo(const Scene& scene, const Mesh& mesh) {
-  if (mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size()) return 0.0f;
-  const Material& material = scene.materials[std::size_t(mesh.material)];
-  const glm::vec3 diffuse = material.baseColor * (1.0f - material.metallic);
-  return std::clamp(glm::dot(diffuse, glm::vec3(0.2126f, 0.7152f, 0.0722f)), 0.0f, 1.0f);
-}
-
 // The sinc^4 window cutoff for SH9: automatic (unset: the largest cutoff keeping irradiance >= 0),
 // none (0), or a number of bands.
 std::optional<float> shWindowCutoff(const std::string& choice) {
@@ -228,8 +219,7 @@ int bake(const Options& options) {
   settings.falloff = options.aoFalloff;
   settings.areaSampling = options.aoArea;
   settings.bounces = options.bounces;
-  if (options.bounces > 0)
-    for (const Mesh& mesh : scene.meshes) settings.albedo.push_back(diffuseAlbedo(scene, mesh));
+  if (options.bounces > 0) settings.albedo = meshDiffuseAlbedos(scene);
   useSceneMaterials(settings, scene);  // AO rays pass through masked texels
   settings.progress = progressBar("visibility");
   VisibilityStatistics statistics;
@@ -255,6 +245,16 @@ int bake(const Options& options) {
     // The stages make the residual out of the map itself: nothing reads it after them.
     stages = bakeEnvironment(std::move(*environmentMap), options, windowCutoff, timings);
     stopwatch.lap();  // the stages timed themselves
+  }
+  // The suns' first bounce for the engine's lights modes, with the visibility's rays.
+  VisibilityStatistics sunBounceStatistics;
+  if (stages && !stages->lights.suns.empty()) {
+    VisibilitySettings sunBounce = settings;
+    sunBounce.albedo = meshDiffuseAlbedos(scene);
+    sunBounce.progress = nullptr;
+    attachSunBounceAttribute(scene.meshes, bakeSunBounce(scene.meshes, sunBounceDirections(stages->lights), sunBounce,
+                                                         &sunBounceStatistics));
+    timings["sun_bounce_s"] = stopwatch.lap();
   }
   writeDirectoryAtomically(options.output, [&](const fs::path& folder) {
     writeSceneGlb(scene, folder / kBakeSceneFile);
@@ -290,6 +290,7 @@ int bake(const Options& options) {
                         {"triangles", triangles},
                         {"rays", statistics.rays},
                         {"bounce_rays", statistics.bounceRays},
+                        {"sun_bounce_rays", sunBounceStatistics.bounceRays},
                         {"rejected_directions", statistics.rejected}};
     record["rays_per_second"] = visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0;
     record["trace_rays_per_second"] =

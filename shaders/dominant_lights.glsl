@@ -13,6 +13,11 @@ uniform vec2 lightMirrorEdgeCos[kMaxEngineLights];
 // The light's irradiance on an upward normal, lightRadiance uniformDiskIrradiance(l.y, r) (the
 // core's, computed once a frame): what groundBounceIrradiance's ground receives.
 uniform vec3 lightIrradianceUp[kMaxEngineLights];
+// The light's irradiance at normal incidence (lights.json's `irradiance`, radiance x solid angle).
+uniform vec3 lightIrradiance[kMaxEngineLights];
+// SUN_BOUNCE (mesh.vert): 1 where every mesh carries the suns' bounce baked for the drawn lights
+// (_SUNBOUNCE: the bake's suns, in the bake's orientation; renderer.cpp, bakedSunBounceFor).
+// groundBounceIrradiance then reads it.
 uniform vec3 residualShRadiance[9];
 // 1 where mesh.vert reads SH9's truncation of the residual (residualTruncationAt), 0 without the
 // residual's cube.
@@ -40,14 +45,24 @@ layout(binding = kTextureUnitResidualSpecular) uniform samplerCube residualSpecu
 // indicator (H_0 = 2 pi Y_0 = sqrt(pi), H_1 = -pi 0.488603, the others 0), and
 //   O_all = pi - t_0 sqrt(4 pi)   (>= 0),
 // the whole hemisphere's occluded weight (what the transfer sees of a constant radiance 1).
+// That estimate stands in where the bake's own is not for the drawn lights. The bake's (SUN_BOUNCE)
+// is radiosity over the vertices (baker/vertex_visibility.h bakeSunBounce): the occluders its
+// visibility rays hit, each lit as its normal, its sun shadow ray and its mesh's albedo say, with
+// three bounces; E_i b_i for light i of irradiance E_i.
 const float kAboveHorizonBounce = 0.5;  // the weight of the occluders above the horizon (above)
 vec3 groundBounceIrradiance(vec3 albedo, vec3 irradianceUp) {
+#if SUN_BOUNCE
+  vec3 bounced = vec3(0.0);
+  for (int i = 0; i < lightCount; ++i) bounced += lightIrradiance[i] * vertexIn.sunBounce[i];
+  return bounced;
+#else
   float visibleBelow = vertexIn.transfer012.x * 1.7724539 - vertexIn.transfer012.y * 1.5349874;
   float ny = normalize(vertexIn.normal).y;
   float occludedBelow = max(0.5 * kPi * (1.0 - ny) - visibleBelow, 0.0);
   float occludedAll = max(kPi - vertexIn.transfer012.x * 3.5449077, 0.0);
   float occluded = occludedBelow + kAboveHorizonBounce * max(occludedAll - occludedBelow, 0.0);
   return occluded * albedo / kPi * irradianceUp;
+#endif
 }
 
 // `truncation`: SH9's truncation of the residual's irradiance at this point, AO times the residual

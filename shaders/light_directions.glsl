@@ -8,6 +8,11 @@
 #define LIGHT_COUNT kMaxEngineLights
 #endif
 const int lightCount = LIGHT_COUNT;
+// SUN_BOUNCE: 1 where the program reads the suns' bounce the bake stored per vertex (_SUNBOUNCE,
+// mesh.vert; dominant_lights.glsl's groundBounceIrradiance), 0 where it estimates it.
+#ifndef SUN_BOUNCE
+#define SUN_BOUNCE 0
+#endif
 uniform vec3 lightDirection[kMaxEngineLights];
 uniform vec2 lightCosSin[kMaxEngineLights];
 #endif

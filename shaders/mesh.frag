@@ -30,6 +30,9 @@ in VertexData {
   vec4 lightIrradianceFront;
   vec4 lightIrradianceBack;
 #endif
+#if SUN_BOUNCE
+  vec4 sunBounce;  // the baked suns' first bounce (mesh.vert)
+#endif
 }
 vertexIn;
 

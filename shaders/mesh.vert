@@ -22,6 +22,11 @@ layout(location = kAttributeTexcoord1) in vec2 inTexcoord1;
 layout(location = kAttributeTangent) in vec4 inTangent;
 // COLOR_0, or the generic (1, 1, 1, 1) GpuMesh::draw sets for a mesh without it.
 layout(location = kAttributeColor) in vec4 inColor;
+#if SUN_BOUNCE
+// The baked suns' first bounce g_i (_SUNBOUNCE), sun i in component i; read only where the renderer
+// says it stands for the drawn lights (dominant_lights.glsl's bakedSunBounce).
+layout(location = kAttributeSunBounce) in vec4 inSunBounce;
+#endif
 
 uniform mat4 viewProjection;
 uniform bool doubleSided;  // mesh.frag's: the material's back faces are drawn
@@ -86,6 +91,9 @@ out VertexData {
   vec4 lightIrradianceFront;
   vec4 lightIrradianceBack;
 #endif
+#if SUN_BOUNCE
+  vec4 sunBounce;
+#endif
 }
 vertexOut;
 
@@ -108,6 +116,9 @@ void main() {
   vertexOut.texcoord1 = inTexcoord1;
   vertexOut.tangent = inTangent;
   vertexOut.color = inColor;
+#if SUN_BOUNCE
+  vertexOut.sunBounce = inSunBounce;
+#endif
   vec3 normal = normalize(inNormal);
   vertexOut.residualTruncationFront = residualTruncationAt(normal);
   // A single-sided material's back faces are culled: no second lookup.

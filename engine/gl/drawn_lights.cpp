@@ -48,6 +48,13 @@ DrawnLights drawnLights(const EnvironmentStages& env, int requested, float extra
   return drawn;
 }
 
+bool bakedSunBounceFor(const std::vector<glm::vec3>& bakedDirections, const std::vector<EnvironmentLight>& drawn) {
+  if (bakedDirections.empty() || drawn.size() > bakedDirections.size()) return false;
+  for (std::size_t i = 0; i < drawn.size(); ++i)
+    if (glm::distance(drawn[i].direction, bakedDirections[i]) > 1e-5f) return false;
+  return true;
+}
+
 float lightEnergyShare(const EnvironmentLight& light, const SphericalHarmonics9& mapSh9) {
   const float total = luminance(mapSh9.coefficients[0]) * std::sqrt(4.0f * glm::pi<float>());
   return total > 0.0f ? luminance(light.irradiance) / total : 0.0f;

@@ -30,6 +30,12 @@ int drawnLightCount(const EnvironmentStages& env, int requested);
 // `extraRotationDegrees` about +Y (FrameSettings::envRotationDegrees).
 DrawnLights drawnLights(const EnvironmentStages& env, int requested, float extraRotationDegrees);
 
+// Whether a bake's suns' first bounce (_SUNBOUNCE, sun i in component i; `bakedDirections` the
+// directions of the suns it was baked for, empty when the meshes lack it) stands for the lights
+// drawn: as many suns baked at least, light i in the direction of sun i (within 1e-5: the same
+// environment, no extra rotation). Otherwise the engine estimates the bounce (dominant_lights.glsl).
+bool bakedSunBounceFor(const std::vector<glm::vec3>& bakedDirections, const std::vector<EnvironmentLight>& drawn);
+
 // The share of the map's energy (luminance of the integral of L over the sphere) a light carries:
 // lum(light.irradiance) / lum(L_00 sqrt(4 pi)) with L_00 the map's SH9 DC coefficient.
 float lightEnergyShare(const EnvironmentLight& light, const SphericalHarmonics9& mapSh9);

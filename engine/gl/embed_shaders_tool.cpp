@@ -101,7 +101,8 @@ std::string sharedConstants() {
                         {"kAttributeTexcoord0", kAttributeTexcoord0},
                         {"kAttributeTexcoord1", kAttributeTexcoord1},
                         {"kAttributeTangent", kAttributeTangent},
-                        {"kAttributeColor", kAttributeColor}});
+                        {"kAttributeColor", kAttributeColor},
+                        {"kAttributeSunBounce", kAttributeSunBounce}});
   text += intConstants("iblkit::TextureUnit (engine/gl/texture_unit.h)",
                        {{"kTextureUnitLatLong", kTextureUnitLatLong},
                         {"kTextureUnitSpecular", kTextureUnitSpecular},

@@ -47,6 +47,10 @@ GpuMesh::GpuMesh(const Mesh& mesh) : indexCount_(GLsizei(mesh.indices.size())) {
   optional(kAttributeTexcoord1, 2, mesh.texcoords1);
   optional(kAttributeTangent, 4, mesh.tangents);
   optional(kAttributeColor, 4, mesh.colors);
+  const auto sunBounce = mesh.attributes.find(kSunBounceAttribute);
+  hasSunBounce_ = sunBounce != mesh.attributes.end() && sunBounce->second.componentCount == 4 &&
+                  sunBounce->second.data.size() == 4 * n;
+  if (hasSunBounce_) streams.push_back({kAttributeSunBounce, 4, sunBounce->second.data});
   hasColors_ = mesh.colors.size() == n;
   vertexAlpha_ = hasColors_ && mesh.hasVertexAlpha();
   // One buffer: each attribute's array in turn (4-byte aligned), then the indices.
@@ -84,7 +88,8 @@ GpuMesh::GpuMesh(GpuMesh&& other) noexcept
       indexCount_(other.indexCount_),
       indexOffset_(other.indexOffset_),
       hasColors_(other.hasColors_),
-      vertexAlpha_(other.vertexAlpha_) {}
+      vertexAlpha_(other.vertexAlpha_),
+      hasSunBounce_(other.hasSunBounce_) {}
 
 GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
   std::swap(vertexArray_, other.vertexArray_);
@@ -93,6 +98,7 @@ GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
   std::swap(indexOffset_, other.indexOffset_);
   std::swap(hasColors_, other.hasColors_);
   std::swap(vertexAlpha_, other.vertexAlpha_);
+  std::swap(hasSunBounce_, other.hasSunBounce_);
   return *this;
 }
 

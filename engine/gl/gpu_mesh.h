@@ -31,6 +31,8 @@ class GpuMesh {
 
   // Whether some vertex colour's alpha is below 1 (Mesh::hasVertexAlpha, kept from the upload).
   bool hasVertexAlpha() const { return vertexAlpha_; }
+  // Whether the mesh carries the baked suns' bounce (_SUNBOUNCE, kAttributeSunBounce).
+  bool hasSunBounce() const { return hasSunBounce_; }
 
   // Draws the triangles with the currently bound program.
   void draw() const;
@@ -43,6 +45,7 @@ class GpuMesh {
   GLintptr indexOffset_ = 0;
   bool hasColors_ = false;
   bool vertexAlpha_ = false;  // COLOR_0 uploaded; else the generic value (1, 1, 1, 1) at each draw
+  bool hasSunBounce_ = false;
   void setGenericColor() const;
 };
 

@@ -87,7 +87,8 @@ struct Renderer::Impl {
   std::vector<bool> constantNormal;  // hasConstantNormal per mesh
   // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn, shadows
   // from the mask, specular layer), compiled on first use.
-  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, int, bool, bool>, ShaderProgram> meshPrograms;
+  std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, int, bool, bool, bool>, ShaderProgram>
+      meshPrograms;
   MaterialTextures materialTextures;
   ShaderProgram skyProgram{"fullscreen.vert", "sky.frag"};
   ShaderProgram presentProgram{"fullscreen.vert", "present.frag"};
@@ -100,6 +101,10 @@ struct Renderer::Impl {
   SphericalHarmonics9 sh9;
   // The lights modes' inputs (drawn_lights.h): the stages without the images.
   EnvironmentStages lightStages;
+  // The directions of the suns whose first bounce every mesh carries baked (_SUNBOUNCE, sun i in
+  // component i: the first suns of the bake's stages); empty when some mesh lacks it. The lights
+  // modes read it only while the drawn lights are these (bakedSunBounceFor).
+  std::vector<glm::vec3> sunBounceDirections;
   std::unique_ptr<ShadowMaps> shadowMaps;  // made on the first shadowed frame
   std::unique_ptr<ShadowMask> shadowMask;  // made on the first shadowed single-sample frame
   int shadowMaskFrames = 0;
@@ -125,15 +130,20 @@ struct Renderer::Impl {
   // modes with the material's BRDF have the two variants.
   // `constantNormal`: the mesh's normal is one (hasConstantNormal); with a Lambert material and no
   // normal texture the lights modes take the lights' irradiance from the vertices (VERTEX_LIGHTS).
+  // `sunBounce`: the lights modes read the suns' bounce the bake stored for the drawn lights
+  // (bakedSunBounceFor; dominant_lights.glsl's SUN_BOUNCE), else they estimate it.
   const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode,
-                                   int lightCount, int fromMask, bool specularLayer, bool constantNormal) {
+                                   int lightCount, int fromMask, bool specularLayer, bool constantNormal,
+                                   bool sunBounce) {
     // The feature layers do not depend on the mode: one program each.
     if (layer != FrameLayer::Radiance) mode = ShadingMode::Unlit;
     if (mode != ShadingMode::Lights && mode != ShadingMode::LightsShadowed) lightCount = 0;
     if (mode != ShadingMode::LightsShadowed) fromMask = 0;
+    if (lightCount == 0) sunBounce = false;
     if (!usesMaterialBrdf(mode)) specularLayer = true;
     const bool vertexLights = lightCount > 0 && !specularLayer && constantNormal && (slots & kSlotNormal) == 0;
-    const auto key = std::make_tuple(mode, layer, slots, alphaMode, lightCount, fromMask, specularLayer, vertexLights);
+    const auto key =
+        std::make_tuple(mode, layer, slots, alphaMode, lightCount, fromMask, specularLayer, vertexLights, sunBounce);
     auto found = meshPrograms.find(key);
     if (found == meshPrograms.end()) {
       const std::string defines = "#define SHADING_MODE " + std::to_string(int(mode)) +
@@ -143,7 +153,8 @@ struct Renderer::Impl {
                                   "\n#define LIGHT_COUNT " + std::to_string(lightCount) +
                                   "\n#define SHADOW_MASK " + std::to_string(fromMask) +
                                   "\n#define SPECULAR_LAYER " + std::to_string(int(specularLayer)) +
-                                  "\n#define VERTEX_LIGHTS " + std::to_string(int(vertexLights));
+                                  "\n#define VERTEX_LIGHTS " + std::to_string(int(vertexLights)) +
+                                  "\n#define SUN_BOUNCE " + std::to_string(int(sunBounce));
       found = meshPrograms.emplace(key, ShaderProgram("mesh.vert", "mesh.frag", defines)).first;
     }
     return found->second;
@@ -158,6 +169,12 @@ Renderer::Renderer(const BakedScene& bake, float textureAnisotropy) : impl_(std:
   }
   impl_->materialTextures = MaterialTextures(bake.scene, textureAnisotropy);
   glCreateVertexArrays(1, &impl_->emptyVertexArray);
+  static_assert(kMaxEngineLights <= 4, "_SUNBOUNCE holds four suns");
+  const bool sunBounce = std::all_of(impl_->meshes.begin(), impl_->meshes.end(),
+                                     [](const GpuMesh& mesh) { return mesh.hasSunBounce(); });
+  for (const EnvironmentLight& sun : bake.env.lights.suns)
+    if (sunBounce && impl_->sunBounceDirections.size() < std::size_t(kMaxEngineLights))
+      impl_->sunBounceDirections.push_back(sun.direction);
   setEnvironment(bake.env);
 }
 
@@ -191,6 +208,7 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
 }
 
 const EnvironmentStages& Renderer::lightStages() const { return impl_->lightStages; }
+
 
 int Renderer::shadowMaskFrames() const { return impl_->shadowMaskFrames; }
 
@@ -255,6 +273,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   // turned by the extra rotation like the specular chain; off without a cube (a bake from before
   // it) or without a residual chain.
   const bool cubeCorrection = lightsMode && drawn.residualChain && r.residualTruncation.id() != 0;
+  const bool sunBounce = lightsMode && bakedSunBounceFor(r.sunBounceDirections, drawn.lights);
   auto setFrameUniforms = [&](const ShaderProgram& program) {
     program.set("framebufferSamples", int(samples));
     program.set("viewProjection", viewProjection);
@@ -275,6 +294,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
                   glm::vec2(std::cos(1.1f * light.angularRadius), std::cos(0.9f * light.angularRadius)));
       program.set(uniformElement("lightIrradianceUp", i).c_str(),
                   light.radiance * uniformDiskIrradiance(light.direction.y, light.angularRadius));
+      program.set(uniformElement("lightIrradiance", i).c_str(), light.irradiance);
     }
     program.setArray("residualShRadiance", drawn.residualSh9.coefficients.data(), kShCoefficients);
     program.set("residualCubeCorrection", cubeCorrection ? 1 : 0);
@@ -355,7 +375,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       const ShaderProgram& program =
           r.meshProgram(programMode, settings.layer, slots, alphaMode, int(drawn.lights.size()),
                         fromMask && alphaMode == AlphaMode::Opaque ? maskReading : 0, hasSpecularLayer(material),
-                        r.constantNormal[i]);
+                        r.constantNormal[i], sunBounce);
       if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
         setFrameUniforms(program);
         program.set("shadowMaskScale", maskScale);

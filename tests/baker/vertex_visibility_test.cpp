@@ -8,6 +8,7 @@
 
 #include "core/procedural_mesh.h"
 #include "support/error_capture.h"
+#include "support/floor_at_wall.h"
 
 namespace iblkit {
 namespace {
@@ -24,17 +25,8 @@ std::size_t closestVertex(const Mesh& mesh, const glm::vec3& point) {
   return best;
 }
 
-// A floor vertex 1e-3 from a tall, wide wall: the floor is a fan around vertex 0 at (d, 0, 0),
-// covering x in [d, 5]; the wall is a box whose +X face is the plane x = 0.
-std::vector<Mesh> floorAtWall() {
-  constexpr float d = 1e-3f;
-  Mesh floor;
-  floor.name = "floor";
-  floor.positions = {{d, 0, 0}, {d, 0, 5}, {5, 0, 5}, {5, 0, -5}, {d, 0, -5}};
-  floor.normals.assign(5, glm::vec3(0, 1, 0));
-  floor.indices = {0, 1, 2, 0, 2, 3, 0, 3, 4};
-  return {floor, toMesh(box(glm::vec3(-0.5f, 10.0f, 0.0f), glm::vec3(1.0f, 20.0f, 40.0f)), "wall")};
-}
+// A floor vertex 1e-3 from a tall, wide wall (support/floor_at_wall.h).
+using test::floorAtWall;
 
 VisibilitySettings withRays(int rays, std::uint32_t seed = 0) {
   VisibilitySettings settings;

@@ -45,14 +45,14 @@ TEST(ShaderProgram, UnknownShaderIsAnError) {
 }
 
 // Compile errors name the original file and line, in the stage and in an included file (a define
-// breaks the source on purpose: mesh.frag line 50 reads SHADING_MODE, environment.glsl line 7
+// breaks the source on purpose: mesh.frag line 53 reads SHADING_MODE, environment.glsl line 7
 // declares rotateAboutY; shadow_surface.vert, unlike mesh.vert, does not read SHADING_MODE, so
 // the error is the fragment stage's).
 TEST(ShaderProgram, CompileErrorsNameTheShaderFileAndLine) {
   test::glContext();
   const std::string inStage = test::errorMessage(
       [] { ShaderProgram("shadow_surface.vert", "mesh.frag", "#define SHADING_MODE undefinedName"); });
-  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:50: ", 0), 0u) << inStage;
+  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:53: ", 0), 0u) << inStage;
   const std::string inInclude =
       test::errorMessage([] { ShaderProgram("fullscreen.vert", "sky.frag", "#define rotateAboutY 1"); });
   EXPECT_EQ(inInclude.rfind("shaders/environment.glsl:7: ", 0), 0u) << inInclude;
