@@ -292,6 +292,8 @@ int bake(const Options& options) {
                         {"bounce_rays", statistics.bounceRays},
                         {"sun_bounce_rays", sunBounceStatistics.bounceRays},
                         {"rejected_directions", statistics.rejected}};
+    // The grey albedo per mesh (meshDiffuseAlbedo) that the suns' bounce (and --bounces) reflect with.
+    record["mesh_albedos"] = meshDiffuseAlbedos(scene);
     record["rays_per_second"] = visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0;
     record["trace_rays_per_second"] =
         statistics.raySeconds > 0.0 ? double(statistics.rays) / statistics.raySeconds : 0.0;

@@ -104,6 +104,9 @@ TEST(IblkitBake, WritesTheBakedSceneAndTheReport) {
   EXPECT_EQ(report["parameters"]["seed"], 3);
   EXPECT_EQ(report["counts"]["vertices"], vertices);
   EXPECT_EQ(report["counts"]["rays"], 32 * vertices);
+  // The grey albedo per mesh (meshDiffuseAlbedo): the ball's (0.8, 0.7, 0.6) as Rec. 709 luminance.
+  ASSERT_EQ(report["mesh_albedos"].size(), 2u);
+  EXPECT_NEAR(report["mesh_albedos"][0].get<float>(), 0.2126f * 0.8f + 0.7152f * 0.7f + 0.0722f * 0.6f, 1e-6f);
   for (const char* stage : {"load_s", "visibility_s", "write_scene_s"})
     EXPECT_GE(report["timings"][stage], 0.0) << stage;
   EXPECT_GT(report["rays_per_second"], 0.0);
