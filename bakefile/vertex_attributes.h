@@ -12,7 +12,7 @@
 // with t_k in shBasis9's order (k = l(l+1) + m) and normalisation (baker/vertex_visibility.h).
 // Optional (a bake of a map with suns; bakes older than it lack it, and the engine then estimates
 // the bounce from the transfer):
-//   _SUNBOUNCE   VEC4    the suns' first bounce g_i (baker/vertex_visibility.h bakeSunBounce) for
+//   _SUNBOUNCE   VEC4    the suns' bounced light b_i (baker/vertex_visibility.h bakeSunBounce) for
 //                        the first four suns of env/lights.json, in its order; 0 past the last
 
 #include <cstddef>

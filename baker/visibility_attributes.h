@@ -15,7 +15,7 @@ namespace iblkit {
 // Throws Error("vertex visibility attributes: ...") when the counts of meshes or vertices differ.
 void attachVisibilityAttributes(std::vector<Mesh>& meshes, const std::vector<MeshVisibility>& visibility);
 
-// The suns whose first bounce a bake stores: the directions of the first kMaxSunBounceLights of
+// The suns whose bounced light a bake stores: the directions of the first kMaxSunBounceLights of
 // lights.suns (brightest first), the suns the engine draws first.
 std::vector<glm::vec3> sunBounceDirections(const EnvironmentLights& lights);
 

@@ -31,7 +31,7 @@ in VertexData {
   vec4 lightIrradianceBack;
 #endif
 #if SUN_BOUNCE
-  vec4 sunBounce;  // the baked suns' first bounce (mesh.vert)
+  vec4 sunBounce;  // the baked suns' bounced light (mesh.vert)
 #endif
 }
 vertexIn;

@@ -23,7 +23,7 @@ layout(location = kAttributeTangent) in vec4 inTangent;
 // COLOR_0, or the generic (1, 1, 1, 1) GpuMesh::draw sets for a mesh without it.
 layout(location = kAttributeColor) in vec4 inColor;
 #if SUN_BOUNCE
-// The baked suns' first bounce g_i (_SUNBOUNCE), sun i in component i; read only where the renderer
+// The baked suns' bounced light b_i (_SUNBOUNCE), sun i in component i; read only where the renderer
 // says it stands for the drawn lights (dominant_lights.glsl's bakedSunBounce).
 layout(location = kAttributeSunBounce) in vec4 inSunBounce;
 #endif

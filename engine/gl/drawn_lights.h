@@ -30,7 +30,7 @@ int drawnLightCount(const EnvironmentStages& env, int requested);
 // `extraRotationDegrees` about +Y (FrameSettings::envRotationDegrees).
 DrawnLights drawnLights(const EnvironmentStages& env, int requested, float extraRotationDegrees);
 
-// Whether a bake's suns' first bounce (_SUNBOUNCE, sun i in component i; `bakedDirections` the
+// Whether a bake's suns' bounced light (_SUNBOUNCE, sun i in component i; `bakedDirections` the
 // directions of the suns it was baked for, empty when the meshes lack it) stands for the lights
 // drawn: as many suns baked at least, light i in the direction of sun i (within 1e-5: the same
 // environment, no extra rotation). Otherwise the engine estimates the bounce (dominant_lights.glsl).

@@ -23,7 +23,7 @@ enum GpuMeshAttribute : unsigned {
   // glTF COLOR_0 (Mesh::colors, linear RGBA). A mesh without it leaves the attribute disabled and
   // GpuMesh::draw sets its generic value to (1, 1, 1, 1): white, opaque.
   kAttributeColor = 10,
-  // The baked suns' first bounce (_SUNBOUNCE), read by the lights modes' programs only. A mesh
+  // The baked suns' bounced light (_SUNBOUNCE), read by the lights modes' programs only. A mesh
   // without it leaves the attribute disabled (the renderer then estimates the bounce).
   kAttributeSunBounce = 11,
 };

@@ -86,7 +86,7 @@ struct Renderer::Impl {
   std::vector<GpuMesh> meshes;
   std::vector<bool> constantNormal;  // hasConstantNormal per mesh
   // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn, shadows
-  // from the mask, specular layer), compiled on first use.
+  // from the mask, specular layer, lights per vertex, the bake's sun bounce), compiled on first use.
   std::map<std::tuple<ShadingMode, FrameLayer, unsigned, AlphaMode, int, int, bool, bool, bool>, ShaderProgram>
       meshPrograms;
   MaterialTextures materialTextures;
@@ -101,9 +101,9 @@ struct Renderer::Impl {
   SphericalHarmonics9 sh9;
   // The lights modes' inputs (drawn_lights.h): the stages without the images.
   EnvironmentStages lightStages;
-  // The directions of the suns whose first bounce every mesh carries baked (_SUNBOUNCE, sun i in
-  // component i: the first suns of the bake's stages); empty when some mesh lacks it. The lights
-  // modes read it only while the drawn lights are these (bakedSunBounceFor).
+  // The directions of the suns whose bounced light every mesh carries baked (_SUNBOUNCE, sun i in
+  // component i: the first suns of the stages the renderer was made with); empty when some mesh
+  // lacks it. The lights modes read it only while the drawn lights are these (bakedSunBounceFor).
   std::vector<glm::vec3> sunBounceDirections;
   std::unique_ptr<ShadowMaps> shadowMaps;  // made on the first shadowed frame
   std::unique_ptr<ShadowMask> shadowMask;  // made on the first shadowed single-sample frame
@@ -208,7 +208,6 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
 }
 
 const EnvironmentStages& Renderer::lightStages() const { return impl_->lightStages; }
-
 
 int Renderer::shadowMaskFrames() const { return impl_->shadowMaskFrames; }
 
