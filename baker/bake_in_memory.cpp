@@ -35,9 +35,7 @@ BakedScene bakeInMemory(const fs::path& sceneFile, const InMemoryBakeOptions& op
   }
   if (!bake.env.lights.suns.empty()) {
     settings.albedo = meshDiffuseAlbedos(bake.scene);
-    settings.progress = nullptr;
-    attachSunBounceAttribute(bake.scene.meshes,
-                             bakeSunBounce(bake.scene.meshes, sunBounceDirections(bake.env.lights), settings));
+    attachSunBounce(bake.scene.meshes, bake.env.lights, settings);
   }
   return bake;
 }

@@ -294,6 +294,15 @@ glm::vec4 vertexSunlight(const RayScene& scene, const Mesh& mesh, std::size_t ve
   return lit;
 }
 
+// settings.albedo: one per mesh, each in [0, 1]; `who` names what needs them in the message.
+void checkAlbedo(const std::vector<Mesh>& meshes, const VisibilitySettings& settings, const std::string& who) {
+  if (settings.albedo.size() != meshes.size())
+    fail("vertex visibility", who + " one albedo per mesh: got " + std::to_string(settings.albedo.size()) + " for " +
+                                  std::to_string(meshes.size()) + " meshes");
+  for (float a : settings.albedo)
+    if (!(a >= 0.0f && a <= 1.0f)) fail("vertex visibility", "albedo " + std::to_string(a) + " is not in [0, 1]");
+}
+
 void checkInput(const std::vector<Mesh>& meshes, const VisibilitySettings& settings) {
   if (settings.rayCount < 1 || settings.rayCount > kMaxRayCount)
     fail("vertex visibility",
@@ -305,15 +314,7 @@ void checkInput(const std::vector<Mesh>& meshes, const VisibilitySettings& setti
   if (settings.falloff > 0.0f && settings.maxDistance <= 0.0f)
     fail("vertex visibility", "a falloff needs a maximum distance (--ao-distance > 0)");
   if (settings.bounces < 0) fail("vertex visibility", "bounces must be >= 0");
-  if (settings.bounces > 0) {
-    if (settings.albedo.size() != meshes.size())
-      fail("vertex visibility", "bounces need one albedo per mesh: got " +
-                                    std::to_string(settings.albedo.size()) + " for " +
-                                    std::to_string(meshes.size()) + " meshes");
-    for (float a : settings.albedo)
-      if (!(a >= 0.0f && a <= 1.0f))
-        fail("vertex visibility", "albedo " + std::to_string(a) + " is not in [0, 1]");
-  }
+  if (settings.bounces > 0) checkAlbedo(meshes, settings, "bounces need");
   for (std::size_t m = 0; m < meshes.size(); ++m)
     if (meshes[m].normals.size() != meshes[m].positions.size())
       fail("vertex visibility", "mesh " + std::to_string(m) + " has " +
@@ -344,17 +345,6 @@ void forEachVertexSampler(const std::vector<Mesh>& meshes, const std::vector<One
   });
 }
 
-double secondsSince(std::chrono::steady_clock::time_point& last) {
-  const auto now = std::chrono::steady_clock::now();
-  const double seconds = std::chrono::duration<double>(now - last).count();
-  last = now;
-  return seconds;
-}
-
-}  // namespace
-
-namespace {
-
 // The visibility bake's Embree scene: every mesh, with the materials' alpha filter when some
 // material can drop a point.
 void buildScene(RayScene& scene, const std::vector<Mesh>& meshes, const VisibilitySettings& settings) {
@@ -371,7 +361,29 @@ void buildScene(RayScene& scene, const std::vector<Mesh>& meshes, const Visibili
   scene.commit();
 }
 
+// The mean linear RGB of a texture's image (sRGB decoded), or 1 when there is none to read.
+glm::vec3 meanTextureColor(const Scene& scene, const TextureRef& ref) {
+  if (!ref.present() || std::size_t(ref.texture) >= scene.textures.size()) return glm::vec3(1.0f);
+  const int image = scene.textures[std::size_t(ref.texture)].image;
+  if (image < 0 || std::size_t(image) >= scene.images.size()) return glm::vec3(1.0f);
+  const std::vector<std::uint8_t>& rgba = scene.images[std::size_t(image)].rgba;
+  const std::size_t texels = rgba.size() / 4;
+  if (texels == 0) return glm::vec3(1.0f);
+  glm::dvec3 sum(0.0);
+  for (std::size_t i = 0; i < texels; ++i)
+    for (int c = 0; c < 3; ++c) sum[c] += srgbToLinear(rgba[4 * i + std::size_t(c)]);
+  return glm::vec3(sum / double(texels));
+}
+
+double secondsSince(std::chrono::steady_clock::time_point& last) {
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - last).count();
+  last = now;
+  return seconds;
+}
+
 }  // namespace
+
 
 std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes,
                                                  const VisibilitySettings& settings,
@@ -462,11 +474,7 @@ std::vector<std::vector<glm::vec4>> bakeSunBounce(const std::vector<Mesh>& meshe
   for (const glm::vec3& l : sunDirections)
     if (!(std::abs(glm::length(l) - 1.0f) < 1e-3f))
       fail("vertex visibility", "a sun direction for the bounce is not unit length");
-  if (settings.albedo.size() != meshes.size())
-    fail("vertex visibility", "the sun bounce needs one albedo per mesh: got " + std::to_string(settings.albedo.size()) +
-                                  " for " + std::to_string(meshes.size()) + " meshes");
-  for (float a : settings.albedo)
-    if (!(a >= 0.0f && a <= 1.0f)) fail("vertex visibility", "albedo " + std::to_string(a) + " is not in [0, 1]");
+  checkAlbedo(meshes, settings, "the sun bounce needs");
   auto clock = std::chrono::steady_clock::now();
   std::vector<std::vector<glm::vec4>> results(meshes.size()), lit(meshes.size());
   for (std::size_t m = 0; m < meshes.size(); ++m) results[m].assign(meshes[m].vertexCount(), glm::vec4(0.0f));
@@ -512,23 +520,6 @@ std::vector<std::vector<glm::vec4>> bakeSunBounce(const std::vector<Mesh>& meshe
   return results;
 }
 
-namespace {
-
-// The mean linear RGB of a texture's image (sRGB decoded), or 1 when there is none to read.
-glm::vec3 meanTextureColor(const Scene& scene, const TextureRef& ref) {
-  if (!ref.present() || std::size_t(ref.texture) >= scene.textures.size()) return glm::vec3(1.0f);
-  const int image = scene.textures[std::size_t(ref.texture)].image;
-  if (image < 0 || std::size_t(image) >= scene.images.size()) return glm::vec3(1.0f);
-  const std::vector<std::uint8_t>& rgba = scene.images[std::size_t(image)].rgba;
-  const std::size_t texels = rgba.size() / 4;
-  if (texels == 0) return glm::vec3(1.0f);
-  glm::dvec3 sum(0.0);
-  for (std::size_t i = 0; i < texels; ++i)
-    for (int c = 0; c < 3; ++c) sum[c] += srgbToLinear(rgba[4 * i + std::size_t(c)]);
-  return glm::vec3(sum / double(texels));
-}
-
-}  // namespace
 
 float meshDiffuseAlbedo(const Scene& scene, const Mesh& mesh) {
   if (mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size()) return 0.0f;

@@ -61,4 +61,11 @@ void attachSunBounceAttribute(std::vector<Mesh>& meshes, const std::vector<std::
   }
 }
 
+void attachSunBounce(std::vector<Mesh>& meshes, const EnvironmentLights& lights, VisibilitySettings settings,
+                     VisibilityStatistics* statistics) {
+  if (lights.suns.empty()) return;
+  settings.progress = nullptr;
+  attachSunBounceAttribute(meshes, bakeSunBounce(meshes, sunBounceDirections(lights), settings, statistics));
+}
+
 }  // namespace iblkit

@@ -23,4 +23,10 @@ std::vector<glm::vec3> sunBounceDirections(const EnvironmentLights& lights);
 // attachVisibilityAttributes.
 void attachSunBounceAttribute(std::vector<Mesh>& meshes, const std::vector<std::vector<glm::vec4>>& bounce);
 
+// What iblkit-bake and the in-memory bake store for the engine's lights modes: bakeSunBounce of
+// the suns of `lights` (sunBounceDirections) with `settings` (its albedos required, its progress
+// not called), attached as _SUNBOUNCE. Nothing when there is no sun.
+void attachSunBounce(std::vector<Mesh>& meshes, const EnvironmentLights& lights, VisibilitySettings settings,
+                     VisibilityStatistics* statistics = nullptr);
+
 }  // namespace iblkit

@@ -219,7 +219,9 @@ int bake(const Options& options) {
   settings.falloff = options.aoFalloff;
   settings.areaSampling = options.aoArea;
   settings.bounces = options.bounces;
-  if (options.bounces > 0) settings.albedo = meshDiffuseAlbedos(scene);
+  // Each mesh's grey albedo, for --bounces, the suns' bounce and bake.json (it averages textures).
+  const std::vector<float> albedos = meshDiffuseAlbedos(scene);
+  if (options.bounces > 0) settings.albedo = albedos;
   useSceneMaterials(settings, scene);  // AO rays pass through masked texels
   settings.progress = progressBar("visibility");
   VisibilityStatistics statistics;
@@ -246,14 +248,12 @@ int bake(const Options& options) {
     stages = bakeEnvironment(std::move(*environmentMap), options, windowCutoff, timings);
     stopwatch.lap();  // the stages timed themselves
   }
-  // The suns' first bounce for the engine's lights modes, with the visibility's rays.
+  // The suns' bounced light for the engine's lights modes, with the visibility's rays.
   VisibilityStatistics sunBounceStatistics;
   if (stages && !stages->lights.suns.empty()) {
     VisibilitySettings sunBounce = settings;
-    sunBounce.albedo = meshDiffuseAlbedos(scene);
-    sunBounce.progress = nullptr;
-    attachSunBounceAttribute(scene.meshes, bakeSunBounce(scene.meshes, sunBounceDirections(stages->lights), sunBounce,
-                                                         &sunBounceStatistics));
+    sunBounce.albedo = albedos;
+    attachSunBounce(scene.meshes, stages->lights, std::move(sunBounce), &sunBounceStatistics);
     timings["sun_bounce_s"] = stopwatch.lap();
   }
   writeDirectoryAtomically(options.output, [&](const fs::path& folder) {
@@ -293,7 +293,7 @@ int bake(const Options& options) {
                         {"sun_bounce_rays", sunBounceStatistics.bounceRays},
                         {"rejected_directions", statistics.rejected}};
     // The grey albedo per mesh (meshDiffuseAlbedo) that the suns' bounce (and --bounces) reflect with.
-    record["mesh_albedos"] = meshDiffuseAlbedos(scene);
+    record["mesh_albedos"] = albedos;
     record["rays_per_second"] = visibilitySeconds > 0.0 ? double(statistics.rays) / visibilitySeconds : 0.0;
     record["trace_rays_per_second"] =
         statistics.raySeconds > 0.0 ? double(statistics.rays) / statistics.raySeconds : 0.0;

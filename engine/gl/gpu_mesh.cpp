@@ -17,12 +17,19 @@ struct Stream {
   std::span<const float> data;
 };
 
-std::span<const float> bakedAttribute(const Mesh& mesh, const char* name, int components) {
+// The mesh's attribute `name` with `components` floats per vertex; nullptr when it has none such.
+const VertexAttribute* findBakedAttribute(const Mesh& mesh, const char* name, int components) {
   const auto found = mesh.attributes.find(name);
   if (found == mesh.attributes.end() || found->second.componentCount != components ||
       found->second.data.size() != std::size_t(components) * mesh.vertexCount())
-    fail(mesh.name, std::string("missing baked attribute ") + name);
-  return found->second.data;
+    return nullptr;
+  return &found->second;
+}
+
+std::span<const float> bakedAttribute(const Mesh& mesh, const char* name, int components) {
+  const VertexAttribute* attribute = findBakedAttribute(mesh, name, components);
+  if (!attribute) fail(mesh.name, std::string("missing baked attribute ") + name);
+  return attribute->data;
 }
 
 }  // namespace
@@ -47,10 +54,10 @@ GpuMesh::GpuMesh(const Mesh& mesh) : indexCount_(GLsizei(mesh.indices.size())) {
   optional(kAttributeTexcoord1, 2, mesh.texcoords1);
   optional(kAttributeTangent, 4, mesh.tangents);
   optional(kAttributeColor, 4, mesh.colors);
-  const auto sunBounce = mesh.attributes.find(kSunBounceAttribute);
-  hasSunBounce_ = sunBounce != mesh.attributes.end() && sunBounce->second.componentCount == 4 &&
-                  sunBounce->second.data.size() == 4 * n;
-  if (hasSunBounce_) streams.push_back({kAttributeSunBounce, 4, sunBounce->second.data});
+  // The suns' bounce is optional (bakes of maps with suns only).
+  const VertexAttribute* sunBounce = findBakedAttribute(mesh, kSunBounceAttribute, 4);
+  hasSunBounce_ = sunBounce != nullptr;
+  if (sunBounce) streams.push_back({kAttributeSunBounce, 4, sunBounce->data});
   hasColors_ = mesh.colors.size() == n;
   vertexAlpha_ = hasColors_ && mesh.hasVertexAlpha();
   // One buffer: each attribute's array in turn (4-byte aligned), then the indices.
