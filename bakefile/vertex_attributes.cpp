@@ -1,5 +1,6 @@
 #include "bakefile/vertex_attributes.h"
 
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -34,6 +35,19 @@ void requireBakedAttributes(const Scene& scene, const std::filesystem::path& fil
         fail(file,
              "mesh '" + mesh.name + "' has no baked " + name + " attribute (not an iblkit-bake scene?)");
     }
+  for (const Mesh& mesh : scene.meshes) {
+    const auto found = mesh.attributes.find(kSunBounceAttribute);
+    if (found == mesh.attributes.end()) continue;
+    const std::string what = "mesh '" + mesh.name + "': " + kSunBounceAttribute;
+    if (found->second.componentCount != 4 || found->second.data.size() != 4 * mesh.vertexCount())
+      fail(file, what + " is not four values per vertex");
+    for (const float value : found->second.data)
+      if (!(value >= 0.0f && value <= kMaxSunBounceValue)) {
+        std::ostringstream message;
+        message << what << " holds " << value << ", outside [0, " << kMaxSunBounceValue << "]";
+        fail(file, message.str());
+      }
+  }
 }
 
 }  // namespace iblkit

@@ -30,6 +30,9 @@ inline constexpr const char* kBentLengthAttribute = "_BENTLENGTH";
 // _SHT0, _SHT1, _SHT2: three VEC3 attributes holding the nine transfer coefficients in order.
 inline constexpr const char* kTransferAttributes[3] = {"_SHT0", "_SHT1", "_SHT2"};
 inline constexpr const char* kSunBounceAttribute = "_SUNBOUNCE";
+// The largest _SUNBOUNCE value a bake can write: each of its three passes adds at most 1 (albedo
+// and the sunlight's cosine at most 1), so 3, with room for rounding.
+inline constexpr float kMaxSunBounceValue = 3.01f;
 
 // The nine transfer coefficients of vertex `vertex`, read back from _SHT0.._SHT2 (the inverse
 // packing). Throws Error("vertex visibility attributes: ...") when an attribute is missing, is not
@@ -38,7 +41,8 @@ ShBasis9 transferFromAttributes(const Mesh& mesh, std::size_t vertex);
 
 // Every mesh of `scene` carries every attribute above, with its component count and one value per
 // vertex. Throws Error("<file>: mesh '<name>' has no baked <attribute> attribute (not an iblkit-bake
-// scene?)") otherwise.
+// scene?)") otherwise. A _SUNBOUNCE, where there is one, must be VEC4 per vertex with values in
+// [0, kMaxSunBounceValue] (Error("<file>: mesh '<name>': _SUNBOUNCE ...")).
 void requireBakedAttributes(const Scene& scene, const std::filesystem::path& file);
 
 }  // namespace iblkit

@@ -137,5 +137,32 @@ TEST(BakeRecord, AVersionThatIsNotAStringIsAnErrorNamingTheFile) {
             file.string() + ": version '1' is not supported (expected 'iblkit-bake 1')");
 }
 
+// The suns' bounce is optional, but one that is there must be what a bake writes.
+TEST(BakedScene, ASunBounceOutOfShapeOrRangeIsAnErrorNamingTheFile) {
+  BakedScene original = test::makeTestBake({.rings = 4, .segments = 8});
+  for (Mesh& mesh : original.scene.meshes)
+    mesh.attributes[kSunBounceAttribute] = {4, std::vector<float>(4 * mesh.vertexCount(), 0.25f)};
+  EXPECT_EQ(readBakeFolder(writeBakeFolder("bake_sun_bounce", original)).scene.meshes[0].attributes.at(kSunBounceAttribute).data,
+            original.scene.meshes[0].attributes.at(kSunBounceAttribute).data);
+  const std::string mesh = original.scene.meshes[0].name;
+  BakedScene bright = original;
+  bright.scene.meshes[0].attributes[kSunBounceAttribute].data[5] = 1e30f;
+  const fs::path brightFolder = writeBakeFolder("bake_sun_bounce_bright", bright);
+  EXPECT_EQ(test::errorMessage([&] { readBakeFolder(brightFolder); }),
+            (brightFolder / kBakeSceneFile).string() + ": mesh '" + mesh +
+                "': _SUNBOUNCE holds 1e+30, outside [0, 3.01]");
+  BakedScene negative = original;
+  negative.scene.meshes[0].attributes[kSunBounceAttribute].data[0] = -0.5f;
+  const fs::path negativeFolder = writeBakeFolder("bake_sun_bounce_negative", negative);
+  EXPECT_EQ(test::errorMessage([&] { readBakeFolder(negativeFolder); }),
+            (negativeFolder / kBakeSceneFile).string() + ": mesh '" + mesh +
+                "': _SUNBOUNCE holds -0.5, outside [0, 3.01]");
+  BakedScene vec3 = original;
+  vec3.scene.meshes[0].attributes[kSunBounceAttribute] = {3, std::vector<float>(3 * vec3.scene.meshes[0].vertexCount(), 0.0f)};
+  const fs::path vec3Folder = writeBakeFolder("bake_sun_bounce_vec3", vec3);
+  EXPECT_EQ(test::errorMessage([&] { readBakeFolder(vec3Folder); }),
+            (vec3Folder / kBakeSceneFile).string() + ": mesh '" + mesh + "': _SUNBOUNCE is not four values per vertex");
+}
+
 }  // namespace
 }  // namespace iblkit
