@@ -78,6 +78,9 @@ layout(binding = kTextureUnitShadowDepth) uniform sampler2DArray shadowMoments; 
 uniform mat4 shadowFromWorld[kMaxEngineLights];
 // World extent of the map: x, y the sides along u and v, z the depth range; w the texel's side.
 uniform vec4 shadowExtent[kMaxEngineLights];
+// A receiver plane's normal g -> h, |h.xy| / |h.z| the world slope of the map's depth along the
+// plane (the depth is measured from a flat ground's plane where there is one: shadow_maps.h).
+uniform mat3 shadowSlopeFromNormal[kMaxEngineLights];
 
 // Bias, in texels of the map: a constant depth offset, and the receiver moved along its geometric
 // normal (docs/engine.md "Shadows" says how they were chosen).
@@ -119,19 +122,22 @@ vec2 shadowBlockers(vec2 moments, float z, float spread) {
 
 // The fraction of light i's disk visible from `position` (geometric normal g, facing the light:
 // g.l > 0), angular radius sigma (tanSigma).
-float shadowVisibility(int i, vec3 position, vec3 g, vec3 l, float tanSigma) {
+float shadowVisibility(int i, vec3 position, vec3 g, float tanSigma) {
   vec4 extent = shadowExtent[i];
   float texel = extent.w;
   vec3 s = (shadowFromWorld[i] * vec4(position + g * (kShadowNormalOffsetTexels * texel), 1.0)).xyz;
   // Receivers beyond the map's depth range are on the ground outside the objects' footprint.
   float z = min(s.z - kShadowDepthBiasTexels * texel / extent.z, 1.0);
   float depthToTexels = extent.z * tanSigma / texel;  // penumbra half-width per unit of depth, texels
-  // The receiver plane's depth change per texel across the map (its slope clamped at 84 degrees),
-  // times c and the footprint's standard deviation per texel of radius (1/2: level log2(R)).
-  float gl = max(dot(g, l), 0.1);
-  float spreadPerTexel = 0.5 * kShadowExponent * sqrt(1.0 - gl * gl) / gl * texel / extent.z;
-  // Blocker search: over radius z tan(sigma), the penumbra of a blocker at the map's near side.
-  float searchRadius = max(z * depthToTexels, 1.0);
+  // The receiver plane's depth change per texel across the map (its slope clamped at 10: 84
+  // degrees where the depth is along the light), times c and the footprint's standard deviation
+  // per texel of radius (1/2: level log2(R)). On a flat ground the depth is constant: no spread.
+  vec3 h = shadowSlopeFromNormal[i] * g;
+  float slope = min(length(h.xy), 10.0 * abs(h.z)) / max(abs(h.z), 1e-6);
+  float spreadPerTexel = 0.5 * kShadowExponent * slope * texel / extent.z;
+  // Blocker search: over radius z tan(sigma), the penumbra of a blocker at the map's near side. The
+  // tap's B-spline reaches 1.5 x 2^L texels from its centre, hence level log2(radius / 1.5).
+  float searchRadius = max(z * depthToTexels / 1.5, 1.0);
   vec2 search = shadowBlockers(textureLod(shadowMoments, vec3(s.xy, float(i)), log2(searchRadius)).rg, z,
                                spreadPerTexel * searchRadius);
   // The penumbra's half width from the blockers' depth; at least a texel.
@@ -147,7 +153,7 @@ float shadowVisibility(int i, vec3 position, vec3 g, vec3 l, float tanSigma) {
 float lightVisibility(int i, vec3 position, vec3 geometric) {
   vec3 l = lightDirection[i];
   vec3 g = dot(geometric, l) < 0.0 ? -geometric : geometric;
-  return shadowVisibility(i, position, g, l, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
+  return shadowVisibility(i, position, g, lightCosSin[i].y / max(lightCosSin[i].x, 1e-4));
 }
 
 // lightVisibility of each drawn light in component i (1 past lightCount): the mask's texel.

@@ -17,4 +17,9 @@ inline constexpr int kShadowMapSize = 1024;
 // Maps").
 inline constexpr float kShadowExponent = 80.0f;
 
+// A planar ground sets the maps' depth (engine/gl/shadow_maps.h, fitShadowFrame) where the light
+// is further than this from its plane's edge-on direction (cosine to the ground's normal; 0.02:
+// about 1.1 degrees above the horizon).
+inline constexpr float kShadowGroundShearMinCos = 0.02f;
+
 }  // namespace iblkit

@@ -30,6 +30,26 @@ bool meshPlane(const Mesh& mesh, glm::vec3& normal, float& offset) {
                      [&](const glm::vec3& p) { return std::abs(glm::dot(normal, p) - offset) <= tolerance; });
 }
 
+// The plane the ground meshes lie on, when they all lie on one: false when there is no ground, a
+// ground mesh is not planar, or two lie on different planes.
+bool groundPlane(const std::vector<Mesh>& meshes, glm::vec3& normal, float& offset) {
+  bool found = false;
+  for (const Mesh& mesh : meshes) {
+    if (!mesh.isGround) continue;
+    glm::vec3 n;
+    float o = 0.0f;
+    if (!meshPlane(mesh, n, o)) return false;
+    if (found) {
+      const float tolerance = 1e-4f * std::max(mesh.bounds().radius(), 1e-6f);
+      if (std::abs(glm::dot(n, normal)) < 1.0f - 1e-5f) return false;
+      if (std::abs(glm::dot(n, normal) * o - offset) > tolerance) return false;
+      continue;
+    }
+    normal = n, offset = o, found = true;
+  }
+  return found;
+}
+
 }  // namespace
 
 ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& light, int size) {
@@ -39,8 +59,29 @@ ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& l
   ShadowFrame frame;
   frame.right = glm::normalize(glm::cross(helper, d));
   frame.up = glm::cross(d, frame.right);
-  auto inLightFrame = [&](const glm::vec3& p) { return glm::vec3(glm::dot(p, frame.right), glm::dot(p, frame.up), glm::dot(p, d)); };
   const bool anyObject = std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return !m.isGround && !m.positions.empty(); });
+  // The depth coordinate: the distance towards the light, measured from the plane of a planar
+  // ground (t = (n.p - offset) / (n.d), the distance along d from the plane to p) where there is
+  // one, else from the plane through the origin across the light (t = d.p). Both grow by exactly
+  // delta when p moves by delta along d, so at any (u, v) they order the surfaces alike and
+  // measure their separations alike; the first makes the ground a plane of constant depth in the
+  // map, so that a wide filter footprint over the ground holds one depth where it held a ramp
+  // (docs/engine.md "Shadows": the exponential moments of a ramp are dominated by its deepest
+  // texels, which leaked light into large lights' shadows).
+  glm::vec3 depthAxis = d;
+  float depthOffset = 0.0f;
+  glm::vec3 groundNormal;
+  float groundOffset = 0.0f;
+  const bool groundFlat = anyObject && groundPlane(meshes, groundNormal, groundOffset) &&
+                          std::abs(glm::dot(groundNormal, d)) > kShadowGroundShearMinCos;
+  if (groundFlat) {
+    const float nd = glm::dot(groundNormal, d);
+    depthAxis = groundNormal / nd;
+    depthOffset = -groundOffset / nd;
+  }
+  auto inLightFrame = [&](const glm::vec3& p) {
+    return glm::vec3(glm::dot(p, frame.right), glm::dot(p, frame.up), glm::dot(p, depthAxis) + depthOffset);
+  };
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const Mesh& mesh : meshes)
     if (!anyObject || !mesh.isGround)
@@ -50,10 +91,15 @@ ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& l
         hi = glm::max(hi, q);
       }
   if (lo.x > hi.x) lo = glm::vec3(-1.0f), hi = glm::vec3(1.0f);
-  // The ground's depth under a rectangle [uvLo, uvHi] of the map: a plane's at the corners (the
-  // depth of a plane is linear across the map), else every vertex's.
+  // The ground's depth under a rectangle [uvLo, uvHi] of the map: 0 on a flat ground's plane, a
+  // plane's at the corners (the depth of a plane is linear across the map), else every vertex's.
   auto groundDepths = [&](const glm::vec2& uvLo, const glm::vec2& uvHi) {
     if (!anyObject) return;
+    if (groundFlat) {
+      lo.z = std::min(lo.z, 0.0f);
+      hi.z = std::max(hi.z, 0.0f);
+      return;
+    }
     for (const Mesh& mesh : meshes) {
       if (!mesh.isGround) continue;
       glm::vec3 n;
@@ -93,15 +139,20 @@ ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& l
   side += 2.0f * margin;
   const float depthMargin = std::max(0.01f * (hi.z - lo.z), 1e-3f * largest);
   const float zNear = hi.z + depthMargin, range = (hi.z - lo.z) + 2.0f * depthMargin;
-  // Rows of the map: u = (right.p - uvLo.x) / side.x, v likewise, depth = (zNear - d.p) / range.
+  // Rows of the map: u = (right.p - uvLo.x) / side.x, v likewise, depth = (zNear - t(p)) / range.
   glm::mat4 m(0.0f);
   for (int c = 0; c < 3; ++c) {
     m[c][0] = frame.right[c] / side.x;
     m[c][1] = frame.up[c] / side.y;
-    m[c][2] = -d[c] / range;
+    m[c][2] = -depthAxis[c] / range;
   }
-  m[3] = glm::vec4(-uvLo.x / side.x, -uvLo.y / side.y, zNear / range, 1.0f);
+  m[3] = glm::vec4(-uvLo.x / side.x, -uvLo.y / side.y, (zNear - depthOffset) / range, 1.0f);
   frame.shadowFromWorld = m;
+  // A receiver plane of normal g has the map-space normal A^-T g (A: the 3 x 3 of the map);
+  // scaled so that the world slope of its depth across the map is |xy| / |z|.
+  const glm::mat3 normalToMap = glm::transpose(glm::inverse(glm::mat3(m)));
+  frame.slopeFromNormal = glm::mat3(glm::vec3(range / side.x, 0.0f, 0.0f), glm::vec3(0.0f, range / side.y, 0.0f),
+                                    glm::vec3(0.0f, 0.0f, 1.0f)) * normalToMap;
   frame.extent = glm::vec4(side.x, side.y, range, std::max(side.x, side.y) / float(size));
   return frame;
 }
@@ -204,6 +255,7 @@ void ShadowMaps::setUniforms(const ShaderProgram& program) const {
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     program.set(uniformElement("shadowFromWorld", i).c_str(), frames_[i].shadowFromWorld);
     program.set(uniformElement("shadowExtent", i).c_str(), frames_[i].extent);
+    program.set(uniformElement("shadowSlopeFromNormal", i).c_str(), frames_[i].slopeFromNormal);
   }
 }
 

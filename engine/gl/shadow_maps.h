@@ -27,6 +27,9 @@ struct ShadowFrame {
   glm::vec3 right{1.0f, 0.0f, 0.0f}, up{0.0f, 1.0f, 0.0f};  // the map's u and v axes in world space
   // World size of the map along right and up, its depth range, and its texel's side (the larger).
   glm::vec4 extent{1.0f};
+  // A receiver plane's normal g (world) -> h, with |h.xy| / |h.z| the world slope of the map's
+  // depth along that plane (shadow.glsl's plane correction).
+  glm::mat3 slopeFromNormal{1.0f};
 };
 
 // What a shadow map depends on: the unit direction towards the light and tan of its angular radius.
@@ -44,6 +47,10 @@ struct ShadowLight {
 // - along it (depth): the objects' vertices and the ground's points under the map's rectangle (a
 //   planar ground mesh's plane at the rectangle's corners; a ground that is not planar, or seen
 //   edge-on: all its vertices), 1% of margin at both ends. The ground further away is not drawn.
+//   Depth is the distance towards the light from the ground's plane where the ground meshes lie on
+//   one plane (the light more than kShadowGroundShearMinCos off it), so that the ground has one
+//   depth across the map; else from a plane across the light. Either way, at a given (u, v) two
+//   points' depths differ by their distance along the light over the depth range.
 // Empty meshes: a unit box at the origin.
 ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& light, int size);
 
