@@ -10,6 +10,12 @@
 uniform vec3 lightRadiance[kMaxEngineLights];
 // cos(1.1 r), cos(0.9 r): the edge of a mirror's reflected disk (mirroredDiskRadiance).
 uniform vec2 lightMirrorEdgeCos[kMaxEngineLights];
+// cos(2 r + 1 deg), cos(1.5 r + 1 deg): the window of a mirror's reflected texels of the light
+// (mirroredLightTexels), read where lightMirrorTexels is 1 (else 0: the uniform disk,
+// mirroredDiskRadiance): where the residual has its own chain, so that the map's chain minus the
+// residual's is the lights' texels, and the light is wider than a texel of the chain's level 0.
+uniform vec2 lightTexelWindowCos[kMaxEngineLights];
+uniform float lightMirrorTexels[kMaxEngineLights];
 // The light's irradiance on an upward normal, lightRadiance uniformDiskIrradiance(l.y, r) (the
 // core's, computed once a frame): what groundBounceIrradiance's ground receives.
 uniform vec3 lightIrradianceUp[kMaxEngineLights];
@@ -75,6 +81,12 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 trunc
   vec3 radiance = fullMaterialModelWith(residualSpecularCube, m, n, v, ao, axis, irradiance);
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, SPECULAR_WEIGHT, specularColor);
   vec3 irradianceUp = vec3(0.0);
+#if SPECULAR_LAYER && !VERTEX_LIGHTS
+  // The lights' texels in the mirror direction (mirroredLightTexels), the same for every light.
+  vec3 mirrorDirection = rotateAboutY(reflect(-v, n), specularRotation);
+  vec3 texels = max(textureLod(specularCube, mirrorDirection, 0.0).rgb - textureLod(residualSpecularCube, mirrorDirection, 0.0).rgb,
+                    vec3(0.0));
+#endif
   // The lights' shadows: this pixel's texel of the frame's shadow mask (SHADOW_MASK 1, shadow.glsl),
   // the coarser mask upsampled (SHADOW_MASK 2), or the maps read here where the light's term is
   // not 0.
@@ -89,7 +101,13 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 trunc
 #if VERTEX_LIGHTS
     vec3 lit = (1.0 - lobes.metallic) * lobes.baseColor / kPi * lightRadiance[i] * vertexLightIrradiance[i];
 #else
-    vec3 lit = diskLightRadiance(lobes, n, v, l, lightRadiance[i], lightCosSin[i], lightMirrorEdgeCos[i]);
+#if SPECULAR_LAYER
+    vec3 mirrored = mix(mirroredDiskRadiance(lobes, n, v, l, lightRadiance[i], lightMirrorEdgeCos[i]),
+                        mirroredLightTexels(lobes, n, v, l, texels, lightTexelWindowCos[i]), lightMirrorTexels[i]);
+#else
+    vec3 mirrored = vec3(0.0);
+#endif
+    vec3 lit = diskLightRadianceMirroring(lobes, n, v, l, lightRadiance[i], lightCosSin[i], mirrored);
 #endif
 #if SHADOW_MASK
     lit *= visibility[i];

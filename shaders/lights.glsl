@@ -139,9 +139,22 @@ vec3 mirroredDiskRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance
   return splitSumKaris(lobes.f0, lobes.f90, schlickWeights(NoV)) * radiance * inside;
 }
 
-// cosSin: cos r and sin r; edgeCos: cos(1.1 r) and cos(0.9 r) (uniforms of the light, so that a
-// pixel evaluates no trigonometry of r).
-vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, vec2 cosSin, vec2 edgeCos) {
+// The light's own texels in place of the uniform disk (the lights modes, where the map's chain
+// and the residual's both exist): `texels`, the map's level 0 minus the residual's in the
+// reflected direction, is what the extracted lights carry there, texel by texel (residual + lights
+// = the map), so a near-mirror reflects the lamp's real shape, not a disk of its spread (mirror
+// sphere under studio). Only light i's neighbourhood counts, windowCos = (cos(2 r + 1 deg),
+// cos(1.5 r + 1 deg)), which holds its region's texels (the region, ringing included, spreads
+// beyond the disk of the same spread) and not another light's.
+vec3 mirroredLightTexels(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 texels, vec2 windowCos) {
+  vec3 r = reflect(-v, n);
+  float inside = smoothstep(windowCos.x, windowCos.y, dot(r, l));
+  return splitSumKaris(lobes.f0, lobes.f90, schlickWeights(dot(n, v))) * texels * inside;
+}
+
+// diskLightRadiance (below) with the near-mirror's reflection `mirrored` given: mirroredDiskRadiance
+// or mirroredLightTexels.
+vec3 diskLightRadianceMirroring(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, vec2 cosSin, vec3 mirrored) {
   if (dot(n, v) <= 0.0) return vec3(0.0);
   float irradiance = sunDiskIrradiance(dot(n, l), cosSin.y);
   vec3 result = irradiance > 0.0 ? brdfDiffuse(lobes, v, l) * radiance * irradiance : vec3(0.0);
@@ -151,9 +164,15 @@ vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, v
     float widened = min(sqrt(lobes.alpha * lobes.alpha + spread * spread), 1.0);
     vec3 lobe = irradiance > 0.0 ? brdfSpecular(lobes, n, v, l, widened) * radiance * irradiance : vec3(0.0);
     float towardsLobe = clamp(lobes.alpha / max(spread, 1e-6), 0.0, 1.0);
-    result += towardsLobe >= 1.0 ? lobe
-                                 : mix(mirroredDiskRadiance(lobes, n, v, l, radiance, edgeCos), lobe, towardsLobe);
+    result += towardsLobe >= 1.0 ? lobe : mix(mirrored, lobe, towardsLobe);
   }
 #endif
   return result;
+}
+
+// cosSin: cos r and sin r; edgeCos: cos(1.1 r) and cos(0.9 r) (uniforms of the light, so that a
+// pixel evaluates no trigonometry of r).
+vec3 diskLightRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, vec2 cosSin, vec2 edgeCos) {
+  return diskLightRadianceMirroring(lobes, n, v, l, radiance, cosSin,
+                                    mirroredDiskRadiance(lobes, n, v, l, radiance, edgeCos));
 }

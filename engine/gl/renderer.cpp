@@ -114,6 +114,7 @@ struct Renderer::Impl {
   int coverageRenders = -1;
   float rotationDegrees = 0.0f, intensity = 1.0f;
   int specularLevels = 1;
+  int specularBaseSize = 0;  // the chain's level 0 face, texels
 
   // `slots`: the texture slots the variant reads (material.glsl's TEXTURED), those bound for the
   // mesh; a slot not bound costs nothing, and untextured meshes keep the untextured shader.
@@ -191,6 +192,7 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
   impl_->rotationDegrees = env.rotationDegrees;
   impl_->intensity = env.intensity;
   impl_->specularLevels = int(env.specular.levels.size());
+  impl_->specularBaseSize = env.specular.levels.empty() ? 0 : env.specular.levels[0].size;
   // The lights modes read the residual's chain when there is one (drawn_lights.h).
   if (!env.residualSpecular.levels.empty()) impl_->residualSpecular = uploadCubeLevels(env.residualSpecular.levels);
   impl_->residualTruncation = !env.residualSpecular.levels.empty() && env.residualIrradiance.size > 0
@@ -291,6 +293,16 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
                   glm::vec2(std::cos(light.angularRadius), std::sin(light.angularRadius)));
       program.set(uniformElement("lightMirrorEdgeCos", i).c_str(),
                   glm::vec2(std::cos(1.1f * light.angularRadius), std::cos(0.9f * light.angularRadius)));
+      // A near-mirror reflects the light's own texels of the chain's level 0 where its disk is wider
+      // than one of those texels (90 degrees / face size), the uniform disk below that (the
+      // level's texels would blur it more than its shape matters).
+      const float window = glm::radians(1.0f);
+      const float texel = glm::half_pi<float>() / float(std::max(r.specularBaseSize, 1));
+      program.set(uniformElement("lightTexelWindowCos", i).c_str(),
+                  glm::vec2(std::cos(std::min(2.0f * light.angularRadius + window, glm::pi<float>())),
+                            std::cos(std::min(1.5f * light.angularRadius + window, glm::pi<float>()))));
+      program.set(uniformElement("lightMirrorTexels", i).c_str(),
+                  drawn.residualChain && light.angularRadius > texel ? 1.0f : 0.0f);
       program.set(uniformElement("lightIrradianceUp", i).c_str(),
                   light.radiance * uniformDiskIrradiance(light.direction.y, light.angularRadius));
       program.set(uniformElement("lightIrradiance", i).c_str(), light.irradiance);

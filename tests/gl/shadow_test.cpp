@@ -588,6 +588,57 @@ TEST_F(ShadowTest, OpenGroundTakesTheDiskIrradianceOfTheCore) {
   EXPECT_NEAR(luminance(glm::vec3(added)) / expected, 1.0, 0.01);
 }
 
+// A near-mirror reflects an extracted light's own shape in the lights modes (lights.glsl,
+// mirroredLightTexels): a lamp 20 x 5 degrees, which sun extraction makes one light, the disk of
+// its spread (7.4 degrees), over a mirror sphere. Where the mirror reflects the lamp, the lights
+// mode reads the map's chain minus the residual's, the lamp's texels, so it matches `full` (which
+// reads the map's chain): the reflected lamp's luminance, summed over the sphere's pixels that
+// reflect it in either frame, and pixel by pixel, within 1e-4 of the sum. A uniform disk in its
+// place (mirroredDiskRadiance, what it reflected before): the same sum to 0.5%, but pixel by pixel
+// off by 102% of it.
+TEST_F(ShadowTest, AMirrorReflectsTheLampsOwnShapeInTheLightsModes) {
+  const SunScene s{test::scratchDir() / "mirror_lamp", {}, sunDirection(-90.0f, 35.0f), 1.0f};
+  fs::create_directories(s.dir);
+  const Image map = latLongFromRadiance(1024, 512, 4, [](const glm::vec3& d) {
+    const float azimuth = glm::degrees(std::atan2(d.x, d.z)), elevation = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
+    const bool lamp = std::abs(azimuth + 40.0f) < 10.0f && std::abs(elevation - 30.0f) < 2.5f;
+    return glm::vec3(kSky + (lamp ? 300.0f : 0.0f));
+  });
+  writeExr(s.dir / "lamp.exr", map, {.pixelType = PixelType::Float, .envmap = EnvmapLayout::LatLong});
+  const nlohmann::json scene = {
+      {"models", {{{"shape", "sphere"}, {"translation", {0.0, 1.0, 0.0}}, {"scale", 1.0},
+                   {"material", {{"baseColor", {1.0, 1.0, 1.0}}, {"metallic", 1.0}, {"roughness", 0.0}}}}}},
+      {"ground", {{"height", 0.0}, {"size", 6.0}}},
+      {"environment", {{"file", "lamp.exr"}}},
+      {"camera", {{"position", {0.0, 1.6, 3.0}}, {"target", {0.0, 1.0, 0.0}}, {"yfov", 40.0}}},
+      {"width", kWidth},
+      {"height", kHeight}};
+  std::ofstream(s.dir / "scene.json") << scene.dump(2);
+  InMemoryBakeOptions options;
+  options.aoRays = 16;
+  const BakedScene bake = loadOrBakeScene(s.dir / "scene.json", options);
+  ASSERT_EQ(bake.env.lights.suns.size(), 1u);
+  std::cout << "the lamp as a light: angular radius " << glm::degrees(bake.env.lights.suns[0].angularRadius) << " degrees\n";
+  Renderer renderer(bake);
+  const Image full = renderEngine(renderer, bake, ShadingMode::Full);
+  const Image lights = renderEngine(renderer, bake, ShadingMode::Lights);
+  // The sphere's pixels reflecting the lamp: 20 times the sky's radiance in either frame.
+  double sumFull = 0.0, sumLights = 0.0, sumDifference = 0.0;
+  int pixels = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const float a = luminance(glm::vec3(full.at(x, y))), b = luminance(glm::vec3(lights.at(x, y)));
+      if (full.at(x, y).a == 0.0f || std::max(a, b) < 20.0f * kSky) continue;
+      sumFull += a, sumLights += b, sumDifference += std::abs(a - b);
+      ++pixels;
+    }
+  std::cout << pixels << " pixels reflect the lamp: lights / full " << sumLights / sumFull << ", sum |lights - full| / sum full "
+            << sumDifference / sumFull << '\n';
+  EXPECT_GT(pixels, 20);
+  EXPECT_NEAR(sumLights / sumFull, 1.0, 0.03);
+  EXPECT_LT(sumDifference / sumFull, 0.15);
+}
+
 // K below the number of suns: a sun not drawn as a light keeps its diffuse light in the residual's
 // SH9 (SH is linear). With K = 0 the open ground, far from the sphere, gets the map's SH9 irradiance
 // (sky + sun) from the residual alone: within 2% of K = 1's residual + disk light.
