@@ -66,8 +66,9 @@ std::vector<EnvironmentLight> medianCutLights(const EnvironmentMap& map, int lev
 // The bake's median-cut levels unless told otherwise: 16 regions.
 inline constexpr int kDefaultMedianCutLevels = 4;
 
-// The automatic threshold's peak-to-mean ratio k (automaticSunThreshold).
-inline constexpr float kSunPeakToMean = 64.0f;
+// The automatic threshold's peak-to-mean ratio k (automaticSunThreshold). 32 since 2026-12-07
+// (64 before): docs/dominant-lights.md "The automatic threshold" gives the demo's measurements.
+inline constexpr float kSunPeakToMean = 32.0f;
 // The widest sun, 10 degrees in radians (SunExtractionOptions::maxAngularRadius).
 inline constexpr float kMaxSunAngularRadius = 0.17453293f;
 
