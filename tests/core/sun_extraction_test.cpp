@@ -356,7 +356,8 @@ TEST(SunExtraction, KeepsTheBrightestAboveTheEnergyFloorAndLeavesTheOthersWhole)
 
 // A bright cap 20 degrees wide (bridge.exr's bright zenith, above its threshold, spreads like a
 // 32 degree disk) is no compact source: it stays in the residual unless the limit is raised.
-// (The automatic threshold would not cut it: it covers 3% of the sphere, more than 1/64.)
+// (It covers 3% of the sphere, just under 1/k = 1/32, so the automatic threshold may now cut it:
+// the width limit is what keeps it whole.)
 TEST(SunExtraction, AWideBrightCapIsNoSun) {
   const SunDisk cap{.direction = fromSpherical(60.0f, 0.0f), .angularRadius = glm::radians(20.0f),
                     .radiance = glm::vec3(200.0f)};
