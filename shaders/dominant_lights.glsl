@@ -11,9 +11,9 @@ uniform vec3 lightRadiance[kMaxEngineLights];
 // cos(1.1 r), cos(0.9 r): the edge of a mirror's reflected disk (mirroredDiskRadiance).
 uniform vec2 lightMirrorEdgeCos[kMaxEngineLights];
 // cos(2 r + 1 deg), cos(1.5 r + 1 deg): the window of a mirror's reflected texels of the light
-// (mirroredLightTexels), read where lightMirrorTexels is 1 (else 0: the uniform disk,
-// mirroredDiskRadiance): where the residual has its own chain, so that the map's chain minus the
-// residual's is the lights' texels, and the light is wider than a texel of the chain's level 0.
+// (mirroredDiskRadiance of the texels), read where lightMirrorTexels is 1 (else 0: the uniform
+// disk): where the residual has its own chain, so that the map's chain minus the residual's is
+// the lights' texels, and the light is wider than a texel of the chain's level 0.
 uniform vec2 lightTexelWindowCos[kMaxEngineLights];
 uniform float lightMirrorTexels[kMaxEngineLights];
 // The light's irradiance on an upward normal, lightRadiance uniformDiskIrradiance(l.y, r) (the
@@ -82,7 +82,8 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 trunc
   BrdfLobes lobes = brdfLobes(m.baseColor, m.metallic, m.roughness, SPECULAR_WEIGHT, specularColor);
   vec3 irradianceUp = vec3(0.0);
 #if SPECULAR_LAYER && !VERTEX_LIGHTS
-  // The lights' texels in the mirror direction (mirroredLightTexels), the same for every light.
+  // The lights' texels in the mirror direction (lights.glsl, mirroredDiskRadiance), the same for
+  // every light.
   vec3 mirrorDirection = rotateAboutY(reflect(-v, n), specularRotation);
   vec3 texels = max(textureLod(specularCube, mirrorDirection, 0.0).rgb - textureLod(residualSpecularCube, mirrorDirection, 0.0).rgb,
                     vec3(0.0));
@@ -102,8 +103,9 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 trunc
     vec3 lit = (1.0 - lobes.metallic) * lobes.baseColor / kPi * lightRadiance[i] * vertexLightIrradiance[i];
 #else
 #if SPECULAR_LAYER
-    vec3 mirrored = mix(mirroredDiskRadiance(lobes, n, v, l, lightRadiance[i], lightMirrorEdgeCos[i]),
-                        mirroredLightTexels(lobes, n, v, l, texels, lightTexelWindowCos[i]), lightMirrorTexels[i]);
+    // lightMirrorTexels is 0 or 1: the disk's radiance and edge, or the texels and their window.
+    vec3 mirrored = mirroredDiskRadiance(lobes, n, v, l, mix(lightRadiance[i], texels, lightMirrorTexels[i]),
+                                         mix(lightMirrorEdgeCos[i], lightTexelWindowCos[i], lightMirrorTexels[i]));
 #else
     vec3 mirrored = vec3(0.0);
 #endif

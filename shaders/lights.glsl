@@ -132,6 +132,15 @@ float uniformDiskIrradiance(float cosTheta, float angularRadius) {
 // direction's neighbourhood inside it (an edge a fifth of the radius wide), blended towards the
 // widened lobe as alpha grows to tan(r) / 2. Above that, as before.
 // edgeCos: cos(1.1 r) and cos(0.9 r), the edge (a light's lightMirrorEdgeCos, per light).
+//
+// The lights modes may pass the light's own texels as `radiance` instead of the uniform disk
+// (dominant_lights.glsl, where the map's chain and the residual's both exist): the map's level 0
+// minus the residual's in the reflected direction, which is what the extracted lights carry there,
+// texel by texel (residual + lights = the map), so a near-mirror reflects the lamp's real shape,
+// not a disk of its spread (mirror sphere under studio). The edge is then a window around light
+// i, edgeCos = (cos(2 r + 1 deg), cos(1.5 r + 1 deg)) (lightTexelWindowCos), which holds its
+// region's texels (the region, ringing included, spreads beyond the disk of the same spread) and
+// not another light's.
 vec3 mirroredDiskRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, vec2 edgeCos) {
   float NoV = dot(n, v);
   vec3 r = reflect(-v, n);
@@ -139,21 +148,8 @@ vec3 mirroredDiskRadiance(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance
   return splitSumKaris(lobes.f0, lobes.f90, schlickWeights(NoV)) * radiance * inside;
 }
 
-// The light's own texels in place of the uniform disk (the lights modes, where the map's chain
-// and the residual's both exist): `texels`, the map's level 0 minus the residual's in the
-// reflected direction, is what the extracted lights carry there, texel by texel (residual + lights
-// = the map), so a near-mirror reflects the lamp's real shape, not a disk of its spread (mirror
-// sphere under studio). Only light i's neighbourhood counts, windowCos = (cos(2 r + 1 deg),
-// cos(1.5 r + 1 deg)), which holds its region's texels (the region, ringing included, spreads
-// beyond the disk of the same spread) and not another light's.
-vec3 mirroredLightTexels(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 texels, vec2 windowCos) {
-  vec3 r = reflect(-v, n);
-  float inside = smoothstep(windowCos.x, windowCos.y, dot(r, l));
-  return splitSumKaris(lobes.f0, lobes.f90, schlickWeights(dot(n, v))) * texels * inside;
-}
-
-// diskLightRadiance (below) with the near-mirror's reflection `mirrored` given: mirroredDiskRadiance
-// or mirroredLightTexels.
+// diskLightRadiance (below) with the near-mirror's reflection `mirrored` given (mirroredDiskRadiance
+// of the disk's radiance or of the light's texels).
 vec3 diskLightRadianceMirroring(BrdfLobes lobes, vec3 n, vec3 v, vec3 l, vec3 radiance, vec2 cosSin, vec3 mirrored) {
   if (dot(n, v) <= 0.0) return vec3(0.0);
   float irradiance = sunDiskIrradiance(dot(n, l), cosSin.y);

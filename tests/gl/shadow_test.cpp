@@ -589,12 +589,12 @@ TEST_F(ShadowTest, OpenGroundTakesTheDiskIrradianceOfTheCore) {
 }
 
 // A near-mirror reflects an extracted light's own shape in the lights modes (lights.glsl,
-// mirroredLightTexels): a lamp 20 x 5 degrees, which sun extraction makes one light, the disk of
-// its spread (7.4 degrees), over a mirror sphere. Where the mirror reflects the lamp, the lights
-// mode reads the map's chain minus the residual's, the lamp's texels, so it matches `full` (which
-// reads the map's chain): the reflected lamp's luminance, summed over the sphere's pixels that
-// reflect it in either frame, and pixel by pixel, within 1e-4 of the sum. A uniform disk in its
-// place (mirroredDiskRadiance, what it reflected before): the same sum to 0.5%, but pixel by pixel
+// mirroredDiskRadiance of the light's texels): a lamp 20 x 5 degrees, which sun extraction makes
+// one light, the disk of its spread (7.4 degrees), over a mirror sphere. Where the mirror reflects
+// the lamp, the lights mode reads the map's chain minus the residual's, the lamp's texels, so it
+// matches `full` (which reads the map's chain): the reflected lamp's luminance, summed over the
+// sphere's pixels that reflect it in either frame, and pixel by pixel, within 1e-4 of the sum. A
+// uniform disk in its place (what it reflected before): the same sum to 0.5%, but pixel by pixel
 // off by 102% of it.
 TEST_F(ShadowTest, AMirrorReflectsTheLampsOwnShapeInTheLightsModes) {
   const SunScene s{test::scratchDir() / "mirror_lamp", {}, sunDirection(-90.0f, 35.0f), 1.0f};
