@@ -265,6 +265,43 @@ TEST(SunExtraction, LightsPlusResidualIrradianceIsTheMapsOnSky) {
   expectIrradianceOfLightsPlusResidual(map, extracted, 0.005);
 }
 
+// Every bundled map with lights at k = 32 (docs/dominant-lights.md, "Lights plus the residual on
+// the bundled maps"): over the sphere the lights plus the residual are the map's irradiance to
+// within 0.2% on average, luminance, at 1,000 normals (studio 0.15%, the others under 0.07%). The
+// worst normals are those with a light straddling their horizon: there a uniform disk of the
+// light's spread stands for a region that is no disk (studio's rectangular softbox: 3.4% at the
+// worst of every tenth normal), and the brute force's texel centres make a sun of two texels a
+// step (park's sun on a normal's horizon: 1.6% at one of fibonacciSphere(100)). Bounded at 5%.
+TEST(SunExtraction, LightsPlusResidualIrradianceIsTheMapsOnEveryBundledMap) {
+  const std::filesystem::path folder = test::assetsDir() / "hdri";
+  if (!std::filesystem::is_directory(folder)) GTEST_SKIP() << "assets not fetched: " << folder;
+  const std::vector<glm::vec3> normals = fibonacciSphere(1000);
+  int withLights = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".exr") continue;
+    const EnvironmentMap map = loadEnvironmentMap(entry.path());
+    const ExtractedSuns extracted = extractSuns(map);
+    if (extracted.suns.empty()) continue;
+    ++withLights;
+    const std::string name = entry.path().filename().string();
+    const std::vector<glm::vec3> whole = bruteForceIrradiance(map, normals);
+    const std::vector<glm::vec3> rest = bruteForceIrradiance(residualMap(map, extracted), normals);
+    double sum = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < normals.size(); ++i) {
+      glm::vec3 e = rest[i];
+      for (const EnvironmentLight& sun : extracted.suns) e += sunIrradiance(sun, normals[i]);
+      const double error = std::abs(double(luminance(e)) - luminance(whole[i])) / luminance(whole[i]);
+      sum += error;
+      if (i % 10 == 0) worst = std::max(worst, error);  // every tenth: 100 normals
+    }
+    std::printf("%-16s %zu light(s): mean relative error %.4f%%, worst of 100 normals %.4f%%\n", name.c_str(),
+                extracted.suns.size(), 100.0 * sum / double(normals.size()), 100.0 * worst);
+    EXPECT_LT(sum / double(normals.size()), 0.002) << name;
+    EXPECT_LT(worst, 0.05) << name;
+  }
+  EXPECT_GE(withLights, 3);
+}
+
 TEST(SunExtraction, ASunAcrossTheLongitudeSeamIsOneLight) {
   // Longitude 180 degrees (-Z) is u = 0 = 1: the disk covers the first and the last columns.
   const EnvironmentMap map =
