@@ -244,21 +244,26 @@ void forEachFrontHit(const RayScene& scene, const VertexSampler& sampler, const 
   }
 }
 
-// One bounce of interreflected transfer at a vertex (VisibilitySettings::bounces): albedo / N
-// times the sum over its blocked rays of the previous bounce's transfer at the front-face hit
-// (weighted by how much the ray is blocked when there is a falloff).
+// One bounce of interreflected transfer at a vertex (VisibilitySettings::bounces): 1 / N times the
+// sum over its blocked rays of the hit mesh's albedo times the previous bounce's transfer at the
+// front-face hit (weighted by how much the ray is blocked when there is a falloff). The transfer is
+// of irradiance (the shader multiplies by the vertex's own albedo / pi), so what a hit sends back
+// is its irradiance times its own albedo / pi, and the cosine-distributed rays' pi cancels that pi:
+// the reflector's albedo, as the suns' bounce takes it (vertexSunBounce). Until 2026-12-07 the
+// receiving vertex's albedo stood there: the same only where the two meshes' albedos are equal.
 ShBasis9 vertexBounce(const RayScene& scene, const VertexSampler& sampler,
                       const std::vector<std::vector<ShBasis9>>& previous, const std::vector<Mesh>& meshes,
-                      float albedo, const VisibilitySettings& settings, std::size_t& rays) {
+                      const VisibilitySettings& settings, std::size_t& rays) {
   ShBasis9 gathered{};
   forEachFrontHit(scene, sampler, meshes, settings, rays,
                   [&](float blocked, unsigned mesh, const std::uint32_t* corner, const float* w) {
+                    const float reflected = blocked * settings.albedo[mesh];
                     for (int c = 0; c < 3; ++c) {
                       const ShBasis9& t = previous[mesh][corner[c]];
-                      for (int k = 0; k < kShCoefficients; ++k) gathered[k] += blocked * w[c] * t[k];
+                      for (int k = 0; k < kShCoefficients; ++k) gathered[k] += reflected * w[c] * t[k];
                     }
                   });
-  for (float& t : gathered) t *= albedo / float(settings.rayCount);
+  for (float& t : gathered) t /= float(settings.rayCount);
   return gathered;
 }
 
@@ -445,7 +450,7 @@ std::vector<MeshVisibility> bakeVertexVisibility(const std::vector<Mesh>& meshes
     forEachVertexSampler(
         meshes, rings, settings, bounceRays,
         [&](std::size_t m, std::size_t v, const VertexSampler& sampler, std::size_t& vertexRays) {
-          next[m][v] = vertexBounce(scene, sampler, previous, meshes, settings.albedo[m], settings, vertexRays);
+          next[m][v] = vertexBounce(scene, sampler, previous, meshes, settings, vertexRays);
         },
         report);
     for (std::size_t m = 0; m < meshes.size(); ++m)

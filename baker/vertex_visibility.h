@@ -59,8 +59,10 @@ struct VisibilitySettings {
   bool areaSampling = false;
   // Interreflected transfer (Sloan, Kautz and Snyder 2002, section 5, "interreflected diffuse
   // transfer"): each bounce b adds, for every occluded ray of a vertex, the transfer of bounce
-  // b - 1 interpolated at the point the ray hits (front faces only), times albedo / pi, integrated
-  // with the same rays (albedo / N times the sum over the N rays). 0 = shadowed transfer only.
+  // b - 1 interpolated at the point the ray hits (front faces only), times the hit mesh's albedo
+  // / pi, integrated with the same rays (1 / N times the sum over the N rays of the hit's albedo
+  // times its transfer). The transfer is of irradiance (the shader multiplies by the vertex's own
+  // albedo), so the albedo that reflects is the hit's. 0 = shadowed transfer only.
   // The ambient occlusion and bent normals are not changed.
   int bounces = 0;
   // Diffuse albedo of each mesh, in [0, 1] (one grey value per mesh: the transfer vector is one

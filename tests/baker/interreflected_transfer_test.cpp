@@ -73,6 +73,33 @@ TEST(InterreflectedTransfer, BlackSurfacesReflectNothing) {
               0);
 }
 
+// The transfer is of irradiance (the vertex's own albedo multiplies it in the shader): what a
+// bounce adds at a vertex is the light its surroundings reflect, so it scales with the albedo of
+// the mesh its rays hit and not with its own. The floor near the wall gains in proportion to the
+// wall's albedo and the same whatever the floor's; the wall's gain near the floor, to the floor's.
+TEST(InterreflectedTransfer, TheReflectorsAlbedoScalesTheBounce) {
+  const std::vector<Mesh> meshes = floorAndWall();
+  const auto shadowed = bakeVertexVisibility(meshes, withBounces(0, {}));
+  const auto darkWall = bakeVertexVisibility(meshes, withBounces(1, {0.8f, 0.2f}));
+  const auto brightWall = bakeVertexVisibility(meshes, withBounces(1, {0.8f, 0.8f}));
+  const auto darkFloor = bakeVertexVisibility(meshes, withBounces(1, {0.2f, 0.8f}));
+  const std::size_t nearWall = 4 * 9;  // the floor vertex at (0.01, 0, 0)
+  const float t0 = shadowed[0].transfer[nearWall][0];
+  const float dark = darkWall[0].transfer[nearWall][0] - t0, bright = brightWall[0].transfer[nearWall][0] - t0;
+  ASSERT_GT(dark, 0.0f);
+  EXPECT_NEAR(bright / dark, 4.0f, 1e-3f);
+  // The floor's own albedo does not change what it receives.
+  EXPECT_FLOAT_EQ(darkFloor[0].transfer[nearWall][0], brightWall[0].transfer[nearWall][0]);
+  // The wall's lowest vertices receive from the floor: 0.2 against 0.8 of it.
+  double fromDarkFloor = 0.0, fromBrightFloor = 0.0;
+  for (std::size_t v = 0; v < meshes[1].vertexCount(); ++v) {
+    fromDarkFloor += darkFloor[1].transfer[v][0] - shadowed[1].transfer[v][0];
+    fromBrightFloor += brightWall[1].transfer[v][0] - shadowed[1].transfer[v][0];
+  }
+  ASSERT_GT(fromDarkFloor, 0.0);
+  EXPECT_NEAR(fromBrightFloor / fromDarkFloor, 4.0, 1e-3);
+}
+
 TEST(InterreflectedTransfer, LoneConvexSphereIsUnchanged) {
   const std::vector<Mesh> meshes = {toMesh(uvSphere(glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 12, 24), "sphere")};
   VisibilityStatistics statistics;
