@@ -18,6 +18,7 @@ BakedScene readBakeFolder(const fs::path& folder) {
   const fs::path sceneFile = requireBakeFile(folder / kBakeSceneFile);
   bake.env = readEnvironmentStages(folder, inputs);
   bake.scene = loadScene(sceneFile);
+  bake.transferBounces = inputs.transferBounces;
   requireBakedAttributes(bake.scene, sceneFile);
   return bake;
 }

@@ -17,6 +17,9 @@ struct BakedScene {
   EnvironmentStages env;
   // True when the scene was baked in memory rather than read from a folder.
   bool bakedInMemory = false;
+  // Interreflection bounces in the meshes' SH transfer (BakeInputs::transferBounces; 0 for an
+  // in-memory bake).
+  int transferBounces = 0;
 };
 
 // Reads an iblkit-bake output folder: bake.json, whose "version" must be kBakeVersion and which

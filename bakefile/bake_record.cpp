@@ -47,6 +47,12 @@ BakeInputs readBakeRecord(const fs::path& file) {
   if (version != kBakeVersion)
     fail(file, "version '" + version + "' is not supported (expected '" + kBakeVersion + "')");
   BakeInputs inputs;
+  if (record.contains("parameters") && record["parameters"].is_object() && record["parameters"].contains("bounces")) {
+    const json& bounces = record["parameters"]["bounces"];
+    if (!bounces.is_number_integer() || bounces.get<long long>() < 0 || bounces.get<long long>() > 16)
+      fail(file, "parameters.bounces: expected an integer in 0..16, got " + bounces.dump());
+    inputs.transferBounces = int(bounces.get<long long>());
+  }
   try {
     const json& recorded = record.at("inputs");
     inputs.scene = recorded.at("scene").get<std::string>();

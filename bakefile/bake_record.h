@@ -18,6 +18,10 @@ struct BakeInputs {
   std::string environmentFormat = "latlong";  // core/environment_map_file.h: parseProbeFormat
   float environmentRotationDegrees = 0.0f;    // about +Y, core/environment_map.h
   float environmentIntensity = 1.0f;
+  // Interreflection bounces in the SH transfer (parameters.bounces, iblkit-bake --bounces; 0 where
+  // the record has none: bakes from before it was read). The engine's diffuse multi-bounce fit
+  // stands in for interreflection only where the transfer holds none (docs/engine.md, `full`).
+  int transferBounces = 0;
 };
 
 // The bake.json document for `inputs`: "version" (kBakeVersion), "inputs" {scene, environment}
@@ -29,7 +33,8 @@ nlohmann::json makeBakeRecord(const BakeInputs& inputs, nlohmann::json parameter
 void writeBakeRecord(const std::filesystem::path& file, const nlohmann::json& record);
 
 // Reads the inputs back from `file` (a bake folder's bake.json). Throws Error("<file>: ...") for a
-// missing or invalid file, a "version" other than kBakeVersion, or missing input records.
+// missing or invalid file, a "version" other than kBakeVersion, missing input records, or a
+// parameters.bounces that is not an integer in 0..16.
 BakeInputs readBakeRecord(const std::filesystem::path& file);
 
 }  // namespace iblkit

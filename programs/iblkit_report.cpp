@@ -238,6 +238,9 @@ int main(int argc, char** argv) {
   app.add_option("--reference-light-samples", settings.referenceLightSamples,
                  "iblkit-trace --camera-light-samples of the reference passes (default 2)")
       ->check(CLI::Range(1, 64));
+  app.add_option("--bake-bounces", settings.bakeBounces,
+                 "iblkit-bake --bounces of the bakes: interreflection in the SH transfer (default 2)")
+      ->check(CLI::Range(0, 16));
   app.add_option("--bench", settings.benchFrames, "frames for each mode's median frame time (0: none)")
       ->check(CLI::Range(0, 1000));
   app.add_option("--samples", settings.engineSamples,

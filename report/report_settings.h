@@ -39,6 +39,9 @@ struct ReportSettings {
   // and 25-35% better than 4 since the environment samples follow the bilinear radiance and the
   // vertex's normal (docs/reference-tracer.md "Noise split").
   int referenceLightSamples = 2;
+  // iblkit-bake --bounces of the bakes: the SH transfer's interreflection (the engine's diffuse
+  // multi-bounce fit is off with it). 2: docs/report.md "Interreflected transfer" measured 0, 2.
+  int bakeBounces = 2;
   int benchFrames = 5;  // iblkit-view --bench frames for the frame time; 0: not measured
   // Engine frames shade this many samples per pixel (iblkit-view --samples N --sample-shading), so
   // their pixels average the shading over the pixel as the reference's pixel filter does; 1: one.

@@ -43,7 +43,8 @@ CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile
 
 StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs) {
   return {settings.binDir / "iblkit-bake",
-          {inputs.sceneFile.string(), "--env", inputs.environmentFile.string(), "-o", stageFile("bake")},
+          {inputs.sceneFile.string(), "--env", inputs.environmentFile.string(), "--bounces",
+           std::to_string(settings.bakeBounces), "-o", stageFile("bake")},
           inputs.files};
 }
 

@@ -54,6 +54,9 @@ const int mode = SHADING_MODE;
 const int layer = FRAME_LAYER;
 uniform vec3 cameraPosition;
 uniform bool isGround;
+// 1 where the baked SH transfer holds interreflection (iblkit-bake --bounces; renderer.cpp): the
+// diffuse multi-bounce fit (fullMaterialModelWith) would count that light twice.
+uniform int transferInterreflected;
 // The material's other factors (material.glsl has those its textures multiply), clamped to the
 // glTF ranges on the CPU (clampedToGltfRanges).
 uniform float specularWeight;
@@ -120,8 +123,11 @@ vec3 fullMaterialModelWith(samplerCube prefilteredCube, SurfaceMaterial m, vec3 
   vec3 specular = vec3(0.0);
 #endif
   // The baked transfer already holds the visibility (one bounce of shadowing); the multi-bounce
-  // fit adds the light interreflected inside the occluded region, as a ratio to plain AO.
-  vec3 bounce = multiBounceAoJimenez(ao, albedo) / max(ao, 1e-3);
+  // fit adds the light interreflected inside the occluded region, as a ratio to plain AO. Not
+  // where the transfer holds the interreflection itself (a bake with --bounces), except in
+  // full-gltf-ao, whose irradiance is SH9 times the asset's occlusion, not the transfer.
+  bool transferBounced = transferInterreflected != 0 && mode != kShadingModeFullGltfAo;
+  vec3 bounce = transferBounced ? vec3(1.0) : multiBounceAoJimenez(ao, albedo) / max(ao, 1e-3);
   // The diffuse base is weighted by what the dielectric layer leaves, with Fd's directional
   // average dielectricF0 A + B in place of the per-direction Schlick term (brdf.glsl).
   vec3 diffuse = diffuseWeight(lobes, dfg.xy) * albedo / kPi * irradiance * bounce;

@@ -105,6 +105,9 @@ struct Renderer::Impl {
   // component i: the first suns of the stages the renderer was made with); empty when some mesh
   // lacks it. The lights modes read it only while the drawn lights are these (bakedSunBounceFor).
   std::vector<glm::vec3> sunBounceDirections;
+  // The meshes' SH transfer holds interreflection (a bake with --bounces): mesh.frag's diffuse
+  // multi-bounce fit is then off where the transfer lights the surface.
+  bool transferInterreflected = false;
   std::unique_ptr<ShadowMaps> shadowMaps;  // made on the first shadowed frame
   std::unique_ptr<ShadowMask> shadowMask;  // made on the first shadowed single-sample frame
   int shadowMaskFrames = 0;
@@ -169,6 +172,7 @@ Renderer::Renderer(const BakedScene& bake, float textureAnisotropy) : impl_(std:
     impl_->constantNormal.push_back(hasConstantNormal(mesh));
   }
   impl_->materialTextures = MaterialTextures(bake.scene, textureAnisotropy);
+  impl_->transferInterreflected = bake.transferBounces > 0;
   glCreateVertexArrays(1, &impl_->emptyVertexArray);
   static_assert(kMaxEngineLights <= 4, "_SUNBOUNCE holds four suns");
   const bool sunBounce = std::all_of(impl_->meshes.begin(), impl_->meshes.end(),
@@ -284,6 +288,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     program.set("latLongIntensity", r.intensity);
     program.set("specularRotation", inverseRotation(settings.envRotationDegrees));
     program.set("specularLevels", float(r.specularLevels));
+    program.set("transferInterreflected", int(r.transferInterreflected));
     if (!lightsMode) return;
     for (std::size_t i = 0; i < drawn.lights.size(); ++i) {
       const EnvironmentLight& light = drawn.lights[i];

@@ -128,6 +128,22 @@ TEST(BakeRecord, ARelativeEnvironmentIsRelativeToTheBakeAndNoneMeansNoStages) {
             (folder / kBakeRecordFile).string() + ": the bake has no environment stages (bake with --env)");
 }
 
+// The SH transfer's interreflection bounces (the baker's parameters.bounces) come back as
+// transferBounces, which decides the engine's multi-bounce fit; a bake without them reads 0, and
+// anything but an integer in 0..16 is an error naming the file.
+TEST(BakeRecord, TheTransfersBouncesAreReadBackAndChecked) {
+  const fs::path file = test::scratchDir() / "bake_record_bounces.json";
+  writeBakeRecord(file, makeBakeRecord(inputsOf("map.exr"), {{"bounces", 3}}));
+  EXPECT_EQ(readBakeRecord(file).transferBounces, 3);
+  writeBakeRecord(file, makeBakeRecord(inputsOf("map.exr"), {{"ao_rays", 7}}));
+  EXPECT_EQ(readBakeRecord(file).transferBounces, 0);
+  for (const nlohmann::json& bad : {nlohmann::json(-1), nlohmann::json(17), nlohmann::json(1.5), nlohmann::json("2")}) {
+    writeBakeRecord(file, makeBakeRecord(inputsOf("map.exr"), {{"bounces", bad}}));
+    EXPECT_EQ(test::errorMessage([&] { readBakeRecord(file); }),
+              file.string() + ": parameters.bounces: expected an integer in 0..16, got " + bad.dump());
+  }
+}
+
 // fuzz/fuzz_bake_record found it: a version that is not a string escaped as nlohmann's type_error,
 // a message naming no file.
 TEST(BakeRecord, AVersionThatIsNotAStringIsAnErrorNamingTheFile) {

@@ -445,6 +445,47 @@ TEST(Renderer, LambertProgramsGiveTheFrameOfTheSpecularPrograms) {
   }
 }
 
+// A bake whose SH transfer holds interreflection (BakedScene::transferBounces > 0, iblkit-bake
+// --bounces) turns the diffuse multi-bounce fit off where the transfer lights the surface: `full`
+// and `full-both-ao` then give albedo / pi times the transfer's irradiance alone, darker where AO
+// is below 1 (the sphere's underside over the ground) and the same where it is 1; `prt` (no fit)
+// and `full-gltf-ao` (SH9 times the asset's occlusion, no transfer) are unchanged.
+TEST(Renderer, AnInterreflectedTransferTurnsTheMultiBounceFitOff) {
+  test::glContext();
+  Material clay = lambertWhite();
+  clay.baseColor = glm::vec3(0.8f);
+  BakedScene plain = test::makeTestBake({.sphereMaterial = clay, .ground = true});
+  BakedScene bounced = plain;
+  bounced.transferBounces = 2;
+  Renderer a(plain), b(bounced);
+  RenderTarget target(kWidth, kHeight, 1);
+  const Camera camera = sceneCamera(plain.scene, float(kWidth) / float(kHeight));
+  for (ShadingMode mode : {ShadingMode::Full, ShadingMode::FullBothAo, ShadingMode::Prt, ShadingMode::FullGltfAo}) {
+    FrameSettings settings;
+    settings.mode = mode;
+    settings.drawSky = false;
+    a.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+    const Image withFit = target.readColor();
+    b.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+    const Image withoutFit = target.readColor();
+    checkGlErrors(std::string(shadingModeName(mode)));
+    int darker = 0, brighter = 0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        const float l0 = luminance(glm::vec3(withFit.at(x, y))), l1 = luminance(glm::vec3(withoutFit.at(x, y)));
+        if (l1 < l0 * (1.0f - 1e-3f)) ++darker;
+        if (l1 > l0 * (1.0f + 1e-5f) + 1e-7f) ++brighter;
+      }
+    std::cout << shadingModeName(mode) << ": " << darker << " pixels darker without the fit, " << brighter
+              << " brighter\n";
+    EXPECT_EQ(brighter, 0) << shadingModeName(mode);
+    if (mode == ShadingMode::Full || mode == ShadingMode::FullBothAo)
+      EXPECT_GT(darker, 200) << shadingModeName(mode);
+    else
+      EXPECT_EQ(darker, 0) << shadingModeName(mode);
+  }
+}
+
 // Every mode gives finite radiance everywhere and light on every object pixel (the sphere touches
 // the ground, so the occluded modes are nearly black at the contact point, not black); occlusion only
 // darkens (sh-ao <= sh on average), and multisampling gives fractional coverage at the silhouette.

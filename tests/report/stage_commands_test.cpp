@@ -36,7 +36,12 @@ struct Fixture {
 TEST(StageCommands, OutputsAreUnderThePlaceholder) {
   Fixture fixture;
   const StageCommand bake = bakeCommand(fixture.settings, fixture.inputs);
-  EXPECT_EQ(stageArgv(bake, "/c", "/c/b").back(), "/c/b/bake");
+  const std::vector<std::string> bakeArgv = stageArgv(bake, "/c", "/c/b");
+  EXPECT_EQ(bakeArgv.back(), "/c/b/bake");
+  // The report's interreflection bounces (ReportSettings::bakeBounces) reach the baker.
+  const auto bounces = std::find(bakeArgv.begin(), bakeArgv.end(), "--bounces");
+  ASSERT_NE(bounces, bakeArgv.end());
+  EXPECT_EQ(*(bounces + 1), std::to_string(fixture.settings.bakeBounces));
   const StageCommand trace = traceCommand(fixture.settings, fixture.inputs, 0);
   const std::vector<std::string> argv = stageArgv(trace, "/c", "/c/t");
   for (const char* file : {"/c/t/beauty.exr", "/c/t/depth.exr", "/c/t/normal.exr"})
@@ -108,6 +113,11 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   EXPECT_EQ(traceKey(engineOnly), traceKey(fixture.settings));
   EXPECT_EQ(stageKey(bakeCommand(engineOnly, fixture.inputs)),
             stageKey(bakeCommand(fixture.settings, fixture.inputs)));
+  // The bake's interreflection bounces are the bake's, not the reference's.
+  ReportSettings bounced = fixture.settings;
+  bounced.bakeBounces = 0;
+  EXPECT_NE(stageKey(bakeCommand(bounced, fixture.inputs)), stageKey(bakeCommand(fixture.settings, fixture.inputs)));
+  EXPECT_EQ(traceKey(bounced), traceKey(fixture.settings));
 }
 
 TEST(StageCommands, TheScenesBytesAreInTheBakeAndTraceKeys) {
