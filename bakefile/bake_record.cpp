@@ -45,12 +45,13 @@ BakeInputs readBakeRecord(const fs::path& file) {
   if (record.is_object() && record.contains("version"))
     version = record["version"].is_string() ? record["version"].get<std::string>() : record["version"].dump();
   if (version != kBakeVersion)
-    fail(file, "version '" + version + "' is not supported (expected '" + kBakeVersion + "')");
+    fail(file, "version '" + printableExcerpt(version) + "' is not supported (expected '" + kBakeVersion + "')");
   BakeInputs inputs;
   if (record.contains("parameters") && record["parameters"].is_object() && record["parameters"].contains("bounces")) {
     const json& bounces = record["parameters"]["bounces"];
-    if (!bounces.is_number_integer() || bounces.get<long long>() < 0 || bounces.get<long long>() > 16)
-      fail(file, "parameters.bounces: expected an integer in 0..16, got " + bounces.dump());
+    if (!bounces.is_number_integer() || bounces.get<long long>() < 0 || bounces.get<long long>() > kMaxTransferBounces)
+      fail(file, "parameters.bounces: expected an integer in 0.." + std::to_string(kMaxTransferBounces) + ", got " +
+                     printableExcerpt(bounces.dump()));
     inputs.transferBounces = int(bounces.get<long long>());
   }
   try {

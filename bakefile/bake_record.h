@@ -9,6 +9,10 @@
 
 namespace iblkit {
 
+// The most interreflection bounces a bake's SH transfer may hold (iblkit-bake --bounces, the
+// report's --bake-bounces, and what bake.json's parameters.bounces may say).
+inline constexpr int kMaxTransferBounces = 16;
+
 // What a bake was made from.
 struct BakeInputs {
   std::filesystem::path scene;
@@ -34,7 +38,7 @@ void writeBakeRecord(const std::filesystem::path& file, const nlohmann::json& re
 
 // Reads the inputs back from `file` (a bake folder's bake.json). Throws Error("<file>: ...") for a
 // missing or invalid file, a "version" other than kBakeVersion, missing input records, or a
-// parameters.bounces that is not an integer in 0..16.
+// parameters.bounces that is not an integer in 0..kMaxTransferBounces.
 BakeInputs readBakeRecord(const std::filesystem::path& file);
 
 }  // namespace iblkit

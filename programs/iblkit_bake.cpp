@@ -332,7 +332,7 @@ int main(int argc, char** argv) {
   app.add_flag("--ao-area", options.aoArea,
                "sample ray origins over each vertex's one-ring (large triangles)");
   app.add_option("--bounces", options.bounces, "interreflection bounces added to the SH transfer")
-      ->check(CLI::Range(0, 16))
+      ->check(CLI::Range(0, iblkit::kMaxTransferBounces))
       ->capture_default_str();
   app.add_option("--seed", options.seed, "sample scrambling seed")->capture_default_str();
   app.add_option("--env-format", options.envFormat, "environment layout")

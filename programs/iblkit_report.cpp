@@ -18,6 +18,7 @@
 #include "core/environment_map_file.h"
 #include "core/file_io.h"
 #include "core/usage_error.h"
+#include "bakefile/bake_record.h"
 #include "report/report_case.h"
 #include "report/map_kind.h"
 #include "report/report_claims.h"
@@ -240,7 +241,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 64));
   app.add_option("--bake-bounces", settings.bakeBounces,
                  "iblkit-bake --bounces of the bakes: interreflection in the SH transfer (default 2)")
-      ->check(CLI::Range(0, 16));
+      ->check(CLI::Range(0, kMaxTransferBounces));
   app.add_option("--bench", settings.benchFrames, "frames for each mode's median frame time (0: none)")
       ->check(CLI::Range(0, 1000));
   app.add_option("--samples", settings.engineSamples,

@@ -142,6 +142,11 @@ TEST(BakeRecord, TheTransfersBouncesAreReadBackAndChecked) {
     EXPECT_EQ(test::errorMessage([&] { readBakeRecord(file); }),
               file.string() + ": parameters.bounces: expected an integer in 0..16, got " + bad.dump());
   }
+  // A long value is quoted cut, so the error stays one short line.
+  writeBakeRecord(file, makeBakeRecord(inputsOf("map.exr"), {{"bounces", std::string(10000, 'x')}}));
+  const std::string message = test::errorMessage([&] { readBakeRecord(file); });
+  EXPECT_LT(message.size(), file.string().size() + 120) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos);
 }
 
 // fuzz/fuzz_bake_record found it: a version that is not a string escaped as nlohmann's type_error,
