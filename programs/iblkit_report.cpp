@@ -242,6 +242,8 @@ int main(int argc, char** argv) {
   app.add_option("--bake-bounces", settings.bakeBounces,
                  "iblkit-bake --bounces of the bakes: interreflection in the SH transfer (default 2)")
       ->check(CLI::Range(0, kMaxTransferBounces));
+  app.add_flag("--bake-ao-area,!--no-bake-ao-area", settings.bakeAreaSampling,
+               "iblkit-bake --ao-area for the bakes: visibility over each vertex's share of the surface (default on)");
   app.add_option("--bench", settings.benchFrames, "frames for each mode's median frame time (0: none)")
       ->check(CLI::Range(0, 1000));
   app.add_option("--samples", settings.engineSamples,

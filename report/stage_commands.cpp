@@ -42,10 +42,13 @@ CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile
 }
 
 StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs) {
-  return {settings.binDir / "iblkit-bake",
-          {inputs.sceneFile.string(), "--env", inputs.environmentFile.string(), "--bounces",
-           std::to_string(settings.bakeBounces), "-o", stageFile("bake")},
-          inputs.files};
+  StageCommand command{settings.binDir / "iblkit-bake",
+                       {inputs.sceneFile.string(), "--env", inputs.environmentFile.string(), "--bounces",
+                        std::to_string(settings.bakeBounces)},
+                       inputs.files};
+  if (settings.bakeAreaSampling) command.arguments.push_back("--ao-area");
+  command.arguments.insert(command.arguments.end(), {"-o", stageFile("bake")});
+  return command;
 }
 
 StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, const std::string& mode) {

@@ -118,6 +118,15 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   bounced.bakeBounces = 0;
   EXPECT_NE(stageKey(bakeCommand(bounced, fixture.inputs)), stageKey(bakeCommand(fixture.settings, fixture.inputs)));
   EXPECT_EQ(traceKey(bounced), traceKey(fixture.settings));
+  // So is its area sampling (ReportSettings::bakeAreaSampling, on by default: --ao-area).
+  const std::vector<std::string> bakeArguments = bakeCommand(fixture.settings, fixture.inputs).arguments;
+  EXPECT_NE(std::find(bakeArguments.begin(), bakeArguments.end(), "--ao-area"), bakeArguments.end());
+  ReportSettings pointSampled = fixture.settings;
+  pointSampled.bakeAreaSampling = false;
+  const std::vector<std::string> pointArguments = bakeCommand(pointSampled, fixture.inputs).arguments;
+  EXPECT_EQ(std::find(pointArguments.begin(), pointArguments.end(), "--ao-area"), pointArguments.end());
+  EXPECT_NE(stageKey(bakeCommand(pointSampled, fixture.inputs)), stageKey(bakeCommand(fixture.settings, fixture.inputs)));
+  EXPECT_EQ(traceKey(pointSampled), traceKey(fixture.settings));
 }
 
 TEST(StageCommands, TheScenesBytesAreInTheBakeAndTraceKeys) {
