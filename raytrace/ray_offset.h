@@ -25,27 +25,32 @@ inline constexpr float kOffsetOrigin = 1.0f / 32.0f;
 inline constexpr float kOffsetFloatScale = 1.0f / 65536.0f;
 inline constexpr float kOffsetIntScale = 256.0f;
 
+// p moved along the unit vector `direction` as offsetRayOrigin moves it along a normal, by
+// `fraction` of its offset: kOffsetFloatScale * fraction * d for coordinates below kOffsetOrigin,
+// kOffsetIntScale * fraction * d ulps for the others (truncated towards zero).
+inline glm::vec3 offsetPoint(glm::vec3 p, glm::vec3 direction, float fraction) {
+  glm::vec3 moved;
+  for (int axis = 0; axis < 3; ++axis) {
+    const float x = p[axis], n = direction[axis];
+    if (std::abs(x) < kOffsetOrigin) {
+      moved[axis] = x + kOffsetFloatScale * fraction * n;
+      continue;
+    }
+    // |ulps| <= 256 fraction. A float's bits are sign and magnitude, so adding to them moves a
+    // positive x up but a negative x down: flip the step for negative x. Unsigned arithmetic wraps
+    // exactly like the chapter's int arithmetic, without the undefined behaviour of signed overflow.
+    const auto ulps = static_cast<int32_t>(kOffsetIntScale * fraction * n);
+    const uint32_t step = static_cast<uint32_t>(x < 0.0f ? -ulps : ulps);
+    moved[axis] = std::bit_cast<float>(std::bit_cast<uint32_t>(x) + step);
+  }
+  return moved;
+}
+
 // Origin for a ray leaving the surface point p. `geometricNormal` is the unit normal of the
 // triangle's plane (not an interpolated shading normal) on the side the new ray travels into:
 // flip it for rays that go through the surface or leave it from the back. For best results p
 // is computed from the hit's barycentrics (RayScene::surfacePoint), not as origin + t * dir.
-inline glm::vec3 offsetRayOrigin(glm::vec3 p, glm::vec3 geometricNormal) {
-  glm::vec3 origin;
-  for (int axis = 0; axis < 3; ++axis) {
-    const float x = p[axis], n = geometricNormal[axis];
-    if (std::abs(x) < kOffsetOrigin) {
-      origin[axis] = x + kOffsetFloatScale * n;
-      continue;
-    }
-    // |ulps| <= 256. A float's bits are sign and magnitude, so adding to them moves a positive x
-    // up but a negative x down: flip the step for negative x. Unsigned arithmetic wraps exactly
-    // like the chapter's int arithmetic, without the undefined behaviour of signed overflow.
-    const auto ulps = static_cast<int32_t>(kOffsetIntScale * n);
-    const uint32_t step = static_cast<uint32_t>(x < 0.0f ? -ulps : ulps);
-    origin[axis] = std::bit_cast<float>(std::bit_cast<uint32_t>(x) + step);
-  }
-  return origin;
-}
+inline glm::vec3 offsetRayOrigin(glm::vec3 p, glm::vec3 geometricNormal) { return offsetPoint(p, geometricNormal, 1.0f); }
 
 // Relative size of rayEpsilon: 2^-16 of the largest coordinate is 128 of its ulps (an ulp of a
 // float of magnitude m is about m * 2^-23), the order of the origin offset above.

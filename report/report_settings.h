@@ -43,10 +43,9 @@ struct ReportSettings {
   // multi-bounce fit is off with it). 2: docs/report.md "Interreflected transfer" measured 0, 2.
   int bakeBounces = 2;
   // iblkit-bake --ao-area for the bakes: each vertex's visibility rays start over its share of the
-  // surface, not at the vertex (docs/baker.md "Area sampling"). The low-poly boxes of `pmndrs` and
-  // `tiles` rest on the ground and on each other: sampled at the vertex, the vertices on the
-  // contact lines see nothing (AO 0) and the engine's interpolation darkened whole faces
-  // (docs/report.md "Area sampling in the report's bakes").
+  // surface, not at the vertex (docs/baker.md "Area sampling"). The boxes of `pmndrs` and `tiles`
+  // are low-poly (about 100 vertices a box): a vertex at a box's corner or edge sees more or less
+  // than the face it is interpolated over (docs/report.md "Area sampling in the report's bakes").
   bool bakeAreaSampling = true;
   int benchFrames = 5;  // iblkit-view --bench frames for the frame time; 0: not measured
   // Engine frames shade this many samples per pixel (iblkit-view --samples N --sample-shading), so
