@@ -9,7 +9,7 @@
 #endif
 const int lightCount = LIGHT_COUNT;
 // SUN_BOUNCE: 1 where the program reads the suns' bounce the bake stored per vertex (_SUNBOUNCE,
-// mesh.vert; dominant_lights.glsl's groundBounceIrradiance), 0 where it estimates it.
+// mesh.vert's lightsBounceAt), 0 where it estimates it.
 #ifndef SUN_BOUNCE
 #define SUN_BOUNCE 0
 #endif

@@ -23,15 +23,14 @@ in VertexData {
   vec2 texcoord1;
   vec4 tangent;
   vec4 color;
-  // The lights modes' residual truncation (mesh.vert) of the front and of the back face.
-  vec3 residualTruncationFront;
-  vec3 residualTruncationBack;
+  // The lights modes' residual irradiance (mesh.vert) of the front and of the back face, and the
+  // lights' bounce.
+  vec3 residualIrradianceFront;
+  vec3 residualIrradianceBack;
+  vec3 lightsBounce;
 #if VERTEX_LIGHTS
   vec4 lightIrradianceFront;
   vec4 lightIrradianceBack;
-#endif
-#if SUN_BOUNCE
-  vec4 sunBounce;  // the baked suns' bounced light (mesh.vert)
 #endif
 }
 vertexIn;
@@ -211,13 +210,13 @@ void main() {
     vec3 bent = normalize(vertexIn.bentNormal);
     radiance = albedo / kPi * sphericalHarmonics9Irradiance(shRadiance, bent) * ao;
   } else if (mode == kShadingModeLights || mode == kShadingModeLightsShadowed) {
-    vec3 truncation = side < 0.0 ? vertexIn.residualTruncationBack : vertexIn.residualTruncationFront;
+    vec3 residualIrradiance = side < 0.0 ? vertexIn.residualIrradianceBack : vertexIn.residualIrradianceFront;
 #if VERTEX_LIGHTS
     vec4 lightIrradiance = side < 0.0 ? vertexIn.lightIrradianceBack : vertexIn.lightIrradianceFront;
 #else
     vec4 lightIrradiance = vec4(0.0);  // not read: the lights' terms are the pixel's
 #endif
-    radiance = dominantLightsModel(m, n, v, ao, truncation, lightIrradiance, vertexIn.position, geometric,
+    radiance = dominantLightsModel(m, n, v, ao, residualIrradiance, lightIrradiance, vertexIn.position, geometric,
                                    mode == kShadingModeLightsShadowed);
   } else if (mode == kShadingModeFullGltfAo) {
     // The asset's AO in place of the baked visibility: unshadowed SH9 irradiance times it, the

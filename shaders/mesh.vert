@@ -4,6 +4,7 @@
 
 #include "shared_constants.glsl"
 #include "environment.glsl"
+#include "sh9.glsl"
 #include "visibility_cone.glsl"
 #include "brdf.glsl"
 #include "light_directions.glsl"
@@ -64,6 +65,63 @@ vec3 residualTruncationAt(vec3 n) {
   return ao * textureLod(residualTruncationCube, rotateAboutY(axis, specularRotation), 0.0).rgb;
 }
 
+// The lights modes' residual diffuse irradiance at the vertex for the face of normal n (n or -n):
+// the baked transfer dotted with the residual's SH9 (PRT), plus SH9's truncation, at least 0
+// (dominant_lights.glsl). Per vertex, not per pixel: the PRT product is linear in the transfer, so
+// interpolating it equals interpolating the transfer (up to the clamp at 0), and llvmpipe pays for
+// every interpolated component of every pixel. Three components a face here against the transfer's
+// nine and the truncation's three: the lights modes' frames cost 4 to 6 ms less at 1280 x 720
+// (docs/benchmarks.md "The lights modes' per-vertex terms").
+uniform vec3 residualShRadiance[9];
+vec3 residualIrradianceAt(vec3 n) {
+  if (!residualTruncationRead) return vec3(0.0);
+  vec3 irradiance = irradiancePrtSloan(inTransfer012, inTransfer345, inTransfer678, residualShRadiance);
+  if (residualCubeCorrection != 0) irradiance = max(irradiance + residualTruncationAt(n), vec3(0.0));
+  return irradiance;
+}
+
+// A light's first bounce off what occludes the vertex (docs/dominant-lights.md, "Bounce light"),
+// per vertex for the same reason, and for the sum of the drawn lights at once (it is linear in
+// their irradiance). The reference's sunlit ground lights the object from below, and the object
+// lights the ground beside it; `full` holds some of it through its SH9 sun and the multi-bounce AO
+// fit, the lights' direct term not at all.
+// Without SUN_BOUNCE the occluders are taken as diffuse surfaces of the vertex's own albedo (the
+// assumption of Jimenez's multi-bounce fit) lit by the light unshadowed as an upward-facing
+// surface: radiance albedo E_up / pi, E_up the light's irradiance on an upward normal. Below the
+// vertex's horizon they count whole (the ground); above it by half (an object seen from beside or
+// below shows about as much shadowed as sunlit surface; 0, 0.5 and 1 were measured, docs/
+// dominant-lights.md). The vertex sees them over
+//   O_below = pi (1 - n_y) / 2 - sum_k t_k H_k   (>= 0),
+// the lower hemisphere's unoccluded irradiance weight (exact: a hemisphere's irradiance lies in
+// SH bands 0 and 1) minus the part the baked transfer t sees, H the SH9 of the lower hemisphere's
+// indicator (H_0 = 2 pi Y_0 = sqrt(pi), H_1 = -pi 0.488603, the others 0), and
+//   O_all = pi - t_0 sqrt(4 pi)   (>= 0),
+// the whole hemisphere's occluded weight (what the transfer sees of a constant radiance 1). This
+// returns O E_up / pi; the pixel multiplies by its albedo (dominant_lights.glsl).
+// With SUN_BOUNCE the bake's own estimate stands for the drawn lights: radiosity over the vertices
+// (baker/vertex_visibility.h bakeSunBounce), the occluders its visibility rays hit, each lit as its
+// normal, its sun shadow ray and its mesh's albedo say, with three bounces; E_i b_i for light i of
+// irradiance E_i, the reflected irradiance itself.
+uniform vec3 lightIrradianceUp[kMaxEngineLights];  // dominant_lights.glsl's
+uniform vec3 lightIrradiance[kMaxEngineLights];    // dominant_lights.glsl's
+const float kAboveHorizonBounce = 0.5;  // the weight of the occluders above the horizon (above)
+vec3 lightsBounceAt(vec3 n) {
+  if (!residualTruncationRead) return vec3(0.0);
+#if SUN_BOUNCE
+  vec3 bounced = vec3(0.0);
+  for (int i = 0; i < lightCount; ++i) bounced += lightIrradiance[i] * inSunBounce[i];
+  return bounced;
+#else
+  vec3 irradianceUp = vec3(0.0);
+  for (int i = 0; i < lightCount; ++i) irradianceUp += lightIrradianceUp[i];
+  float visibleBelow = inTransfer012.x * 1.7724539 - inTransfer012.y * 1.5349874;
+  float occludedBelow = max(0.5 * kPi * (1.0 - n.y) - visibleBelow, 0.0);
+  float occludedAll = max(kPi - inTransfer012.x * 3.5449077, 0.0);
+  float occluded = occludedBelow + kAboveHorizonBounce * max(occludedAll - occludedBelow, 0.0);
+  return occluded / kPi * irradianceUp;
+#endif
+}
+
 // The shadow mask's surface pass (shadow_surface.vert) computes the same gl_Position: its
 // fragments must be the lit pass's exactly.
 invariant gl_Position;
@@ -80,19 +138,17 @@ out VertexData {
   vec2 texcoord1;
   vec4 tangent;
   vec4 color;
-  // residualTruncationAt of the front face (the normal) and of a double-sided material's back face
-  // (the normal negated, mesh.frag's `side`).
-  vec3 residualTruncationFront;
-  vec3 residualTruncationBack;
+  // The lights modes: residualIrradianceAt of the front face (the normal) and of a double-sided
+  // material's back face (the normal negated, mesh.frag's `side`), and lightsBounceAt.
+  vec3 residualIrradianceFront;
+  vec3 residualIrradianceBack;
+  vec3 lightsBounce;
   // VERTEX_LIGHTS (lights.glsl): each drawn light's sunDiskIrradiance at the vertex, light i in
   // component i, of the front face and of a double-sided material's back face. Only in those
   // programs: the other programs interpolate nothing more per pixel.
 #if VERTEX_LIGHTS
   vec4 lightIrradianceFront;
   vec4 lightIrradianceBack;
-#endif
-#if SUN_BOUNCE
-  vec4 sunBounce;
 #endif
 }
 vertexOut;
@@ -116,13 +172,11 @@ void main() {
   vertexOut.texcoord1 = inTexcoord1;
   vertexOut.tangent = inTangent;
   vertexOut.color = inColor;
-#if SUN_BOUNCE
-  vertexOut.sunBounce = inSunBounce;
-#endif
   vec3 normal = normalize(inNormal);
-  vertexOut.residualTruncationFront = residualTruncationAt(normal);
+  vertexOut.residualIrradianceFront = residualIrradianceAt(normal);
   // A single-sided material's back faces are culled: no second lookup.
-  vertexOut.residualTruncationBack = doubleSided ? residualTruncationAt(-normal) : vertexOut.residualTruncationFront;
+  vertexOut.residualIrradianceBack = doubleSided ? residualIrradianceAt(-normal) : vertexOut.residualIrradianceFront;
+  vertexOut.lightsBounce = lightsBounceAt(normal);
 #if VERTEX_LIGHTS
   vertexOut.lightIrradianceFront = lightIrradianceAt(normal);
   vertexOut.lightIrradianceBack = doubleSided ? lightIrradianceAt(-normal) : vertexOut.lightIrradianceFront;

@@ -135,7 +135,7 @@ struct Renderer::Impl {
   // `constantNormal`: the mesh's normal is one (hasConstantNormal); with a Lambert material and no
   // normal texture the lights modes take the lights' irradiance from the vertices (VERTEX_LIGHTS).
   // `sunBounce`: the lights modes read the suns' bounce the bake stored for the drawn lights
-  // (bakedSunBounceFor; dominant_lights.glsl's SUN_BOUNCE), else they estimate it.
+  // (bakedSunBounceFor; mesh.vert's lightsBounceAt with SUN_BOUNCE), else they estimate it.
   const ShaderProgram& meshProgram(ShadingMode mode, FrameLayer layer, unsigned slots, AlphaMode alphaMode,
                                    int lightCount, int fromMask, bool specularLayer, bool constantNormal,
                                    bool sunBounce) {
@@ -274,7 +274,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   // SH9 radiance turned by the extra rotation (the scene's is in the baked coefficients).
   const SphericalHarmonics9 sh =
       settings.envRotationDegrees == 0.0f ? r.sh9 : rotateShAboutY(r.sh9, settings.envRotationDegrees);
-  // The residual cube's correction of the residual SH9 (dominant_lights.glsl, residual_truncation.h),
+  // The residual cube's correction of the residual SH9 (mesh.vert residualIrradianceAt, residual_truncation.h),
   // turned by the extra rotation like the specular chain; off without a cube (a bake from before
   // it) or without a residual chain.
   const bool cubeCorrection = lightsMode && drawn.residualChain && r.residualTruncation.id() != 0;

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
 #include "engine/gl/embedded_shaders.h"
 #include "gl/test_context.h"
 #include "support/error_capture.h"
@@ -44,15 +48,31 @@ TEST(ShaderProgram, UnknownShaderIsAnError) {
             "shaders/nope.frag: no such embedded shader");
 }
 
+// The 1-based line of shaders/mesh.frag whose text is `line` (its first), counted in the
+// embedded source from the last "#line L 0" directive before it; 0 if absent.
+int meshFragLineOf(const std::string& line) {
+  const std::string source = expandedShaderSource("mesh.frag");
+  const std::size_t at = source.find("\n" + line + "\n");
+  if (at == std::string::npos) return 0;
+  const std::size_t directive = source.rfind("\n#line ", at);
+  if (directive == std::string::npos) return int(std::count(source.begin(), source.begin() + long(at) + 1, '\n')) + 1;
+  int number = 0, file = -1;
+  if (std::sscanf(source.c_str() + directive + 1, "#line %d %d", &number, &file) != 2 || file != 0) return 0;
+  const std::size_t directiveEnd = source.find('\n', directive + 1);
+  return number + int(std::count(source.begin() + long(directiveEnd) + 1, source.begin() + long(at) + 1, '\n'));
+}
+
 // Compile errors name the original file and line, in the stage and in an included file (a define
-// breaks the source on purpose: mesh.frag line 53 reads SHADING_MODE, environment.glsl line 7
-// declares rotateAboutY; shadow_surface.vert, unlike mesh.vert, does not read SHADING_MODE, so
-// the error is the fragment stage's).
+// breaks the source on purpose: mesh.frag's `const int mode = SHADING_MODE;` reads SHADING_MODE,
+// environment.glsl line 7 declares rotateAboutY; shadow_surface.vert, unlike mesh.vert, does not
+// read SHADING_MODE, so the error is the fragment stage's).
 TEST(ShaderProgram, CompileErrorsNameTheShaderFileAndLine) {
   test::glContext();
+  const int modeLine = meshFragLineOf("const int mode = SHADING_MODE;");
+  ASSERT_GT(modeLine, 0);
   const std::string inStage = test::errorMessage(
       [] { ShaderProgram("shadow_surface.vert", "mesh.frag", "#define SHADING_MODE undefinedName"); });
-  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:53: ", 0), 0u) << inStage;
+  EXPECT_EQ(inStage.rfind("shaders/mesh.frag:" + std::to_string(modeLine) + ": ", 0), 0u) << inStage;
   const std::string inInclude =
       test::errorMessage([] { ShaderProgram("fullscreen.vert", "sky.frag", "#define rotateAboutY 1"); });
   EXPECT_EQ(inInclude.rfind("shaders/environment.glsl:7: ", 0), 0u) << inInclude;
