@@ -38,13 +38,14 @@ uniform bool doubleSided;  // mesh.frag's: the material's back faces are drawn
 #ifndef FRAME_LAYER
 #define FRAME_LAYER kFrameLayerRadiance
 #endif
-// The lights modes' residual diffuse (dominant_lights.glsl): what SH9 truncates of the residual's
-// irradiance, its brute-force irradiance cube minus its own SH9 irradiance (without the suns not
-// drawn, which residualShRadiance adds back), texel by texel (engine/gl/residual_truncation.h),
-// world space like the specular chain and turned by specularRotation with it; residualCubeCorrection
-// 0 without it.
-const bool residualTruncationRead = (SHADING_MODE == kShadingModeLights || SHADING_MODE == kShadingModeLightsShadowed) &&
-                                    FRAME_LAYER == kFrameLayerRadiance;
+// The lights modes' radiance programs evaluate their residual diffuse and the lights' bounce here
+// (residualIrradianceAt, lightsBounceAt); every other program leaves those outputs 0.
+const bool lightsModeTerms = (SHADING_MODE == kShadingModeLights || SHADING_MODE == kShadingModeLightsShadowed) &&
+                             FRAME_LAYER == kFrameLayerRadiance;
+// The residual's truncation: what SH9 truncates of the residual's irradiance, its brute-force
+// irradiance cube minus its own SH9 irradiance (without the suns not drawn, which
+// residualShRadiance adds back), texel by texel (engine/gl/residual_truncation.h), world space like
+// the specular chain and turned by specularRotation with it; residualCubeCorrection 0 without it.
 uniform int residualCubeCorrection;
 uniform vec2 specularRotation;
 layout(binding = kTextureUnitResidualIrradiance) uniform samplerCube residualTruncationCube;
@@ -59,7 +60,7 @@ layout(binding = kTextureUnitResidualIrradiance) uniform samplerCube residualTru
 // sphere this makes the residual's diffuse the cube's (axis n, AO 1), the `irradiance` mode's
 // accuracy to the mesh's interpolation (docs/dominant-lights.md).
 vec3 residualTruncationAt(vec3 n) {
-  if (!residualTruncationRead || residualCubeCorrection == 0) return vec3(0.0);
+  if (!lightsModeTerms || residualCubeCorrection == 0) return vec3(0.0);
   float ao = clamp(inAo, 0.0, 1.0);
   vec3 axis = visibilityConeAxis(inBentNormal, n, ao);
   return ao * textureLod(residualTruncationCube, rotateAboutY(axis, specularRotation), 0.0).rgb;
@@ -70,11 +71,12 @@ vec3 residualTruncationAt(vec3 n) {
 // (dominant_lights.glsl). Per vertex, not per pixel: the PRT product is linear in the transfer, so
 // interpolating it equals interpolating the transfer (up to the clamp at 0), and llvmpipe pays for
 // every interpolated component of every pixel. Three components a face here against the transfer's
-// nine and the truncation's three: the lights modes' frames cost 4 to 6 ms less at 1280 x 720
-// (docs/benchmarks.md "The lights modes' per-vertex terms").
+// nine and the truncation's three (and lightsBounceAt's three against the baked bounce's four):
+// the lights modes' frames cost about 13 ms less at 1280 x 720 on llvmpipe (docs/benchmarks.md
+// "The lights modes' per-vertex terms").
 uniform vec3 residualShRadiance[9];
 vec3 residualIrradianceAt(vec3 n) {
-  if (!residualTruncationRead) return vec3(0.0);
+  if (!lightsModeTerms) return vec3(0.0);
   vec3 irradiance = irradiancePrtSloan(inTransfer012, inTransfer345, inTransfer678, residualShRadiance);
   if (residualCubeCorrection != 0) irradiance = max(irradiance + residualTruncationAt(n), vec3(0.0));
   return irradiance;
@@ -102,11 +104,13 @@ vec3 residualIrradianceAt(vec3 n) {
 // (baker/vertex_visibility.h bakeSunBounce), the occluders its visibility rays hit, each lit as its
 // normal, its sun shadow ray and its mesh's albedo say, with three bounces; E_i b_i for light i of
 // irradiance E_i, the reflected irradiance itself.
-uniform vec3 lightIrradianceUp[kMaxEngineLights];  // dominant_lights.glsl's
-uniform vec3 lightIrradiance[kMaxEngineLights];    // dominant_lights.glsl's
+// Each drawn light's irradiance on an upward normal, lightRadiance uniformDiskIrradiance(l.y, r)
+// (the core's, computed once a frame), and at normal incidence (lights.json's `irradiance`).
+uniform vec3 lightIrradianceUp[kMaxEngineLights];
+uniform vec3 lightIrradiance[kMaxEngineLights];
 const float kAboveHorizonBounce = 0.5;  // the weight of the occluders above the horizon (above)
 vec3 lightsBounceAt(vec3 n) {
-  if (!residualTruncationRead) return vec3(0.0);
+  if (!lightsModeTerms) return vec3(0.0);
 #if SUN_BOUNCE
   vec3 bounced = vec3(0.0);
   for (int i = 0; i < lightCount; ++i) bounced += lightIrradiance[i] * inSunBounce[i];
