@@ -50,10 +50,13 @@ vec3 dominantLightsModel(SurfaceMaterial m, vec3 n, vec3 v, float ao, vec3 resid
   // the coarser mask upsampled (SHADOW_MASK 2), or the maps read here where the light's term is
   // not 0.
 #if SHADOW_MASK == 1
-  vec4 visibility = shadowed ? texelFetch(shadowMask, ivec2(gl_FragCoord.xy), 0) : vec4(1.0);
+  uvec2 packedVisibility = texelFetch(shadowMask, ivec2(gl_FragCoord.xy), 0).rg;
+  vec4 visibility = shadowed ? vec4(unpackUnorm2x16(packedVisibility.x), unpackUnorm2x16(packedVisibility.y)) : vec4(1.0);
 #elif SHADOW_MASK == 2
   vec2 depthGradient = vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
   vec4 visibility = shadowed ? upsampledShadowMask(depthGradient) : vec4(1.0);
+#elif SHADOW_MASK == 3
+  vec4 visibility = shadowed ? groundShadowVisibilities(position) : vec4(1.0);
 #endif
   for (int i = 0; i < lightCount; ++i) {
     vec3 l = lightDirection[i];

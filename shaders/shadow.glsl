@@ -15,8 +15,9 @@
 // receiver pixel's visibilities once, in a full-screen pass (shadow_mask.frag) over the visible
 // surfaces' positions and geometric normals (shadow_surface.frag), and the lit pass reads them back
 // (SHADOW_MASK 1: its own texel of a mask at the frame's resolution; 2: a coarser mask upsampled,
-// upsampledShadowMask). A software rasteriser shades in blocks of pixels, which the small triangles of
-// a dense mesh fill poorly; the full-screen pass fills them (docs/engine.md "Shadows").
+// upsampledShadowMask; 3: a planar ground's own visibility texture, groundShadowVisibilities). A
+// software rasteriser shades in blocks of pixels, which the small triangles of a dense mesh fill
+// poorly; the full-screen pass fills them (docs/engine.md "Shadows").
 
 #include "light_directions.glsl"
 
@@ -24,7 +25,7 @@
 #define SHADOW_MASK 0
 #endif
 // The frame's shadow mask: light i's visibility in component i (shadow_mask.frag).
-layout(binding = kTextureUnitShadowMask) uniform sampler2D shadowMask;
+layout(binding = kTextureUnitShadowMask) uniform usampler2D shadowMask;
 // SHADOW_MASK 2: the mask is coarser than the frame. Its pixels' window depths (the surface pass's
 // depth buffer; 1 where no receiver was drawn), and mask pixels per frame pixel along x and y.
 layout(binding = kTextureUnitShadowMaskDepth) uniform sampler2D shadowMaskDepth;
@@ -47,29 +48,27 @@ vec4 upsampledShadowMask(vec2 depthGradient) {
   vec2 q = gl_FragCoord.xy * shadowMaskScale - 0.5;
   vec2 base = floor(q);
   vec2 f = q - base;
-  ivec2 last = textureSize(shadowMaskDepth, 0) - 1;
+  // The 2 x 2 mask pixels from base, gathered at the corner they share (no rounding can pick other
+  // pixels): their depths, and their visibilities (light i in byte i: shadow_mask.frag's MASK_BITS
+  // 8). Gather's order: (0, 1), (1, 1), (1, 0), (0, 0).
+  vec2 corner = (base + 1.0) / vec2(textureSize(shadowMaskDepth, 0));
+  vec4 depths = textureGather(shadowMaskDepth, corner, 0);
+  uvec4 packedMask = textureGather(shadowMask, corner, 0);
   float tolerance = kMaskDepthTolerance * (abs(depthGradient.x) + abs(depthGradient.y)) + kMaskDepthFloor;
+  // Each mask pixel's centre in frame pixels, relative to this pixel's centre: the depth predicted there.
+  vec2 step = 1.0 / shadowMaskScale;
+  vec2 offset0 = (base + 0.5) * step - gl_FragCoord.xy;
+  float predicted = gl_FragCoord.z + dot(depthGradient, offset0);
+  vec2 dz = depthGradient * step;
+  vec4 error = abs(depths - (predicted + vec4(dz.y, dz.x + dz.y, dz.x, 0.0)));
+  vec4 weights = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+  weights *= vec4(lessThanEqual(error, vec4(tolerance)));
+  // None on the pixel's surface: the nearest in depth.
+  if (dot(weights, vec4(1.0)) <= 1e-4)
+    weights = vec4(equal(error, vec4(min(min(error.x, error.y), min(error.z, error.w)))));
   vec4 sum = vec4(0.0);
-  float weightSum = 0.0;
-  vec4 nearest = vec4(1.0);
-  float nearestError = 1e30;
-  for (int k = 0; k < 4; ++k) {
-    ivec2 corner = ivec2(k & 1, k >> 1);
-    ivec2 texel = clamp(ivec2(base) + corner, ivec2(0), last);
-    // The mask pixel's centre in frame pixels, relative to this pixel's centre.
-    vec2 offset = (vec2(texel) + 0.5) / shadowMaskScale - gl_FragCoord.xy;
-    float error = abs(texelFetch(shadowMaskDepth, texel, 0).r - (gl_FragCoord.z + dot(depthGradient, offset)));
-    vec4 visibility = texelFetch(shadowMask, texel, 0);
-    vec2 w2 = mix(1.0 - f, f, vec2(corner));
-    float weight = error <= tolerance ? w2.x * w2.y : 0.0;
-    sum += weight * visibility;
-    weightSum += weight;
-    if (error < nearestError) {
-      nearestError = error;
-      nearest = visibility;
-    }
-  }
-  return weightSum > 1e-4 ? sum / weightSum : nearest;
+  for (int k = 0; k < 4; ++k) sum += weights[k] * unpackUnorm4x8(packedMask[k]);
+  return sum / dot(weights, vec4(1.0));
 }
 #endif
 
@@ -100,9 +99,10 @@ const float kPenumbraFilterScale = 1.25;
 // The blockers in a footprint, from its mean moments `moments` at receiver depth z: the model is a
 // fraction f of the footprint at one depth z - x / c and the rest at the receiver's depth, which
 // has mean depth z - f x / c and mean exp(c (d - z)) = 1 - f (1 - exp(-x)). Solving the two for
-// x (q = (1 - exp(-x)) / x, two Newton steps from the right of the root of the concave
-// 1 - exp(-x) - q x) gives f also where a blocker is so close to the receiver that the
-// exponential test alone would leak (a contact shadow). Returns f and the blockers' separation
+// x (the root of 1 - exp(-x) = q x, q = b / (c a) below, in the closed form p (1/q + 1 + 0.36 p),
+// p = 1 - q: its f within 0.1% of the exact root's over [1e-4, 0.9999], with no exp or Newton
+// step, which llvmpipe pays per pixel and light; docs/engine.md "Shadows") gives f also where a
+// blocker is so close to the receiver that the exponential test alone would leak (a contact shadow). Returns f and the blockers' separation
 // z - d_blocker = (z - mean depth) / f.
 // `spread`: c times the receiver plane's depth change over the footprint's standard deviation; a
 // plane alone then has mean exp(c (d - z)) = exp(spread^2 / 2) (the exponential is convex), which
@@ -112,11 +112,8 @@ vec2 shadowBlockers(vec2 moments, float z, float spread) {
   float b = 1.0 - moments.y * exp(kShadowExponent * (1.0 - z) - 0.5 * spread * spread);
   bool blocked = a > 0.0 && b > 0.0;
   float q = clamp(blocked ? b / (kShadowExponent * a) : 1.0, 1e-4, 0.9999);
-  float x = 2.0 * (1.0 - q) / q;
-  for (int k = 0; k < 2; ++k) {
-    float e = exp(-x);
-    x -= (1.0 - e - q * x) / (e - q);
-  }
+  float p = 1.0 - q;
+  float x = p * (1.0 / q + 1.0 + 0.36 * p);
   // No blocker lies in front of the map's near side (x <= c z). Where the mean depth is not in
   // front of the receiver (a footprint that also holds surfaces far behind it), the exponential
   // test alone: f = b.
@@ -153,6 +150,15 @@ float shadowVisibility(int i, vec3 position, vec3 g, float tanSigma) {
   return 1.0 - filtered.x;
 }
 
+
+// The planar ground's visibilities (shadow_maps.h GroundVisibilityFrame): light i's in component
+// i of a texture over the ground's plane (shadow_ground.frag), read bilinearly at the point.
+layout(binding = kTextureUnitShadowGround) uniform sampler2D shadowGroundVisibility;
+uniform vec3 groundVisibilityOrigin, groundVisibilityU, groundVisibilityV;
+vec4 groundShadowVisibilities(vec3 position) {
+  vec3 p = position - groundVisibilityOrigin;
+  return textureLod(shadowGroundVisibility, vec2(dot(p, groundVisibilityU), dot(p, groundVisibilityV)), 0.0);
+}
 
 // The visibility of drawn light i from `position`, with `geometric` the surface's geometric normal
 // (either side: it is turned towards the light).

@@ -122,7 +122,8 @@ std::string sharedConstants() {
                         {"kTextureUnitResidualIrradiance", kTextureUnitResidualIrradiance},
                         {"kTextureUnitShadowMask", kTextureUnitShadowMask},
                         {"kTextureUnitShadowSurface", kTextureUnitShadowSurface},
-                        {"kTextureUnitShadowMaskDepth", kTextureUnitShadowMaskDepth}});
+                        {"kTextureUnitShadowMaskDepth", kTextureUnitShadowMaskDepth},
+                        {"kTextureUnitShadowGround", kTextureUnitShadowGround}});
   text += intConstants("iblkit::kMaxEngineLights, kShadowMapSize (engine/gl/light_constants.h)",
                        {{"kMaxEngineLights", kMaxEngineLights}, {"kShadowMapSize", kShadowMapSize}});
   text += "// iblkit::kShadowExponent (engine/gl/light_constants.h)\nconst float kShadowExponent = " +

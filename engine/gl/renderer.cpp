@@ -111,6 +111,7 @@ struct Renderer::Impl {
   std::unique_ptr<ShadowMaps> shadowMaps;  // made on the first shadowed frame
   std::unique_ptr<ShadowMask> shadowMask;  // made on the first shadowed single-sample frame
   int shadowMaskFrames = 0;
+  int groundVisibilityFrames = 0;
   // Per mesh, the ground's triangles split by whether a map covers them (shadowCoverage; empty for
   // the objects, drawn whole), for the maps of shadowMaps->renderCount() == coverageRenders.
   std::vector<ShadowCoverage> shadowCoverage;
@@ -126,9 +127,10 @@ struct Renderer::Impl {
   // `lightCount`: the lights modes' number of drawn lights (dominant_lights.glsl's LIGHT_COUNT), a
   // constant so that the lights loop unrolls with constant indices (llvmpipe pays a loop over a
   // uniform count and its indexed uniforms per pixel); 0 in the other modes.
-  // `fromMask`: lights-shadowed reads the frame's shadow mask (shadow_mask.h) in place of the maps:
-  // 0 not, 1 its own texel of a mask at the frame's resolution, 2 a coarser mask upsampled
-  // (shadow.glsl's SHADOW_MASK).
+  // `fromMask`: where lights-shadowed takes its shadows (shadow.glsl's SHADOW_MASK): 0 the maps,
+  // read in the lit pass; 1 its own texel of the frame's shadow mask (shadow_mask.h) at the
+  // frame's resolution, 2 a coarser mask upsampled; 3 a planar ground's visibility texture
+  // (ShadowMaps::groundVisibility).
   // `specularLayer`: false compiles the specular terms out (hasSpecularLayer, brdf.glsl's
   // SPECULAR_LAYER); the same frame, cheaper, for Lambert materials such as the ground. Only the
   // modes with the material's BRDF have the two variants.
@@ -216,6 +218,7 @@ void Renderer::setEnvironment(const EnvironmentStages& env) {
 const EnvironmentStages& Renderer::lightStages() const { return impl_->lightStages; }
 
 int Renderer::shadowMaskFrames() const { return impl_->shadowMaskFrames; }
+int Renderer::groundVisibilityFrames() const { return impl_->groundVisibilityFrames; }
 
 int Renderer::shadowMapRenders() const { return impl_->shadowMaps ? impl_->shadowMaps->renderCount() : 0; }
 
@@ -322,6 +325,12 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   // alpha can drop a point keeps the lookups in the lit pass (the surface pass has no alpha test).
   const bool fromMask = mode == ShadingMode::LightsShadowed && settings.layer == FrameLayer::Radiance &&
                         settings.shadowMask && samples <= 1 && !drawn.lights.empty();
+  // The ground's shadows from its visibility texture (ShadowMaps::groundVisibility): the ground is
+  // left out of the mask's surfaces and drawn with SHADOW_MASK 3.
+  const bool groundFromMaps = mode == ShadingMode::LightsShadowed && settings.layer == FrameLayer::Radiance &&
+                              settings.groundVisibility && !drawn.lights.empty() && r.shadowMaps &&
+                              r.shadowMaps->groundVisibility();
+  if (groundFromMaps) ++r.groundVisibilityFrames;
   if (fromMask) {
     ++r.shadowMaskFrames;
     if (!r.shadowMask) r.shadowMask = std::make_unique<ShadowMask>();
@@ -334,6 +343,8 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       if (drawnAlphaMode(material, r.materialTextures.boundSlots(material, settings.textureSlots), r.meshes[i]) !=
           AlphaMode::Opaque)
         continue;
+      // The ground reads its own visibilities (ShadowMaps::groundVisibility), not the mask's.
+      if (mesh.isGround && groundFromMaps) continue;
       cullFor(material);
       if (mesh.isGround && i < r.shadowCoverage.size())
         r.meshes[i].draw(r.shadowCoverage[i].covered);
@@ -387,11 +398,15 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     // The slots bound (present, switched on, uploaded) choose the program variant.
     const unsigned slots = r.materialTextures.bind(material, settings.textureSlots);
     const AlphaMode alphaMode = drawnAlphaMode(material, slots, r.meshes[i]);
+    // Where the shadows come from: the ground's own visibilities (3), the mask (maskReading) for
+    // what the surface pass drew, else the maps read in the lit pass (0).
+    const int shadowSource = mesh.isGround && groundFromMaps ? 3
+                             : fromMask && alphaMode == AlphaMode::Opaque ? maskReading
+                                                                          : 0;
     const auto use = [&](ShadingMode programMode) -> const ShaderProgram& {
       const ShaderProgram& program =
-          r.meshProgram(programMode, settings.layer, slots, alphaMode, int(drawn.lights.size()),
-                        fromMask && alphaMode == AlphaMode::Opaque ? maskReading : 0, hasSpecularLayer(material),
-                        r.constantNormal[i], sunBounce);
+          r.meshProgram(programMode, settings.layer, slots, alphaMode, int(drawn.lights.size()), shadowSource,
+                        hasSpecularLayer(material), r.constantNormal[i], sunBounce);
       if (std::find(prepared.begin(), prepared.end(), &program) == prepared.end()) {
         setFrameUniforms(program);
         program.set("shadowMaskScale", maskScale);

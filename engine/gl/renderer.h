@@ -41,7 +41,7 @@ struct FrameSettings {
   int lightCount = -1;
   bool shadows = true;
   // lights-shadowed on a single-sample target: the shadows computed once per pixel in a screen-space
-  // pass (shadow_mask.h) rather than in the lit pass; the same frame to the mask's 16 bits, faster
+  // pass (shadow_mask.h) rather than in the lit pass; the same frame to the mask's 8 bits, faster
   // on a software rasteriser (docs/engine.md "Shadows"). Multisampled targets always shadow in the
   // lit pass.
   bool shadowMask = true;
@@ -49,6 +49,10 @@ struct FrameSettings {
   // quarter of the lookups, upsampled with the mask's depths; penumbrae interpolated over 2
   // pixels, shadow_mask.h).
   int shadowMaskDivisor = 2;
+  // lights-shadowed on a planar ground: the ground's shadows read from the texture of the ground's
+  // visibility, computed with the maps (one tap a pixel; shadow_maps.h GroundVisibilityFrame)
+  // rather than per pixel (the mask or the lit pass). Off: the ground's pixels as the objects'.
+  bool groundVisibility = true;
 };
 
 // The envRotationDegrees that shows the environment at the absolute rotation `degrees` about +Y
@@ -93,6 +97,9 @@ class Renderer {
   int shadowMapRenders() const;
   // How many frames took their shadows from the screen-space mask (FrameSettings::shadowMask).
   int shadowMaskFrames() const;
+  // How many frames read the ground's shadows from its visibility texture
+  // (FrameSettings::groundVisibility; where there is a planar ground and objects).
+  int groundVisibilityFrames() const;
   // Drops the shadow maps, so that the next shadowed frame renders them again (the benchmark of
   // their cost; a new environment does it by itself).
   void invalidateShadowMaps();

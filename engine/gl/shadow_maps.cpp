@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "engine/gl/light_constants.h"
 #include "engine/gl/texture_unit.h"
@@ -187,6 +188,13 @@ ShadowCoverage shadowCoverage(const Mesh& mesh, const std::vector<ShadowFrame>& 
 
 ShadowMaps::ShadowMaps(int size) : size_(size) {
   glCreateFramebuffers(1, &framebuffer_);
+  glCreateVertexArrays(1, &emptyVertexArray_);
+  glCreateSamplers(1, &groundSampler_);
+  // The ground's visibility: bilinear; beyond the texture its edge texels, lit (shadow_ground.frag).
+  glSamplerParameteri(groundSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(groundSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(groundSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(groundSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glCreateSamplers(1, &momentsSampler_);
   // Outside the map: the far plane, whose moments are (1, exp(0)).
   const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
@@ -199,6 +207,8 @@ ShadowMaps::ShadowMaps(int size) : size_(size) {
 
 ShadowMaps::~ShadowMaps() {
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+  if (emptyVertexArray_) glDeleteVertexArrays(1, &emptyVertexArray_);
+  if (groundSampler_) glDeleteSamplers(1, &groundSampler_);
   if (momentsSampler_) glDeleteSamplers(1, &momentsSampler_);
 }
 
@@ -207,6 +217,7 @@ void ShadowMaps::update(const std::vector<Mesh>& meshes, const std::vector<GpuMe
   if (lights == lights_) return;
   lights_ = lights;
   frames_.clear();
+  ground_ = {};
   if (lights.empty()) return;
   const int layers = int(lights.size());
   if (layers > layers_) {
@@ -239,6 +250,7 @@ void ShadowMaps::update(const std::vector<Mesh>& meshes, const std::vector<GpuMe
     for (const GpuMesh& mesh : gpuMeshes) mesh.draw();
   }
   glGenerateTextureMipmap(moments_.id());
+  renderGroundVisibility(meshes, lights);
   ++renderCount_;
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(0);
@@ -246,12 +258,107 @@ void ShadowMaps::update(const std::vector<Mesh>& meshes, const std::vector<GpuMe
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+GroundVisibilityFrame fitGroundVisibility(const std::vector<Mesh>& meshes, const std::vector<ShadowLight>& lights,
+                                          const std::vector<ShadowFrame>& frames, int maxSize) {
+  GroundVisibilityFrame ground;
+  const bool anyObject =
+      std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return !m.isGround && !m.positions.empty(); });
+  glm::vec3 n;
+  float offset = 0.0f;
+  if (!anyObject || lights.size() != frames.size() || !groundPlane(meshes, n, offset)) return ground;
+  // The plane's axes, and its points as (a.p, b.p).
+  const glm::vec3 helper = std::abs(n.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+  const glm::vec3 a = glm::normalize(glm::cross(helper, n)), b = glm::cross(n, a);
+  glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  float texel = std::numeric_limits<float>::max();
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const glm::vec3 d = glm::normalize(lights[i].towardsLight);
+    const float nd = glm::dot(n, d);
+    // A light along the plane lights none of it; the shadows' region is that of the others.
+    if (std::abs(nd) < 1e-3f) continue;
+    const glm::mat4 worldFromShadow = glm::inverse(frames[i].shadowFromWorld);
+    for (int corner = 0; corner < 4; ++corner) {
+      const glm::vec3 o = glm::vec3(worldFromShadow * glm::vec4(float(corner & 1), float(corner >> 1), 0.0f, 1.0f));
+      const glm::vec3 p = o + (offset - glm::dot(n, o)) / nd * d;
+      lo = glm::min(lo, glm::vec2(glm::dot(a, p), glm::dot(b, p)));
+      hi = glm::max(hi, glm::vec2(glm::dot(a, p), glm::dot(b, p)));
+    }
+    texel = std::min(texel, frames[i].extent.w);
+  }
+  // Within the ground meshes.
+  glm::vec2 groundLo(std::numeric_limits<float>::max()), groundHi(-std::numeric_limits<float>::max());
+  for (const Mesh& mesh : meshes)
+    if (mesh.isGround)
+      for (const glm::vec3& p : mesh.positions) {
+        groundLo = glm::min(groundLo, glm::vec2(glm::dot(a, p), glm::dot(b, p)));
+        groundHi = glm::max(groundHi, glm::vec2(glm::dot(a, p), glm::dot(b, p)));
+      }
+  lo = glm::max(lo, groundLo);
+  hi = glm::min(hi, groundHi);
+  if (!(lo.x < hi.x && lo.y < hi.y) || !(texel > 0.0f) || !std::isfinite(texel)) return ground;
+  const glm::vec2 side = hi - lo;
+  // A texel of the finest map's size, at most maxSize along the longer side.
+  const float step = std::max(texel, std::max(side.x, side.y) / float(maxSize));
+  ground.width = std::clamp(int(std::ceil(side.x / step)), 2, maxSize);
+  ground.height = std::clamp(int(std::ceil(side.y / step)), 2, maxSize);
+  ground.origin = lo.x * a + lo.y * b + offset * n;
+  ground.stepU = a * (side.x / float(ground.width));
+  ground.stepV = b * (side.y / float(ground.height));
+  ground.normal = n;
+  ground.uFromWorld = a / side.x;
+  ground.vFromWorld = b / side.y;
+  return ground;
+}
+
+void ShadowMaps::renderGroundVisibility(const std::vector<Mesh>& meshes, const std::vector<ShadowLight>& lights) {
+  ground_ = fitGroundVisibility(meshes, lights, frames_, kGroundVisibilityMaxSize);
+  if (!ground_.valid()) return;
+  if (ground_.width != groundWidth_ || ground_.height != groundHeight_) {
+    groundVisibility_ = GlTexture(createTargetTexture(GL_RGBA8, ground_.width, ground_.height));
+    groundWidth_ = ground_.width;
+    groundHeight_ = ground_.height;
+  }
+  const int count = int(lights.size());
+  auto found = groundPrograms_.find(count);
+  if (found == groundPrograms_.end())
+    found = groundPrograms_
+                .emplace(count, ShaderProgram("fullscreen.vert", "shadow_ground.frag",
+                                              "#define LIGHT_COUNT " + std::to_string(count)))
+                .first;
+  const ShaderProgram& program = found->second;
+  setUniforms(program);
+  for (int i = 0; i < count; ++i) {
+    const ShadowLight& light = lights[std::size_t(i)];
+    const float radius = std::atan(light.tanAngularRadius);
+    program.set(uniformElement("lightDirection", std::size_t(i)).c_str(), glm::normalize(light.towardsLight));
+    program.set(uniformElement("lightCosSin", std::size_t(i)).c_str(), glm::vec2(std::cos(radius), std::sin(radius)));
+  }
+  program.set("groundOrigin", ground_.origin);
+  program.set("groundStepU", ground_.stepU);
+  program.set("groundStepV", ground_.stepV);
+  program.set("groundNormal", ground_.normal);
+  glBindTextureUnit(kTextureUnitShadowDepth, moments_.id());
+  glBindSampler(kTextureUnitShadowDepth, momentsSampler_);
+  glNamedFramebufferTexture(framebuffer_, GL_DEPTH_ATTACHMENT, 0, 0);
+  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, groundVisibility_.id(), 0);
+  glViewport(0, 0, ground_.width, ground_.height);
+  glDisable(GL_DEPTH_TEST);
+  program.use();
+  glBindVertexArray(emptyVertexArray_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
 void ShadowMaps::bind() const {
   glBindTextureUnit(kTextureUnitShadowDepth, moments_.id());
   glBindSampler(kTextureUnitShadowDepth, momentsSampler_);
+  glBindTextureUnit(kTextureUnitShadowGround, groundVisibility_.id());
+  glBindSampler(kTextureUnitShadowGround, groundSampler_);
 }
 
 void ShadowMaps::setUniforms(const ShaderProgram& program) const {
+  program.set("groundVisibilityOrigin", ground_.origin);
+  program.set("groundVisibilityU", ground_.uFromWorld);
+  program.set("groundVisibilityV", ground_.vFromWorld);
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     program.set(uniformElement("shadowFromWorld", i).c_str(), frames_[i].shadowFromWorld);
     program.set(uniformElement("shadowExtent", i).c_str(), frames_[i].extent);

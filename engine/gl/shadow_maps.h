@@ -12,6 +12,7 @@
 #include <epoxy/gl.h>
 
 #include <glm/glm.hpp>
+#include <map>
 #include <vector>
 
 #include "core/mesh.h"
@@ -64,6 +65,27 @@ struct ShadowCoverage {
 };
 ShadowCoverage shadowCoverage(const Mesh& mesh, const std::vector<ShadowFrame>& frames);
 
+// The planar ground's visibility of every light (docs/engine.md "Shadows", "The ground's
+// visibility"): an RGBA8 texture over the ground's plane, light i's visibility in component i,
+// computed with the maps (shadow_ground.frag: shadow.glsl's shadowVisibilities at each texel's
+// point of the plane) and read by the lit pass with one bilinear tap a ground pixel
+// (groundShadowVisibilities). It covers the maps' squares seen along their lights on the plane
+// (outside them no light is shadowed), cut to the ground meshes, in texels of the finest map's
+// size, at most kGroundVisibilityMaxSize along the longer side.
+inline constexpr int kGroundVisibilityMaxSize = 1024;
+struct GroundVisibilityFrame {
+  int width = 0, height = 0;  // texels; 0 where there is no ground visibility
+  glm::vec3 origin{0.0f};     // the plane's point at the texture's corner (0, 0)
+  glm::vec3 stepU{0.0f}, stepV{0.0f};  // a texel's sides in world space
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};  // the plane's
+  glm::vec3 uFromWorld{0.0f}, vFromWorld{0.0f};  // (u, v) = (uFromWorld.(p - origin), vFromWorld.(p - origin))
+  bool valid() const { return width > 0 && height > 0; }
+};
+// The frame for `frames` of `lights`: none (width 0) without objects, where the ground meshes do
+// not lie on one plane, or where the maps' squares miss the ground.
+GroundVisibilityFrame fitGroundVisibility(const std::vector<Mesh>& meshes, const std::vector<ShadowLight>& lights,
+                                          const std::vector<ShadowFrame>& frames, int maxSize);
+
 class ShadowMaps {
  public:
   // `size`: the side of each map in texels. Needs a current OpenGL 4.5 context.
@@ -73,18 +95,23 @@ class ShadowMaps {
   ShadowMaps& operator=(const ShadowMaps&) = delete;
 
   // Makes the maps those of `lights`: fits each frame, renders `gpuMeshes` (drawn like `meshes`,
-  // both faces, opaque) into its layer and builds the moments' mip chain, only when the lights
-  // differ from the last call's. Leaves framebuffer 0 bound, the viewport to the caller (render()
+  // both faces, opaque) into its layer, builds the moments' mip chain and the ground's visibility
+  // (GroundVisibilityFrame, where there is one), only when the lights differ from the last call's. Leaves framebuffer 0 bound, the viewport to the caller (render()
   // sets its own), program and vertex array 0, depth test off.
   void update(const std::vector<Mesh>& meshes, const std::vector<GpuMesh>& gpuMeshes,
               const std::vector<ShadowLight>& lights);
 
-  // Binds the moments to kTextureUnitShadowDepth (trilinear); outside the map they read as the
-  // far plane (lit).
+  // Binds the moments to kTextureUnitShadowDepth (trilinear; outside the map they read as the far
+  // plane, lit) and the ground's visibility to kTextureUnitShadowGround (bilinear).
   void bind() const;
   // Sets shadow.glsl's uniforms for the current frames.
   void setUniforms(const ShaderProgram& program) const;
 
+  // Whether the maps come with the ground's visibility of each light (kTextureUnitShadowGround;
+  // shadow.glsl's groundShadowVisibilities): where the ground meshes lie on one plane and there
+  // are objects to cast shadows onto it.
+  bool groundVisibility() const { return ground_.valid(); }
+  const GroundVisibilityFrame& groundFrame() const { return ground_; }
   const std::vector<ShadowFrame>& frames() const { return frames_; }
   int size() const { return size_; }
   // How many times the maps were rendered (each update that changed a light): a camera move
@@ -95,8 +122,13 @@ class ShadowMaps {
   int size_;
   int layers_ = 0;  // allocated layers of the texture arrays
   GlTexture depth_, moments_;  // the depth test's buffer, the moments
-  GLuint framebuffer_ = 0, momentsSampler_ = 0;
+  void renderGroundVisibility(const std::vector<Mesh>& meshes, const std::vector<ShadowLight>& lights);
+  GroundVisibilityFrame ground_;
+  GlTexture groundVisibility_;  // GL_RGBA8, groundWidth_ x groundHeight_
+  int groundWidth_ = 0, groundHeight_ = 0;
+  GLuint framebuffer_ = 0, momentsSampler_ = 0, groundSampler_ = 0, emptyVertexArray_ = 0;
   ShaderProgram depthProgram_{"shadow_depth.vert", "shadow_depth.frag"};
+  std::map<int, ShaderProgram> groundPrograms_;  // shadow_ground.frag per light count
   std::vector<ShadowLight> lights_;
   std::vector<ShadowFrame> frames_;
   int renderCount_ = 0;

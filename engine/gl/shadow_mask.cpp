@@ -26,12 +26,16 @@ void ShadowMask::beginSurfaces(int width, int height, int divisor) {
   if (divisor != 1 && divisor != 2)
     throw Error("shadow mask: divisor " + std::to_string(divisor) + " (1 or 2 expected)");
   const int maskWidth = (width + divisor - 1) / divisor, maskHeight = (height + divisor - 1) / divisor;
-  if (width != width_ || height != height_ || maskWidth != maskWidth_ || maskHeight != maskHeight_) {
+  if (width != width_ || height != height_ || divisor != divisor_ || maskWidth != maskWidth_ ||
+      maskHeight != maskHeight_) {
     surface_ = GlTexture(createTargetTexture(GL_RGBA32UI, maskWidth, maskHeight));
     depthStencil_ = GlTexture(createTargetTexture(GL_DEPTH32F_STENCIL8, maskWidth, maskHeight));
     // Sampled as depth by the lit pass (the default mode, set for clarity).
     glTextureParameteri(depthStencil_.id(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
-    mask_ = GlTexture(createTargetTexture(GL_RGBA16, maskWidth, maskHeight));
+    // Two unorm16 per component at the frame's resolution (the lit pass's own visibilities to 16
+    // bits); four unorm8 in one component at a coarser one, which one textureGather reads for 4
+    // pixels (its upsampling's error is far above 8 bits': shadow_mask.frag's MASK_BITS).
+    mask_ = GlTexture(createTargetTexture(divisor == 1 ? GL_RG32UI : GL_R32UI, maskWidth, maskHeight));
     glNamedFramebufferTexture(surfaceFramebuffer_, GL_COLOR_ATTACHMENT0, surface_.id(), 0);
     glNamedFramebufferTexture(surfaceFramebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_.id(), 0);
     glNamedFramebufferTexture(maskFramebuffer_, GL_COLOR_ATTACHMENT0, mask_.id(), 0);
@@ -58,11 +62,14 @@ void ShadowMask::beginSurfaces(int width, int height, int divisor) {
 }
 
 const ShaderProgram& ShadowMask::maskProgram(int lightCount) {
-  auto found = maskPrograms_.find(lightCount);
+  const int bits = divisor_ == 1 ? 16 : 8;
+  const std::pair<int, int> key(lightCount, bits);
+  auto found = maskPrograms_.find(key);
   if (found == maskPrograms_.end())
     found = maskPrograms_
-                .emplace(lightCount, ShaderProgram("fullscreen.vert", "shadow_mask.frag",
-                                                   "#define LIGHT_COUNT " + std::to_string(lightCount)))
+                .emplace(key, ShaderProgram("fullscreen.vert", "shadow_mask.frag",
+                                            "#define LIGHT_COUNT " + std::to_string(lightCount) +
+                                                "\n#define MASK_BITS " + std::to_string(bits)))
                 .first;
   return found->second;
 }
@@ -73,8 +80,8 @@ void ShadowMask::computeMask(const ShaderProgram& program, GLuint emptyVertexArr
   // A coarser mask is read around a pixel's own texel too, where a pixel without a receiver may
   // be the nearest (upsampledShadowMask's fallback): lit, not last frame's value.
   if (divisor_ > 1) {
-    const GLfloat lit[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glClearNamedFramebufferfv(maskFramebuffer_, GL_COLOR, 0, lit);
+    const GLuint lit[4] = {0xffffffffu, 0xffffffffu, 0u, 0u};
+    glClearNamedFramebufferuiv(maskFramebuffer_, GL_COLOR, 0, lit);
   }
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);

@@ -4,12 +4,15 @@
 // A software rasteriser such as llvmpipe shades in blocks of 4x4 pixels; a dense mesh's triangles
 // cover a few pixels each and fill them poorly, so the shadow lookups, the costliest term of the
 // mode, cost several times their share on the objects. Two passes before the lit one:
-// - surfaces: the receivers (the opaque meshes the lit pass draws with the shadowed program),
+// - surfaces: the receivers (the opaque meshes the lit pass draws with the shadowed program; not a
+//   planar ground, which reads its own visibility texture: ShadowMaps::groundVisibility),
 //   with a position-only vertex shader (shadow_surface.vert, mesh.vert's invariant gl_Position)
 //   and a tiny fragment shader (shadow_surface.frag) writing each visible pixel's world position
 //   and geometric normal, and stencil 1;
 // - mask: a full-screen triangle, stencil-tested, computing shadow.glsl's shadowVisibilities for
-//   every light there (shadow_mask.frag) into an RGBA16 texture, light i in component i;
+//   every light there (shadow_mask.frag): at divisor 1 two unorm16 per component of an RG32UI
+//   texel, at divisor 2 light i in byte i of an R32UI texel (packUnorm4x8: one textureGather
+//   brings 4 pixels' visibilities of every light);
 // then the lit pass reads the mask (mesh.frag with SHADOW_MASK 1 or 2).
 // - At the frame's resolution (divisor 1), the lit pass reads its pixel's texel. Its fragments
 //   are the surface pass's (the same invariant gl_Position, depth test and culling), so the value
@@ -25,6 +28,7 @@
 #include <epoxy/gl.h>
 
 #include <map>
+#include <utility>
 
 #include "engine/gl/gpu_textures.h"
 #include "engine/gl/shader_program.h"
@@ -50,8 +54,9 @@ class ShadowMask {
   float scaleY() const { return float(maskHeight_) / float(height_); }
   const ShaderProgram& surfaceProgram() const { return surfaceProgram_; }
 
-  // The mask pass's program for `lightCount` lights (compiled on first use); the caller sets its
-  // lights' and shadow maps' uniforms (light_directions.glsl, shadow.glsl).
+  // The mask pass's program for `lightCount` lights and the divisor of the last beginSurfaces
+  // (compiled on first use); the caller sets its lights' and shadow maps' uniforms
+  // (light_directions.glsl, shadow.glsl).
   const ShaderProgram& maskProgram(int lightCount);
   // Runs the mask pass with `program` (from maskProgram, uniforms set) over the stencilled pixels,
   // drawing a full-screen triangle with `emptyVertexArray` bound, then binds the mask to
@@ -64,7 +69,7 @@ class ShadowMask {
   GlTexture surface_, depthStencil_, mask_;
   GLuint surfaceFramebuffer_ = 0, maskFramebuffer_ = 0;
   ShaderProgram surfaceProgram_{"shadow_surface.vert", "shadow_surface.frag"};
-  std::map<int, ShaderProgram> maskPrograms_;
+  std::map<std::pair<int, int>, ShaderProgram> maskPrograms_;  // by light count and MASK_BITS
 };
 
 }  // namespace iblkit

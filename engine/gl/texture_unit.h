@@ -34,6 +34,9 @@ enum TextureUnit : unsigned {
   // The mask's depths (window z of its pixels' surfaces), which mesh.frag's lights-shadowed mode
   // reads to upsample a mask coarser than the frame (shadow.glsl's upsampledShadowMask).
   kTextureUnitShadowMaskDepth = 18,
+  // The planar ground's visibility of each light, precomputed in the light's map (shadow_maps.h):
+  // mesh.frag's lights-shadowed mode reads it on the ground.
+  kTextureUnitShadowGround = 19,
 };
 
 }  // namespace iblkit

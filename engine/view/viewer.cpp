@@ -61,6 +61,7 @@ class Viewer {
     settings_.shadows = options.shadows;
     settings_.shadowMask = options.shadowMask;
     settings_.shadowMaskDivisor = options.shadowMaskDivisor;
+    settings_.groundVisibility = options.groundVisibility;
     // The reference decides the size (same camera, same pixels) unless --width/--height do.
     int width = bake_.scene.width, height = bake_.scene.height;
     if (!options.references.empty()) {

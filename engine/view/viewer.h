@@ -41,6 +41,7 @@ struct ViewerOptions {
   bool shadows = true;                            // FrameSettings::shadows at start
   bool shadowMask = true;                         // FrameSettings::shadowMask at start
   int shadowMaskDivisor = 2;                      // FrameSettings::shadowMaskDivisor at start
+  bool groundVisibility = true;                   // FrameSettings::groundVisibility at start
   float anisotropy = kDefaultTextureAnisotropy;  // Renderer's textureAnisotropy
   std::filesystem::path envDir = "assets/hdri";
   std::filesystem::path environment;  // --env: switched to at start (prefiltered on the worker)

@@ -388,6 +388,150 @@ TEST(ShadowFrame, DepthIsMeasuredFromAPlanarGroundAndKeepsSeparationsAlongTheLig
   EXPECT_NEAR(glm::length(glm::vec2(k)) / std::abs(k.z), 1.0f / std::tan(glm::radians(35.0f)), 1e-4f);
 }
 
+// A sphere (radius 0.5, centre 0.7 above the ground) and a 1 x 1 double-sided wall of glTF alpha
+// mode `alphaMode` (BLEND with alpha 0.6) beside it, under `sun` (the shadow mask's and the
+// ground visibility's scene).
+SunScene writeSphereAndWallScene(const std::string& name, glm::vec3 sun, const std::string& alphaMode = "OPAQUE") {
+  const nlohmann::json models = {{{"shape", "sphere"}, {"translation", {0.6, 0.7, 0.0}}, {"scale", 0.5}},
+                                 {{"file", "wall.gltf"}, {"translation", {-0.6, 0.5, 0.3}}}};
+  const SunScene s = writeSunScene(name, sun, 0.7f, models);
+  test::GltfBuilder builder;
+  builder.addQuadNode(0.5f);
+  builder.document()["materials"] = {
+      {{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, alphaMode == "BLEND" ? 0.6 : 1.0}}, {"metallicFactor", 0.0}}},
+       {"doubleSided", true},
+       {"alphaMode", alphaMode}}};
+  builder.write(s.dir / "wall.gltf", test::GltfBuilder::Storage::BinFile);
+  return s;
+}
+
+// `settings` without the sky into a fresh kWidth x kHeight target of `samples` samples.
+Image renderFrame(Renderer& renderer, const Camera& camera, FrameSettings settings, int samples) {
+  RenderTarget target(kWidth, kHeight, samples);
+  settings.drawSky = false;
+  renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
+  return target.readColor();
+}
+
+// The ground's visibility texture's frame (fitGroundVisibility): on the ground's plane, over every
+// point of the plane that some light's map covers (so that outside it no light is shadowed and the
+// edge texels, lit, stand for it), cut to the ground; texels no larger than the finest map's
+// unless the cap binds; none without a planar ground or without objects.
+TEST(GroundVisibility, TheFrameCoversWhatTheMapsCoverOnThePlane) {
+  Mesh ground = toMesh(gridPlane(glm::vec3(0.0f), 6.0f, 8), "ground");
+  ground.isGround = true;
+  const Mesh sphere = toMesh(uvSphere(glm::vec3(0.2f, 1.0f, -0.1f), 0.5f, 16, 32), "sphere");
+  const std::vector<ShadowLight> lights = {{sunDirection(-60.0f, 35.0f), std::tan(glm::radians(2.0f))},
+                                           {sunDirection(100.0f, 70.0f), std::tan(glm::radians(0.5f))}};
+  const std::vector<Mesh> meshes = {sphere, ground};
+  std::vector<ShadowFrame> frames;
+  for (const ShadowLight& light : lights) frames.push_back(fitShadowFrame(meshes, light, kShadowMapSize));
+  const GroundVisibilityFrame g = fitGroundVisibility(meshes, lights, frames, kGroundVisibilityMaxSize);
+  ASSERT_TRUE(g.valid());
+  EXPECT_LE(std::max(g.width, g.height), kGroundVisibilityMaxSize);
+  EXPECT_NEAR(std::abs(glm::dot(g.normal, glm::vec3(0.0f, 1.0f, 0.0f))), 1.0f, 1e-6f);
+  EXPECT_NEAR(g.origin.y, 0.0f, 1e-5f);
+  // The texel's sides: along the plane, and the two axes' (u, v) inverses of them.
+  EXPECT_NEAR(glm::dot(g.stepU, g.normal), 0.0f, 1e-7f);
+  EXPECT_NEAR(glm::dot(g.uFromWorld, g.stepU) * float(g.width), 1.0f, 1e-4f);
+  EXPECT_NEAR(glm::dot(g.vFromWorld, g.stepV) * float(g.height), 1.0f, 1e-4f);
+  const float finest = std::min(frames[0].extent.w, frames[1].extent.w);
+  if (std::max(g.width, g.height) < kGroundVisibilityMaxSize) {
+    EXPECT_LE(glm::length(g.stepU), finest * 1.0001f);
+    EXPECT_LE(glm::length(g.stepV), finest * 1.0001f);
+  }
+  // Every ground point inside some map's square is inside the texture; the texture's own corners lie
+  // on the ground.
+  int inside = 0;
+  for (int j = 0; j <= 60; ++j)
+    for (int i = 0; i <= 60; ++i) {
+      const glm::vec3 p(-3.0f + 0.1f * float(i), 0.0f, -3.0f + 0.1f * float(j));
+      bool covered = false;
+      for (const ShadowFrame& frame : frames) {
+        const glm::vec2 uv(frame.shadowFromWorld * glm::vec4(p, 1.0f));
+        covered = covered || (uv.x >= 0.0f && uv.y >= 0.0f && uv.x <= 1.0f && uv.y <= 1.0f);
+      }
+      if (!covered) continue;
+      ++inside;
+      const glm::vec2 st(glm::dot(g.uFromWorld, p - g.origin), glm::dot(g.vFromWorld, p - g.origin));
+      EXPECT_TRUE(st.x >= -1e-4f && st.y >= -1e-4f && st.x <= 1.0001f && st.y <= 1.0001f) << p.x << ", " << p.z;
+    }
+  EXPECT_GT(inside, 20);
+  const glm::vec3 far = g.origin + float(g.width) * g.stepU + float(g.height) * g.stepV;
+  EXPECT_LE(std::max(std::abs(far.x), std::abs(far.z)), 3.0001f);
+  EXPECT_LE(std::max(std::abs(g.origin.x), std::abs(g.origin.z)), 3.0001f);
+  // No plane, no objects, no texture.
+  Mesh bumpy = ground;
+  bumpy.positions[bumpy.positions.size() / 2].y += 0.3f;
+  EXPECT_FALSE(fitGroundVisibility({sphere, bumpy}, lights, frames, kGroundVisibilityMaxSize).valid());
+  EXPECT_FALSE(fitGroundVisibility({ground}, lights, frames, kGroundVisibilityMaxSize).valid());
+}
+
+// The ground's shadows read from its visibility texture (FrameSettings::groundVisibility) against
+// the same frame computed per pixel in the lit pass: the same shadows on the ground within the
+// texture's bilinear interpolation, the objects untouched. Suns high, grazing (12 degrees: a
+// long shadow, the texture's cap binds) and behind the camera; a sphere and a wall.
+TEST_F(ShadowTest, TheGroundsVisibilityTextureGivesThePerPixelShadows) {
+  struct Sun {
+    float azimuth, elevation;
+  };
+  for (const Sun sun : {Sun{150.0f, 50.0f}, Sun{150.0f, 12.0f}, Sun{0.0f, 20.0f}, Sun{-70.0f, 35.0f}}) {
+    const std::string name = "ground_visibility_" + std::to_string(int(sun.azimuth)) + "_" + std::to_string(int(sun.elevation));
+    const SunScene s = writeSphereAndWallScene(name, sunDirection(sun.azimuth, sun.elevation));
+    const BakedScene bake = bakeWithSun(s);
+    Renderer renderer(bake);
+    const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
+    auto frame = [&](ShadingMode mode, bool groundVisibility, bool mask) {
+      FrameSettings settings;
+      settings.mode = mode;
+      settings.shadowMask = mask;
+      settings.groundVisibility = groundVisibility;
+      return renderFrame(renderer, camera, settings, 1);
+    };
+    const Image perPixel = frame(ShadingMode::LightsShadowed, false, false);
+    EXPECT_EQ(renderer.groundVisibilityFrames(), 0);
+    const Image fromTexture = frame(ShadingMode::LightsShadowed, true, false);
+    EXPECT_EQ(renderer.groundVisibilityFrames(), 1);
+    const Image withMask = frame(ShadingMode::LightsShadowed, true, true);
+    EXPECT_EQ(renderer.groundVisibilityFrames(), 2);
+    const Image unshadowed = frame(ShadingMode::Lights, true, false);
+    checkGlErrors("ground visibility frames");
+    int ground = 0, shadowed = 0, shadowedFromTexture = 0, off = 0;
+    double sum = 0.0, objectsWorst = 0.0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        const glm::vec3 a(perPixel.at(x, y)), b(fromTexture.at(x, y));
+        const float lit = luminance(glm::vec3(unshadowed.at(x, y)));
+        if (lit <= 0.0f) continue;  // nothing drawn
+        const double difference = glm::length(a - b) / std::max(glm::length(a), 1e-3f);
+        if (perPixel.at(x, y).a > 0.5f) {  // an object: the lit pass's lookups either way
+          objectsWorst = std::max(objectsWorst, difference);
+          continue;
+        }
+        ++ground;
+        sum += difference;
+        if (difference > 0.1) ++off;
+        if (luminance(a) < 0.5f * lit) ++shadowed;
+        if (luminance(b) < 0.5f * lit) ++shadowedFromTexture;
+        // The mask's frame reads the same texture on the ground.
+        EXPECT_LT(glm::length(glm::vec3(withMask.at(x, y)) - b), 1e-4f * std::max(glm::length(b), 1.0f)) << x << ", " << y;
+      }
+    const double mean = sum / std::max(ground, 1), offFraction = double(off) / std::max(ground, 1);
+    std::cout << "sun at azimuth " << sun.azimuth << ", " << sun.elevation << " degrees up: " << shadowed
+              << " shadowed ground pixels per pixel, " << shadowedFromTexture << " from the texture; mean relative "
+              << "difference " << mean << ", " << 100.0 * offFraction << "% of " << ground
+              << " ground pixels off by more than 10%; objects' largest difference " << objectsWorst << "\n";
+    // Behind the camera the shadows fall behind the objects: a few pixels in view.
+    if (sun.azimuth != 0.0f) {
+      EXPECT_GT(shadowed, 300);
+    }
+    EXPECT_NEAR(shadowedFromTexture, shadowed, 0.02 * shadowed + 5);
+    EXPECT_LT(mean, 0.005);
+    EXPECT_LT(offFraction, 0.005);
+    EXPECT_LT(objectsWorst, 1e-5);
+  }
+}
+
 // The ground's triangles split by the maps' cover (shadowCoverage): every triangle in exactly one
 // part, the covered ones overlapping a map's square and the others not, the ground where the
 // sphere's shadow falls covered, and most of the 6 x 6 ground (the far part, which the renderer
@@ -497,29 +641,18 @@ TEST_F(ShadowTest, ShadowMaskGivesTheLitPassShadows) {
       const float elevation = sun.elevation;
       const std::string name = std::string("mask_") + alphaMode + "_" + std::to_string(int(sun.azimuth)) + "_" +
                                std::to_string(int(elevation));
-      const nlohmann::json models = {{{"shape", "sphere"}, {"translation", {0.6, 0.7, 0.0}}, {"scale", 0.5}},
-                                     {{"file", "wall.gltf"}, {"translation", {-0.6, 0.5, 0.3}}}};
-      const SunScene s = writeSunScene(name, sunDirection(sun.azimuth, elevation), 0.7f, models);
-      test::GltfBuilder builder;
-      builder.addQuadNode(0.5f);
-      builder.document()["materials"] = {
-          {{"pbrMetallicRoughness",
-            {{"baseColorFactor", {0.8, 0.8, 0.8, std::string(alphaMode) == "BLEND" ? 0.6 : 1.0}}, {"metallicFactor", 0.0}}},
-           {"doubleSided", true},
-           {"alphaMode", alphaMode}}};
-      builder.write(s.dir / "wall.gltf", test::GltfBuilder::Storage::BinFile);
+      const SunScene s = writeSphereAndWallScene(name, sunDirection(sun.azimuth, elevation), alphaMode);
       const BakedScene bake = bakeWithSun(s);
       Renderer renderer(bake);
       const Camera camera = sceneCamera(bake.scene, float(kWidth) / float(kHeight));
       auto frame = [&](ShadingMode mode, bool mask, int samples, int divisor = 1) {
-        RenderTarget target(kWidth, kHeight, samples);
         FrameSettings settings;
         settings.mode = mode;
-        settings.drawSky = false;
         settings.shadowMask = mask;
         settings.shadowMaskDivisor = divisor;
-        renderer.render(camera, settings, target.framebuffer(), kWidth, kHeight);
-        return target.readColor();
+        // The ground through the mask too (its visibility texture has a test of its own).
+        settings.groundVisibility = false;
+        return renderFrame(renderer, camera, settings, samples);
       };
       const Image inLitPass = frame(ShadingMode::LightsShadowed, false, 1);
       EXPECT_EQ(renderer.shadowMaskFrames(), 0);
