@@ -24,7 +24,8 @@
 #ifndef SHADOW_MASK
 #define SHADOW_MASK 0
 #endif
-// The frame's shadow mask: light i's visibility in component i (shadow_mask.frag).
+// The frame's shadow mask (shadow_mask.frag's MASK_BITS): at the frame's resolution lights 0 and 1
+// in x, 2 and 3 in y, two unorm16 each; coarser, light i in byte i of x.
 layout(binding = kTextureUnitShadowMask) uniform usampler2D shadowMask;
 // SHADOW_MASK 2: the mask is coarser than the frame. Its pixels' window depths (the surface pass's
 // depth buffer; 1 where no receiver was drawn), and mask pixels per frame pixel along x and y.
@@ -102,8 +103,8 @@ const float kPenumbraFilterScale = 1.25;
 // x (the root of 1 - exp(-x) = q x, q = b / (c a) below, in the closed form p (1/q + 1 + 0.36 p),
 // p = 1 - q: its f within 0.1% of the exact root's over [1e-4, 0.9999], with no exp or Newton
 // step, which llvmpipe pays per pixel and light; docs/engine.md "Shadows") gives f also where a
-// blocker is so close to the receiver that the exponential test alone would leak (a contact shadow). Returns f and the blockers' separation
-// z - d_blocker = (z - mean depth) / f.
+// blocker is so close to the receiver that the exponential test alone would leak (a contact
+// shadow). Returns f and the blockers' separation z - d_blocker = (z - mean depth) / f.
 // `spread`: c times the receiver plane's depth change over the footprint's standard deviation; a
 // plane alone then has mean exp(c (d - z)) = exp(spread^2 / 2) (the exponential is convex), which
 // is divided out so that a tilted receiver is not taken for a lit one in front of its blockers.
