@@ -31,6 +31,11 @@ bool meshPlane(const Mesh& mesh, glm::vec3& normal, float& offset) {
                      [&](const glm::vec3& p) { return std::abs(glm::dot(normal, p) - offset) <= tolerance; });
 }
 
+// Whether any mesh but the ground has vertices: something to cast a shadow.
+bool hasObject(const std::vector<Mesh>& meshes) {
+  return std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return !m.isGround && !m.positions.empty(); });
+}
+
 // The plane the ground meshes lie on, when they all lie on one: false when there is no ground, a
 // ground mesh is not planar, or two lie on different planes.
 bool groundPlane(const std::vector<Mesh>& meshes, glm::vec3& normal, float& offset) {
@@ -60,7 +65,7 @@ ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& l
   ShadowFrame frame;
   frame.right = glm::normalize(glm::cross(helper, d));
   frame.up = glm::cross(d, frame.right);
-  const bool anyObject = std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return !m.isGround && !m.positions.empty(); });
+  const bool anyObject = hasObject(meshes);
   // The depth coordinate: the distance towards the light, measured from the plane of a planar
   // ground (t = (n.p - offset) / (n.d), the distance along d from the plane to p) where there is
   // one, else from the plane through the origin across the light (t = d.p). Both grow by exactly
@@ -261,11 +266,9 @@ void ShadowMaps::update(const std::vector<Mesh>& meshes, const std::vector<GpuMe
 GroundVisibilityFrame fitGroundVisibility(const std::vector<Mesh>& meshes, const std::vector<ShadowLight>& lights,
                                           const std::vector<ShadowFrame>& frames, int maxSize) {
   GroundVisibilityFrame ground;
-  const bool anyObject =
-      std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return !m.isGround && !m.positions.empty(); });
   glm::vec3 n;
   float offset = 0.0f;
-  if (!anyObject || lights.size() != frames.size() || !groundPlane(meshes, n, offset)) return ground;
+  if (!hasObject(meshes) || lights.size() != frames.size() || !groundPlane(meshes, n, offset)) return ground;
   // The plane's axes, and its points as (a.p, b.p).
   const glm::vec3 helper = std::abs(n.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
   const glm::vec3 a = glm::normalize(glm::cross(helper, n)), b = glm::cross(n, a);
