@@ -96,31 +96,6 @@ PiecewiseConstant1D::SearchRange PiecewiseConstant1D::searchRange(float u) const
   return {first, last};
 }
 
-int PiecewiseConstant1D::prefetchSample(float u, int stage) const {
-  u = std::clamp(u, 0.0f, kOneMinusEpsilon);
-  if (size() <= kCountedCells) {
-    // Counted tables read their whole CDF: bring it in first, then nothing until the cell's value.
-    if (stage <= 0) {
-      for (std::size_t i = 0; i < cdf_.size(); i += 16) __builtin_prefetch(&cdf_[i]);
-      return -1;
-    }
-    if (stage == 1) return -1;
-  } else if (stage <= 0) {
-    const int n = size(), g = cellOf(u, n);
-    __builtin_prefetch(&guide_[static_cast<std::size_t>(std::max(g - 1, 0))]);
-    __builtin_prefetch(&guide_[static_cast<std::size_t>(std::min(g + 2, n))]);
-    return -1;
-  } else if (stage == 1) {
-    const SearchRange range = searchRange(u);
-    __builtin_prefetch(&cdf_[static_cast<std::size_t>(range.first)]);
-    __builtin_prefetch(&cdf_[static_cast<std::size_t>(range.last - 1)]);
-    return -1;
-  }
-  const int offset = searchCell(u);
-  __builtin_prefetch(&f_[static_cast<std::size_t>(offset)]);
-  return offset;
-}
-
 PiecewiseConstant1D::Sample PiecewiseConstant1D::sample(float u) const {
   u = std::clamp(u, 0.0f, kOneMinusEpsilon);
   const int offset = searchCell(u);
@@ -189,12 +164,6 @@ PiecewiseConstant2D::Sample PiecewiseConstant2D::sample(glm::vec2 u) const {
   s.pdf = column.pdf * row.pdf;
   s.offset = {column.offset, row.offset};
   return s;
-}
-
-glm::ivec2 PiecewiseConstant2D::prefetchSample(glm::vec2 u, int stage) const {
-  const int row = marginal_.sample(u.y).offset;
-  const int column = conditional_[static_cast<std::size_t>(row)].prefetchSample(u.x, stage);
-  return column < 0 ? glm::ivec2(-1) : glm::ivec2(column, row);
 }
 
 void PiecewiseConstant2D::prefetchPdf(glm::vec2 p) const {

@@ -33,13 +33,6 @@ class PiecewiseConstant1D {
   // it returns the CDF value at the cell's start.
   float invert(float x) const;
 
-  // Software prefetch ahead of sample(u), for a caller that draws many samples at once and wants
-  // their cache misses to overlap (the reference tracer's batches of paths): stage 0 brings in the
-  // guide entries sample(u) reads, stage 1 (once those are in cache) the CDF cells it searches,
-  // stage 2 (once those are) the function value of the cell it picks. Each stage reads only what
-  // the stage before brought in and changes nothing: sample(u) returns the same whatever was
-  // prefetched. Returns the cell at stage 2 (-1 before).
-  int prefetchSample(float u, int stage) const;
 
   int size() const { return static_cast<int>(f_.size()); }
   // The CDF at the cell boundaries: size() + 1 values from 0 to 1.
@@ -82,10 +75,6 @@ class PiecewiseConstant2D {
   float pdf(glm::vec2 p) const;
   // The u with sample(u).p == p, for p in [0,1]^2.
   glm::vec2 invert(glm::vec2 p) const;
-  // PiecewiseConstant1D::prefetchSample for sample(u): the row is found from the marginal (small,
-  // assumed cached) at every stage, then the row's own stage is run. Returns the cell at stage 2,
-  // (-1, -1) before.
-  glm::ivec2 prefetchSample(glm::vec2 u, int stage) const;
   // Software prefetch of what pdf(p) reads.
   void prefetchPdf(glm::vec2 p) const;
 

@@ -63,11 +63,6 @@ EnvironmentSampler::Lookup EnvironmentSampler::lookupAt(glm::vec2 uv) const {
   return {at.radiance, texels_.solidAnglePdf(plain().pdf(at.uv) * withinDensity(at), at.texel.y)};
 }
 
-void EnvironmentSampler::prefetchSample(glm::vec2 u, int stage) const {
-  const glm::ivec2 cell = plain().prefetchSample(u, stage);
-  if (cell.x >= 0) texels_.prefetchAround(cell);
-}
-
 void EnvironmentSampler::prefetchLookup(glm::vec2 uv) const {
   plain().prefetchPdf(uv);
   texels_.prefetchAround(texels_.texelAt(uv));
@@ -102,11 +97,6 @@ EnvironmentSampler::Lookup EnvironmentSampler::lookupAt(int bucket, glm::vec2 uv
   if (bucket == kNoBucket) return lookupAt(uv);
   const EnvironmentTexels::Location at = texels_.locateUv(uv);
   return {at.radiance, texels_.solidAnglePdf(oriented_->pdfUv(bucket, at.texel) * withinDensity(at), at.texel.y)};
-}
-
-void EnvironmentSampler::prefetchSample(int bucket, glm::vec2 u, int stage) const {
-  if (bucket == kNoBucket) return prefetchSample(u, stage);
-  oriented_->prefetchSample(bucket, u, stage);
 }
 
 void EnvironmentSampler::prefetchLookup(int bucket, glm::vec2 uv) const {

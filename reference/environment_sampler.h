@@ -69,14 +69,10 @@ class EnvironmentSampler {
   glm::vec2 mapUv(const glm::vec3& worldDirection) const { return texels_.mapUv(worldDirection); }
   Lookup lookupAt(glm::vec2 uv) const;
 
-  // Software prefetches for a batch of samples or lookups, so that their cache misses overlap
-  // instead of each waiting for its own (the integrator's batches of paths): prefetchSample(u,
-  // stage) for stages 0, 1 and 2 in turn, each after the previous stage of the whole batch, brings
-  // in what sample(u) reads (the conditional row's guide, then its CDF cells, then the texel's
-  // pdf and radiance); prefetchLookup(uv) what lookupAt(uv) reads. They change no result.
-  void prefetchSample(glm::vec2 u, int stage) const;
+  // Software prefetch for a batch of lookups, so that their cache misses overlap instead of each
+  // waiting for its own (the integrator's escaping rays): what lookupAt(uv) reads. It changes no
+  // result.
   void prefetchLookup(glm::vec2 uv) const;
-  static constexpr int kPrefetchStages = 3;
 
   // Oriented sampling, for a vertex whose shading normal lies in `bucket` (bucketOf(normal)):
   // the same results as above for bucket == kNoBucket.
@@ -92,7 +88,6 @@ class EnvironmentSampler {
   Sample sampleWithin(int bucket, glm::vec2 u, const glm::vec3& axis, float cosRadius) const;
   float pdf(int bucket, const glm::vec3& worldDirection) const;
   Lookup lookupAt(int bucket, glm::vec2 uv) const;
-  void prefetchSample(int bucket, glm::vec2 u, int stage) const;
   void prefetchLookup(int bucket, glm::vec2 uv) const;
   const OrientedEnvironment* orientedTables() const { return oriented_ ? &*oriented_ : nullptr; }
 

@@ -163,9 +163,9 @@ class Integrator {
   // trace(cameraRays[i], samplers[i], cone) (each path draws the same numbers in the same order
   // and does the same arithmetic), but the paths advance together, vertex by vertex: all
   // closest-hit queries of a depth (the camera rays in Embree's coherent packets, RayScene::
-  // intersectCoherent, the bounce rays one by one), then all escapes, then all vertices, whose
-  // environment samples and lookups are prefetched for the whole batch before any is read
-  // (software prefetches in stages, EnvironmentSampler::prefetchSample), then all light samples,
+  // intersectCoherent, the bounce rays one by one), then all escapes, then all vertices, then all light
+  // samples (the escapes' environment lookups are prefetched for the whole batch before any is read,
+  // EnvironmentSampler::prefetchLookup),
   // whose shadow rays go to Embree in packets (the batch RayScene::occluded), then all bounces.
   // The three spans have the same size (any; the renderer passes kTraceBatch).
   void traceBatch(std::span<const Ray> cameraRays, std::span<PixelSampler> samplers, const RayCone& cone,

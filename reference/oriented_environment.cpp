@@ -209,18 +209,6 @@ float OrientedEnvironment::pdfUv(int bucket, glm::ivec2 texel) const {
          texelScale(bucket, static_cast<std::size_t>(cellOf(texel)));
 }
 
-void OrientedEnvironment::prefetchSample(int bucket, glm::vec2 u, int stage) const {
-  const glm::ivec2 cell = cellDistribution_[static_cast<std::size_t>(bucket)].prefetchSample(u, stage);
-  if (cell.x < 0) return;
-  const std::size_t index = static_cast<std::size_t>(cell.y) * columns_ + static_cast<std::size_t>(cell.x);
-  __builtin_prefetch(rowCdf_.data() + cellRowOffset_[index]);
-  __builtin_prefetch(texelCdf_.data() + cellOffset_[index]);
-  __builtin_prefetch(&texelScale_[static_cast<std::size_t>(bucket) * static_cast<std::size_t>(columns_ * rows_) + index]);
-  const glm::ivec2 corner(columnStart_[static_cast<std::size_t>(cell.x)], rowStart_[static_cast<std::size_t>(cell.y)]);
-  __builtin_prefetch(&weights_[static_cast<std::size_t>(corner.y) * width_ + corner.x]);
-  texels_.prefetchAround(corner);
-}
-
 void OrientedEnvironment::prefetchPdf(int bucket, glm::ivec2 texel) const {
   __builtin_prefetch(&texelScale_[static_cast<std::size_t>(bucket) * static_cast<std::size_t>(columns_ * rows_) +
                                   static_cast<std::size_t>(cellOf(texel))]);

@@ -60,9 +60,7 @@ class OrientedEnvironment {
   Pick sample(int bucket, glm::vec2 u, const DirectionCone* within = nullptr) const;
   // The density per unit area of (u, v) that sample(bucket, .) has on `texel`.
   float pdfUv(int bucket, glm::ivec2 texel) const;
-  // Software prefetches of what sample(bucket, u) reads, stages 0, 1, 2 in turn (see
-  // EnvironmentSampler::prefetchSample), and of what pdfUv reads. They change nothing.
-  void prefetchSample(int bucket, glm::vec2 u, int stage) const;
+  // Software prefetch of what pdfUv reads. It changes nothing.
   void prefetchPdf(int bucket, glm::ivec2 texel) const;
 
   glm::ivec2 cells() const { return {columns_, rows_}; }
