@@ -93,8 +93,13 @@ OneRings oneRings(const Mesh& mesh) {
 
 // Where a vertex's rays start when they start at the vertex: the vertex moved towards its
 // one-ring's centroid (the area-weighted mean of its triangles' centroids) by a sixteenth of
-// offsetRayOrigin's offset (offsetPoint: 16 ulps of each coordinate), then off the surface along
-// its normal by offsetRayOrigin (256 ulps). A vertex on a contact line (a flat-shaded box's bottom
+// the offset it then gets off the surface along its normal (offsetRayOrigin with
+// surfaceErrorBound of the vertex and its one-ring's extent, ray_offset.h). Until
+// 2026-12-07 both steps were fixed numbers of ulps of the vertex's own
+// coordinates (16 and 256), which moved a bunny baked 3,000 units from the origin 0.06 units off
+// its surface (its AO off by up to 0.14) and one shrunk to 1.8 mm by 1% of its size (AO off by
+// up to 1: tests/baker/vertex_visibility_test, "...WhereTheMeshStandsOrItsSize"); the sixteenth
+// is the ratio those two had. A vertex on a contact line (a flat-shaded box's bottom
 // edge on the ground) lies on the other surface's plane too, and an upward ray from the vertex
 // itself met that surface at t ~ 0: its AO and transfer were 0, and the engine's interpolation
 // darkened the face (VisibilityPointSampling.AContactVertexSeesWhatItsFaceSees). The step takes
@@ -107,20 +112,24 @@ constexpr float kVertexOriginStep = 1.0f / 16.0f;
 
 glm::vec3 vertexRayOrigin(const Mesh& mesh, const OneRings& rings, std::size_t vertex) {
   const glm::vec3& p = mesh.positions[vertex];
-  glm::vec3 centroid(0.0f);
+  glm::vec3 centroid(0.0f), lower = p, upper = p;
   float area = 0.0f;
   for (std::size_t k = rings.start[vertex]; k < rings.start[vertex + 1]; ++k) {
     const std::size_t t = rings.triangles[k];
-    const glm::vec3 c = (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
-                         mesh.positions[mesh.indices[3 * t + 2]]) / 3.0f;
-    centroid += rings.areas[k] * c;
+    const glm::vec3 corners[3] = {mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
+                                  mesh.positions[mesh.indices[3 * t + 2]]};
+    centroid += rings.areas[k] * ((corners[0] + corners[1] + corners[2]) / 3.0f);
     area += rings.areas[k];
+    for (const glm::vec3& corner : corners) lower = glm::min(lower, corner), upper = glm::max(upper, corner);
   }
+  const glm::vec3 error = surfaceErrorBound(p, upper - lower);
+  const glm::vec3& normal = mesh.normals[vertex];
   const glm::vec3 towards = area > 0.0f && std::isfinite(area) ? centroid / area - p : glm::vec3(0.0f);
   const float length = glm::length(towards);
-  const glm::vec3 stepped =
-      length > 0.0f && std::isfinite(length) ? offsetPoint(p, towards / length, kVertexOriginStep) : p;
-  return offsetRayOrigin(stepped, mesh.normals[vertex]);
+  const glm::vec3 stepped = length > 0.0f && std::isfinite(length)
+                                ? p + (kVertexOriginStep * offsetDistance(error, normal) / length) * towards
+                                : p;
+  return offsetRayOrigin(stepped, error, normal);
 }
 
 bool aboveOneRing(const glm::vec3& direction, const glm::vec3* normals, std::size_t count) {
@@ -168,14 +177,15 @@ class VertexSampler {
                                mesh_.indices[3 * std::size_t(t) + 2]};
     while (corner[0] != vertex_) std::rotate(corner, corner + 1, corner + 3);
     if (h & 1u) std::swap(corner[1], corner[2]);
-    const glm::vec3 point = w[2] * mesh_.positions[corner[0]] + w[1] * mesh_.positions[corner[1]] +
-                            w[0] * mesh_.positions[corner[2]];
+    const glm::vec3 &p0 = mesh_.positions[corner[0]], &p1 = mesh_.positions[corner[1]],
+                    &p2 = mesh_.positions[corner[2]];
+    const glm::vec3 point = trianglePoint(p0, p1, p2, w[1], w[0]);
     const glm::vec3 faceNormal = rings_.normals[begin_ + k];
     glm::vec3 normal =
         w[2] * mesh_.normals[corner[0]] + w[1] * mesh_.normals[corner[1]] + w[0] * mesh_.normals[corner[2]];
     const float length = glm::length(normal);
     normal = length > 0.0f && std::isfinite(length) ? normal / length : faceNormal;
-    ray.origin = offsetRayOrigin(point, faceNormal);
+    ray.origin = offsetRayOrigin(point, surfaceErrorBound(point, triangleExtent(p0, p1, p2)), faceNormal);
     return direction(i, Frame::fromZ(normal), &faceNormal, 1, ray.direction, rejected);
   }
 

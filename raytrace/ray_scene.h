@@ -131,10 +131,13 @@ class RayScene {
   // (rtcOccluded8), each ray with its own query. `blocked` has the size of `rays`.
   void occluded(std::span<const OcclusionQuery> rays, std::span<std::uint8_t> blocked) const;
 
-  // The hit point recomputed from the triangle's corners and the barycentrics, which is more
-  // accurate than origin + t * direction (Wächter and Binder, Ray Tracing Gems chapter 6): the
-  // point to pass to offsetRayOrigin. `hit` must be a hit of this scene.
+  // The hit point recomputed from the triangle's corners and the barycentrics (trianglePoint,
+  // ray_offset.h), which is more accurate than origin + t * direction (Wächter and Binder, Ray
+  // Tracing Gems chapter 6): the point to pass to offsetRayOrigin. `hit` must be a hit of this scene.
   glm::vec3 surfacePoint(const Hit& hit) const;
+  // A bound on each coordinate's rounding in surfacePoint(hit) (surfaceErrorBound, ray_offset.h):
+  // the error to pass to offsetRayOrigin with that point.
+  glm::vec3 surfacePointError(const Hit& hit) const;
 
   // Axis-aligned box around every vertex added (zero box for an empty scene).
   Bounds bounds() const;

@@ -6,7 +6,7 @@
 
 namespace iblkit {
 
-OcclusionSample sampleAmbientOcclusion(const RayScene& rays, const glm::vec3& position,
+OcclusionSample sampleAmbientOcclusion(const RayScene& rays, const glm::vec3& position, const glm::vec3* positionError,
                                        const glm::vec3& geometricNormal, const glm::vec3& shadingNormal,
                                        glm::vec2 u, float maxDistance) {
   OcclusionSample sample;
@@ -14,7 +14,8 @@ OcclusionSample sampleAmbientOcclusion(const RayScene& rays, const glm::vec3& po
   // The side of the surface the ray leaves into.
   const glm::vec3 side =
       glm::dot(sample.direction, geometricNormal) > 0.0f ? geometricNormal : -geometricNormal;
-  sample.escaped = !rays.occluded(offsetRayOrigin(position, side), sample.direction, 0.0f, maxDistance);
+  const glm::vec3 origin = positionError ? offsetRayOrigin(position, *positionError, side) : offsetRayOrigin(position, side);
+  sample.escaped = !rays.occluded(origin, sample.direction, 0.0f, maxDistance);
   return sample;
 }
 

@@ -319,7 +319,7 @@ void Integrator::sampleGroundOcclusion(const Path& p, std::size_t index, int lig
   result.radiance += lit * ground_->unoccludedIrradiance();
   if (p.exact && p.occluders.empty) return;
   const float samples = float(lightSamples);
-  const glm::vec3 origin = offsetRayOrigin(point.position, ng);
+  const glm::vec3 origin = offsetRayOrigin(point.position, point.positionError, ng);
   for (int j = 0; j < lightSamples; ++j) {
     const glm::vec2 u = splitDraws ? splitDraws[j] : p.uLight;
     // Exact: outside the cone nothing is blocked and O's integrand is 0 there, so no ray is needed
@@ -472,7 +472,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
       p.covered = ground_ && p.point.isGround && p.brdf && groundCoverable(p.point) &&
                   p.point.shadingNormal.y >= kTiltedUpCosine && p.point.geometricNormal.y >= kUpCosine;
       if (p.covered) {
-        p.occluders = ground_->coneAt(offsetRayOrigin(p.point.position, p.point.geometricNormal));
+        p.occluders = ground_->coneAt(offsetRayOrigin(p.point.position, p.point.positionError, p.point.geometricNormal));
         p.exact = groundLambert(p.point) && p.point.shadingNormal.y >= kUpCosine;
         p.control = p.exact ? evalReflection(&*p.brdf, p.point.baseColor, p.point.shadingNormal, wo,
                                              p.point.shadingNormal)
@@ -523,7 +523,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
             const float density = samples * light.pdf;
             const float weight =
                 combine ? powerHeuristic(density, pdfReflection(brdf, n, wo, light.direction)) : 1.0f;
-            shadows.rays.push_back({offsetRayOrigin(point.position, ng), light.direction, 0.0f, kInfinity,
+            shadows.rays.push_back({offsetRayOrigin(point.position, point.positionError, ng), light.direction, 0.0f, kInfinity,
                                     RayQuery{RayKind::Secondary, p.cone}});
             shadows.light.push_back({i, p.throughput * f * light.radiance * (cosTheta * weight / density), glm::vec3(0.0f)});
           }
@@ -589,7 +589,7 @@ void Integrator::traceRadiance(std::span<Path> paths, std::span<PixelSampler> sa
         p.throughput /= q;
         p.previousControl /= q;
       }
-      p.ray = Ray{offsetRayOrigin(point.position, sideFacing(ng, scattered.wi)), scattered.wi};
+      p.ray = Ray{offsetRayOrigin(point.position, point.positionError, sideFacing(ng, scattered.wi)), scattered.wi};
     }
   }
 }
@@ -606,8 +606,8 @@ void Integrator::traceOcclusion(const Ray& ray, PixelSampler& sampler, const Ray
   recordFirstHit(point, hit.t, result);
   ++result.rays;
   const OcclusionSample sample =
-      sampleAmbientOcclusion(scene_.rays(), point.position, point.geometricNormal, point.shadingNormal,
-                             sampler.next2D(), settings_.aoDistance);
+      sampleAmbientOcclusion(scene_.rays(), point.position, &point.positionError, point.geometricNormal,
+                             point.shadingNormal, sampler.next2D(), settings_.aoDistance);
   if (!sample.escaped) return;
   result.radiance = glm::vec3(1.0f);
   result.unoccludedDirection = sample.direction;

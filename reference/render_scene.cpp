@@ -92,6 +92,7 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
 
   SurfacePoint point;
   point.position = rays_.surfacePoint(hit);
+  point.positionError = rays_.surfacePointError(hit);
   point.geometricNormal =
       glm::dot(hit.geometricNormal, wo) < 0.0f ? -hit.geometricNormal : hit.geometricNormal;
   const float length = glm::length(interpolated);

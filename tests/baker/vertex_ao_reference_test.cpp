@@ -47,7 +47,7 @@ std::vector<std::vector<float>> referenceAo(const std::vector<Mesh>& meshes, flo
       PCG32 rng(1234 + m, v);
       int escaped = 0;
       for (int i = 0; i < kRays; ++i)
-        escaped += sampleAmbientOcclusion(rays, meshes[m].positions[v], meshes[m].normals[v],
+        escaped += sampleAmbientOcclusion(rays, meshes[m].positions[v], nullptr, meshes[m].normals[v],
                                           meshes[m].normals[v], rng.uniform2D(), maxDistance)
                        .escaped;
       ao[m].push_back(float(escaped) / float(kRays));

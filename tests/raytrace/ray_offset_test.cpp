@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "core/procedural_mesh.h"
@@ -43,7 +45,9 @@ glm::vec3 hemisphereDirection(glm::vec3 n, std::mt19937& rng) {
 
 struct SelfHits {
   int offset = 0;    // rays from offsetRayOrigin(surfacePoint, n) that hit the triangle again
+  int bounded = 0;   // rays from offsetRayOrigin(surfacePoint, surfacePointError, n) that did
   int unoffset = 0;  // rays from the bare surfacePoint that did
+  float largestStep = 0.0f;  // the largest distance the bounded offset moved a point
 };
 
 // Shoots rays from random points on both sides at one triangle (the only one in the scene), and
@@ -73,6 +77,9 @@ SelfHits countSelfHits(const std::vector<glm::vec3>& triangle, int samples) {
     const glm::vec3 direction = hemisphereDirection(n, rng);
     const glm::vec3 p = scene.surfacePoint(hit);
     count.offset += scene.occluded(offsetRayOrigin(p, n), direction, 0.0f, kInfinity);
+    const glm::vec3 bounded = offsetRayOrigin(p, scene.surfacePointError(hit), n);
+    count.bounded += scene.occluded(bounded, direction, 0.0f, kInfinity);
+    count.largestStep = std::max(count.largestStep, glm::distance(bounded, p));
     count.unoffset += scene.occluded(p, direction, 0.0f, kInfinity);
   }
   return count;
@@ -91,6 +98,26 @@ TEST(RayOffset, OffsetOriginsNeverReHitTheirTriangle) {
       // The test can fail: without the offset about half of the same rays re-hit the triangle.
       EXPECT_GT(hits.unoffset, 400) << "triangle of size " << size << " at " << corner.x;
     }
+}
+
+TEST(RayOffset, ErrorBoundedOriginsNeverReHitTheirTriangleAndMoveByTheirRounding) {
+  // From 1e-6 to 1e3 units, at the origin and up to 1e5 from it, and a large triangle whose points
+  // near 0 carry its corners' rounding.
+  // (A triangle of 1e-4 at 1e4 is below the float grid there: it is tested near the origin only.)
+  for (const glm::vec3 corner : {glm::vec3(0.3f, -0.2f, 0.1f), glm::vec3(1e4f, -1.2e4f, 0.7e4f),
+                                 glm::vec3(-3e3f, 2e3f, 1e3f), glm::vec3(1e5f, 1e3f, -1e5f)})
+    for (float size : {1e3f, 1.0f, 1e-2f, 1e-4f, 1e-6f}) {
+      if (size < 1e-3f && std::abs(corner.x) > 1.0f) continue;
+      const SelfHits hits = countSelfHits(tiltedTriangle(corner, size), 20000);
+      EXPECT_EQ(hits.bounded, 0) << "triangle of size " << size << " at " << corner.x;
+      EXPECT_GT(hits.unoffset, 2000) << "triangle of size " << size << " at " << corner.x;
+      // The step is the rounding's extent: a few dozen ulps of the largest corner coordinate
+      // (the 256-ulp offset above moves up to 256 of them).
+      const float magnitude = std::max({std::abs(corner.x), std::abs(corner.y), std::abs(corner.z)}) + 2.0f * size;
+      EXPECT_LT(hits.largestStep, 64.0f * magnitude * 0x1p-23f) << "triangle of size " << size << " at " << corner.x;
+    }
+  const SelfHits straddling = countSelfHits(tiltedTriangle(glm::vec3(-500.0f, -300.0f, -400.0f), 1e3f), 20000);
+  EXPECT_EQ(straddling.bounded, 0);
 }
 
 TEST(RayOffset, RayEpsilonKeepsAShadowRayFromHittingItsTarget) {
