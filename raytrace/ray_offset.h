@@ -71,8 +71,8 @@ inline glm::vec3 offsetRayOrigin(glm::vec3 p, glm::vec3 geometricNormal) { retur
 //   error_c = 2^-23 |p_c| + kPointErrorScale extent_c (surfaceErrorBound: twice the first, and
 //     kPointErrorMargin times gamma(7) of the triangles' extent: Embree's own tests subtract the
 //     ray's origin from the corners, exact again, and err relative to the triangles' size too);
-//   p' = p + max(|n| . error, 2^-10 max_c error_c) n, each coordinate then rounded one float
-//     further from p (offsetRayOrigin below).
+//   p' = p + max(|n| . error, 2^-10 max_c error_c) n, with the step along n made good where
+//     rounding to floats lost part of it (offsetRayOrigin below).
 //
 // pbrt bounds an interpolated point by gamma(7) (|b0 p0| + |b1 p1| + |b2 p2|): relative to where
 // the triangle stands, which at 3,000 units moved a point of a bunny's sole, 1.8e-4 above the
