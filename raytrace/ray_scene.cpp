@@ -336,19 +336,12 @@ void RayScene::occluded(std::span<const OcclusionQuery> rays, std::span<std::uin
   occludedPackets<8>(scene_.get(), rays, blocked);
 }
 
-glm::vec3 RayScene::surfacePoint(const Hit& hit) const {
-  const MeshBuffers& mesh = meshes_.at(hit.geomId);
-  const uint32_t* corner = mesh.indices + 3 * std::size_t(hit.primId);
-  return trianglePoint(mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]],
-                       hit.barycentrics.x, hit.barycentrics.y);
-}
-
-glm::vec3 RayScene::surfacePointError(const Hit& hit) const {
+RayScene::SurfacePosition RayScene::surfacePosition(const Hit& hit) const {
   const MeshBuffers& mesh = meshes_.at(hit.geomId);
   const uint32_t* corner = mesh.indices + 3 * std::size_t(hit.primId);
   const glm::vec3 &p0 = mesh.positions[corner[0]], &p1 = mesh.positions[corner[1]], &p2 = mesh.positions[corner[2]];
-  return surfaceErrorBound(trianglePoint(p0, p1, p2, hit.barycentrics.x, hit.barycentrics.y),
-                           triangleExtent(p0, p1, p2));
+  const glm::vec3 point = trianglePoint(p0, p1, p2, hit.barycentrics.x, hit.barycentrics.y);
+  return {point, surfaceErrorBound(point, triangleExtent(p0, p1, p2))};
 }
 
 RayScene::Bounds RayScene::bounds() const { return bounds_; }

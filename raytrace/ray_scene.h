@@ -134,10 +134,13 @@ class RayScene {
   // The hit point recomputed from the triangle's corners and the barycentrics (trianglePoint,
   // ray_offset.h), which is more accurate than origin + t * direction (Wächter and Binder, Ray
   // Tracing Gems chapter 6): the point to pass to offsetRayOrigin. `hit` must be a hit of this scene.
-  glm::vec3 surfacePoint(const Hit& hit) const;
-  // A bound on each coordinate's rounding in surfacePoint(hit) (surfaceErrorBound, ray_offset.h):
-  // the error to pass to offsetRayOrigin with that point.
-  glm::vec3 surfacePointError(const Hit& hit) const;
+  glm::vec3 surfacePoint(const Hit& hit) const { return surfacePosition(hit).point; }
+  // surfacePoint(hit) with a bound on each coordinate's rounding (surfaceErrorBound,
+  // ray_offset.h): the error to pass to offsetRayOrigin with that point.
+  struct SurfacePosition {
+    glm::vec3 point{0.0f}, error{0.0f};
+  };
+  SurfacePosition surfacePosition(const Hit& hit) const;
 
   // Axis-aligned box around every vertex added (zero box for an empty scene).
   Bounds bounds() const;

@@ -19,7 +19,7 @@ struct OcclusionSample {
 // `geometricNormal` is the unit normal of the surface's plane (for the origin offset),
 // `shadingNormal` the unit normal the hemisphere is about, `u` a point of [0,1)^2 (Malley's method
 // with the concentric map, sampling.h), `maxDistance` > 0 (infinity: no limit). `positionError`:
-// the position's error bound (a hit point's, RayScene::surfacePointError), for the offset by it;
+// the position's error bound (a hit point's, RayScene::surfacePosition), for the offset by it;
 // null for a point without one (a mesh vertex: the fixed offset of ray_offset.h).
 OcclusionSample sampleAmbientOcclusion(const RayScene& rays, const glm::vec3& position, const glm::vec3* positionError,
                                        const glm::vec3& geometricNormal, const glm::vec3& shadingNormal,

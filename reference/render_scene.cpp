@@ -91,8 +91,9 @@ SurfacePoint RenderScene::surfacePoint(const Hit& hit, const glm::vec3& wo, cons
   const glm::vec3 interpolated = interpolateAtHit(mesh.normals, corner, hit.barycentrics);
 
   SurfacePoint point;
-  point.position = rays_.surfacePoint(hit);
-  point.positionError = rays_.surfacePointError(hit);
+  const RayScene::SurfacePosition position = rays_.surfacePosition(hit);
+  point.position = position.point;
+  point.positionError = position.error;
   point.geometricNormal =
       glm::dot(hit.geometricNormal, wo) < 0.0f ? -hit.geometricNormal : hit.geometricNormal;
   const float length = glm::length(interpolated);

@@ -23,7 +23,7 @@ namespace iblkit {
 // What an integrator needs to know about a hit point.
 struct SurfacePoint {
   glm::vec3 position{0.0f};  // from the triangle's corners and barycentrics (for offsetRayOrigin)
-  glm::vec3 positionError{0.0f};  // a bound on its rounding (RayScene::surfacePointError)
+  glm::vec3 positionError{0.0f};  // a bound on its rounding (RayScene::surfacePosition)
   // Unit normal of the triangle's plane, flipped towards the side the ray came from (wo).
   glm::vec3 geometricNormal{0.0f};
   // Unit interpolated vertex normal, flipped to the same side as geometricNormal. Where it still

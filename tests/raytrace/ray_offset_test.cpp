@@ -45,7 +45,7 @@ glm::vec3 hemisphereDirection(glm::vec3 n, std::mt19937& rng) {
 
 struct SelfHits {
   int offset = 0;    // rays from offsetRayOrigin(surfacePoint, n) that hit the triangle again
-  int bounded = 0;   // rays from offsetRayOrigin(surfacePoint, surfacePointError, n) that did
+  int bounded = 0;   // rays from offsetRayOrigin(surfacePosition's point and error, n) that did
   int unoffset = 0;  // rays from the bare surfacePoint that did
   float largestStep = 0.0f;  // the largest distance the bounded offset moved a point
 };
@@ -77,7 +77,7 @@ SelfHits countSelfHits(const std::vector<glm::vec3>& triangle, int samples) {
     const glm::vec3 direction = hemisphereDirection(n, rng);
     const glm::vec3 p = scene.surfacePoint(hit);
     count.offset += scene.occluded(offsetRayOrigin(p, n), direction, 0.0f, kInfinity);
-    const glm::vec3 bounded = offsetRayOrigin(p, scene.surfacePointError(hit), n);
+    const glm::vec3 bounded = offsetRayOrigin(p, scene.surfacePosition(hit).error, n);
     count.bounded += scene.occluded(bounded, direction, 0.0f, kInfinity);
     count.largestStep = std::max(count.largestStep, glm::distance(bounded, p));
     count.unoffset += scene.occluded(p, direction, 0.0f, kInfinity);
