@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "core/relative_squared_error.h"
 #include "core/scene_environment.h"
 #include "reference/test_scenes.h"
 #include "support/error_capture.h"
@@ -63,16 +64,12 @@ TEST(Render, LayersDescribeTheFirstHit) {
   EXPECT_GT(r.variance.stats().max.r, 0.0f);
 }
 
-// relMSE of b against a over the pixels (the scorer's form: squared difference over a^2 + 0.01).
+// relMSE of b against a over the pixels (the scorer's term, core/relative_squared_error.h).
 double relativeMse(const Image& a, const Image& b) {
   double sum = 0.0;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x)
-      for (int c = 0; c < 3; ++c) {
-        const double r = a.at(x, y)[c], t = b.at(x, y)[c];
-        sum += (t - r) * (t - r) / (r * r + 0.01);
-      }
-  return sum / (3.0 * a.width() * a.height());
+  for (std::size_t i = 0; i < a.pixels().size(); ++i)
+    for (int c = 0; c < 3; ++c) sum += relativeSquaredError(a.pixels()[i][c], b.pixels()[i][c]);
+  return sum / (3.0 * double(a.pixels().size()));
 }
 
 // The bunny on its ground placed 3,000 units from the origin, or shrunk 1,000 times, renders the
