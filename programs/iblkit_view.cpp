@@ -300,7 +300,7 @@ int runHeadless(const Options& options) {
       std::cout << "  lights-shadowed with its " << lights << " shadow map(s) of " << kShadowMapSize << "^2 rendered "
                 << "again each frame: cpu " << fresh.cpuMs << " ms (the maps: " << fresh.cpuMs - cached << " ms)\n";
       if (full > 0.0) {
-        // The two frames alone, in turn (A/B pairs, as farm-bench times two commands): every other
+        // The two frames alone, in turn (A/B pairs, as an A/B timer runs two commands): every other
         // mode's frame in between evicts the shadowed frame's maps and targets from the caches,
         // which a viewer drawing one mode does not pay.
         const std::vector<FrameTimes> pair =

@@ -41,7 +41,8 @@ struct FrameSettings {
   int lightCount = -1;
   bool shadows = true;
   // lights-shadowed on a single-sample target: the shadows computed once per pixel in a screen-space
-  // pass (shadow_mask.h) rather than in the lit pass; the same frame to the mask's 8 bits, faster
+  // pass (shadow_mask.h) rather than in the lit pass; the same frame to the mask's precision (16
+  // bits at the frame's resolution, 8 at a coarser one; shadow_mask.frag's MASK_BITS), faster
   // on a software rasteriser (docs/engine.md "Shadows"). Multisampled targets always shadow in the
   // lit pass.
   bool shadowMask = true;
