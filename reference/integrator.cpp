@@ -45,8 +45,8 @@ constexpr float kGroundControlMinAlpha = 0.25f;
 // Ground points whose visible fraction of E_up (ground_visibility.h) is below this take it as the
 // control's coefficient; the others keep 1. The coefficient's gain is where the objects hide much
 // of the light (the penumbrae and shadows), and elsewhere it costs the exact case's shortcuts:
-// bunny under venice, coefficient wherever the fraction is below 1, CPU time 1.2x (farm-bench -n
-// 11, 1.06-1.33) for the same relMSE; below 0.5, 0.99x (0.96-1.02), and the same gain under studio
+// bunny under venice, coefficient wherever the fraction is below 1, CPU time 1.2x (11 alternated
+// pairs, 1.06-1.33) for the same relMSE; below 0.5, 0.99x (0.96-1.02), and the same gain under studio
 // (docs/benchmarks.md "Ground occlusion on specular grounds").
 constexpr float kGroundCoefficientBelow = 0.5f;
 

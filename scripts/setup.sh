@@ -15,6 +15,7 @@ packages=(
   xvfb xauth xdotool  # the window tests: a virtual X server, and real input events (tests/view)
   x11-xserver-utils  # xrdb: a high-DPI X screen (Xft.dpi) for the window tests
   chromium chromium-driver  # the report page's browser test (tests/programs/report_page_browser_test.py)
+  time  # GNU time: scripts/ab-time.sh, the A/B timings of docs/benchmarks.md
   slurm-wlm munge  # the one-node Slurm cluster of tests/programs/cluster_slurm_trace_test.sh (docs/cluster.md)
 )
 
