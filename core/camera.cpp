@@ -29,6 +29,11 @@ Camera Camera::lookAt(const glm::vec3& eye, const glm::vec3& target, const glm::
 
 glm::mat4 Camera::viewMatrix() const { return glm::lookAt(position, position + forward, up); }
 
+glm::mat4 Camera::viewMatrix(const glm::dvec3& origin) const {
+  const glm::vec3 eye(glm::dvec3(position) - origin);
+  return glm::lookAt(eye, eye + forward, up);
+}
+
 glm::mat4 Camera::projectionMatrix(float aspect) const {
   return glm::perspective(yfovRadians, aspect, znear, zfar);
 }

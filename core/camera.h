@@ -30,6 +30,11 @@ struct Camera {
 
   // World to camera space (OpenGL convention: the camera looks down -Z), glm::lookAt.
   glm::mat4 viewMatrix() const;
+  // viewMatrix() of the world moved by -origin: the camera's position taken relative to `origin`
+  // in double, so that a renderer whose vertices are relative to a point near the scene
+  // (engine/gl/render_space.h) keeps the precision of the scene's own size however far from the
+  // world's origin it stands. viewMatrix(0) is viewMatrix() up to the rounding of the position.
+  glm::mat4 viewMatrix(const glm::dvec3& origin) const;
   // Camera space to clip space, glm::perspective (NDC depth in [-1, 1]); aspect = width / height.
   glm::mat4 projectionMatrix(float aspect) const;
   // The ray from the camera position through raster position `rasterPos` (see the pixel

@@ -74,7 +74,8 @@ vec4 upsampledShadowMask(vec2 depthGradient) {
 #endif
 
 layout(binding = kTextureUnitShadowDepth) uniform sampler2DArray shadowMoments;  // trilinear
-// Light i's map: world -> (u, v, depth) in [0, 1] (depth 0 on the side of the light).
+// Light i's map: world -> (u, v, depth) in [0, 1] (depth 0 on the side of the light). "World" in the
+// engine's shaders is render space (engine/gl/render_space.h): world space moved by the scene's centre.
 uniform mat4 shadowFromWorld[kMaxEngineLights];
 // World extent of the map: x, y the sides along u and v, z the depth range; w the texel's side.
 uniform vec4 shadowExtent[kMaxEngineLights];

@@ -34,10 +34,12 @@ std::span<const float> bakedAttribute(const Mesh& mesh, const char* name, int co
 
 }  // namespace
 
-GpuMesh::GpuMesh(const Mesh& mesh) : indexCount_(GLsizei(mesh.indices.size())) {
+GpuMesh::GpuMesh(const Mesh& mesh, const RenderSpace& space) : indexCount_(GLsizei(mesh.indices.size())) {
   const std::size_t n = mesh.vertexCount();
+  const std::vector<glm::vec3> moved = space.origin == glm::dvec3(0.0) ? std::vector<glm::vec3>() : space.positions(mesh);
+  const std::vector<glm::vec3>& positions = moved.empty() ? mesh.positions : moved;
   std::vector<Stream> streams = {
-      {kAttributePosition, 3, {reinterpret_cast<const float*>(mesh.positions.data()), 3 * n}},
+      {kAttributePosition, 3, {reinterpret_cast<const float*>(positions.data()), 3 * n}},
       {kAttributeNormal, 3, {reinterpret_cast<const float*>(mesh.normals.data()), 3 * n}},
       {kAttributeAo, 1, bakedAttribute(mesh, kAmbientOcclusionAttribute, 1)},
       {kAttributeBentNormal, 3, bakedAttribute(mesh, kBentNormalAttribute, 3)},

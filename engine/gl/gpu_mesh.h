@@ -9,6 +9,7 @@
 
 #include "core/mesh.h"
 #include "engine/gl/gpu_mesh_attribute.h"
+#include "engine/gl/render_space.h"
 
 namespace iblkit {
 
@@ -20,9 +21,10 @@ struct TriangleRun {
 
 class GpuMesh {
  public:
-  // Uploads `mesh`; every baked attribute must be present (readBakeFolder checks), else
+  // Uploads `mesh`, its positions in render space `space` (render_space.h; the default is world
+  // space); every baked attribute must be present (readBakeFolder checks), else
   // Error("<mesh name>: missing baked attribute <name>").
-  explicit GpuMesh(const Mesh& mesh);
+  explicit GpuMesh(const Mesh& mesh, const RenderSpace& space = {});
   GpuMesh(GpuMesh&& other) noexcept;
   GpuMesh& operator=(GpuMesh&& other) noexcept;
   GpuMesh(const GpuMesh&) = delete;

@@ -83,6 +83,10 @@ float envRotationFromBake(const EnvironmentStages& env, std::optional<float> deg
 
 struct Renderer::Impl {
   Scene scene;
+  // Where the GPU's positions are relative to (render_space.h): the meshes are uploaded, the
+  // shadow maps fitted and the camera placed in it.
+  RenderSpace space;
+  std::vector<Mesh> shapes;  // per mesh, RenderSpace::shape: what the shadow maps are fitted to
   std::vector<GpuMesh> meshes;
   std::vector<bool> constantNormal;  // hasConstantNormal per mesh
   // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn, shadows
@@ -169,8 +173,10 @@ struct Renderer::Impl {
 
 Renderer::Renderer(const BakedScene& bake, float textureAnisotropy) : impl_(std::make_unique<Impl>()) {
   impl_->scene = bake.scene;
+  impl_->space = RenderSpace::of(bake.scene);
   for (const Mesh& mesh : bake.scene.meshes) {
-    impl_->meshes.emplace_back(mesh);
+    impl_->shapes.push_back(impl_->space.shape(mesh));
+    impl_->meshes.emplace_back(mesh, impl_->space);
     impl_->constantNormal.push_back(hasConstantNormal(mesh));
   }
   impl_->materialTextures = MaterialTextures(bake.scene, textureAnisotropy);
@@ -255,12 +261,12 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
       std::vector<ShadowLight> shadowLights;
       for (const EnvironmentLight& light : drawn.lights)
         shadowLights.push_back({light.direction, std::tan(light.angularRadius)});
-      r.shadowMaps->update(r.scene.meshes, r.meshes, shadowLights);
+      r.shadowMaps->update(r.shapes, r.meshes, shadowLights);
       r.shadowMaps->bind();
       if (r.coverageRenders != r.shadowMaps->renderCount()) {
         r.shadowCoverage.assign(r.scene.meshes.size(), {});
         for (std::size_t i = 0; i < r.scene.meshes.size(); ++i)
-          if (r.scene.meshes[i].isGround) r.shadowCoverage[i] = shadowCoverage(r.scene.meshes[i], r.shadowMaps->frames());
+          if (r.shapes[i].isGround) r.shadowCoverage[i] = shadowCoverage(r.shapes[i], r.shadowMaps->frames());
         r.coverageRenders = r.shadowMaps->renderCount();
       }
     }
@@ -271,8 +277,9 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   GLint samples = 1;
   glGetIntegerv(GL_SAMPLES, &samples);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  // Everything the GPU draws is in render space (render_space.h): the camera too.
   const glm::mat4 viewProjection =
-      camera.projectionMatrix(float(width) / float(height)) * camera.viewMatrix();
+      camera.projectionMatrix(float(width) / float(height)) * camera.viewMatrix(r.space.origin);
   const glm::vec2 latLongRotation = inverseRotation(r.rotationDegrees + settings.envRotationDegrees);
   // SH9 radiance turned by the extra rotation (the scene's is in the baked coefficients).
   const SphericalHarmonics9 sh =
@@ -285,7 +292,7 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   auto setFrameUniforms = [&](const ShaderProgram& program) {
     program.set("framebufferSamples", int(samples));
     program.set("viewProjection", viewProjection);
-    program.set("cameraPosition", camera.position);
+    program.set("cameraPosition", r.space.fromWorld(camera.position));
     program.setArray("shRadiance", sh.coefficients.data(), kShCoefficients);
     program.set("latLongRotation", latLongRotation);
     program.set("latLongIntensity", r.intensity);

@@ -64,6 +64,33 @@ TEST(Camera, RasterOriginIsTheTopLeftCorner) {
   EXPECT_NEAR(corner.direction.z, expected.z, 1e-6f);
 }
 
+TEST(Camera, ViewMatrixFromAnOriginSeesTheWorldMovedByIt) {
+  // viewMatrix(o) applied to p - o is viewMatrix() applied to p; far from the world's origin it
+  // keeps the precision of the offsets (the engine's render space).
+  const Camera camera = Camera::lookAt(glm::vec3(3.0f, 2.0f, 5.0f), glm::vec3(0.5f, 0.0f, -1.0f), glm::vec3(0, 1, 0),
+                                       glm::radians(40.0f), 0.1f, 100.0f);
+  const glm::dvec3 origin(1.25, -0.5, 2.0);
+  for (const glm::vec3 p : {glm::vec3(0.0f), glm::vec3(1.0f, 2.0f, -3.0f), glm::vec3(-4.0f, 0.5f, 0.25f)}) {
+    const glm::vec4 world = camera.viewMatrix() * glm::vec4(p, 1.0f);
+    const glm::vec4 moved = camera.viewMatrix(origin) * glm::vec4(glm::vec3(glm::dvec3(p) - origin), 1.0f);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(moved[k], world[k], 1e-5f) << k;
+  }
+  // 36,000 units out (a float's step there is 1/256), a point a short exact offset from the camera:
+  // in camera space the offset turned by the camera's basis. The world-space matrix loses it to
+  // the rounding of its products with 36,000-unit coordinates.
+  Camera far = camera;
+  far.position += glm::vec3(30000.0f, 0.0f, -20000.0f);
+  const glm::vec3 offset(0.25f, 0.125f, -0.5f);
+  const glm::vec3 p = far.position + offset;  // exact
+  const glm::vec3 right = glm::normalize(glm::cross(far.forward, far.up));
+  const glm::vec3 expected(glm::dot(offset, right), glm::dot(offset, far.up), -glm::dot(offset, far.forward));
+  const glm::dvec3 o(far.position);
+  const glm::vec4 precise = far.viewMatrix(o) * glm::vec4(glm::vec3(glm::dvec3(p) - o), 1.0f);
+  const glm::vec4 rounded = far.viewMatrix() * glm::vec4(p, 1.0f);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(precise[k], expected[k], 1e-6f) << k;
+  EXPECT_GT(glm::length(glm::vec3(rounded) - expected), 1e-4f);
+}
+
 TEST(ClipPlanes, FollowDistanceAndRadius) {
   Bounds bounds;
   bounds.extend(glm::vec3(-1.0f, 0.0f, 0.0f));
