@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -34,10 +35,11 @@ std::span<const float> bakedAttribute(const Mesh& mesh, const char* name, int co
 
 }  // namespace
 
-GpuMesh::GpuMesh(const Mesh& mesh, const RenderSpace& space) : indexCount_(GLsizei(mesh.indices.size())) {
+GpuMesh::GpuMesh(const Mesh& mesh, std::span<const glm::vec3> positions) : indexCount_(GLsizei(mesh.indices.size())) {
   const std::size_t n = mesh.vertexCount();
-  const std::vector<glm::vec3> moved = space.origin == glm::dvec3(0.0) ? std::vector<glm::vec3>() : space.positions(mesh);
-  const std::vector<glm::vec3>& positions = moved.empty() ? mesh.positions : moved;
+  if (positions.empty()) positions = mesh.positions;
+  if (positions.size() != n)
+    fail(mesh.name, std::to_string(positions.size()) + " positions given for " + std::to_string(n) + " vertices");
   std::vector<Stream> streams = {
       {kAttributePosition, 3, {reinterpret_cast<const float*>(positions.data()), 3 * n}},
       {kAttributeNormal, 3, {reinterpret_cast<const float*>(mesh.normals.data()), 3 * n}},

@@ -5,11 +5,11 @@
 #include <epoxy/gl.h>
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "core/mesh.h"
 #include "engine/gl/gpu_mesh_attribute.h"
-#include "engine/gl/render_space.h"
 
 namespace iblkit {
 
@@ -21,10 +21,10 @@ struct TriangleRun {
 
 class GpuMesh {
  public:
-  // Uploads `mesh`, its positions in render space `space` (render_space.h; the default is world
-  // space); every baked attribute must be present (readBakeFolder checks), else
-  // Error("<mesh name>: missing baked attribute <name>").
-  explicit GpuMesh(const Mesh& mesh, const RenderSpace& space = {});
+  // Uploads `mesh`, with `positions` in place of mesh.positions where given (one per vertex: the
+  // renderer's render space, render_space.h); every baked attribute must be present
+  // (readBakeFolder checks), else Error("<mesh name>: missing baked attribute <name>").
+  explicit GpuMesh(const Mesh& mesh, std::span<const glm::vec3> positions = {});
   GpuMesh(GpuMesh&& other) noexcept;
   GpuMesh& operator=(GpuMesh&& other) noexcept;
   GpuMesh(const GpuMesh&) = delete;

@@ -10,17 +10,11 @@ RenderSpace RenderSpace::of(const Scene& scene) {
   return {glm::dvec3(bounds.empty() ? glm::vec3(0.0f) : bounds.center())};
 }
 
-std::vector<glm::vec3> RenderSpace::positions(const Mesh& mesh) const {
-  std::vector<glm::vec3> out;
-  out.reserve(mesh.positions.size());
-  for (const glm::vec3& p : mesh.positions) out.push_back(fromWorld(p));
-  return out;
-}
-
 Mesh RenderSpace::shape(const Mesh& mesh) const {
   Mesh out;
   out.name = mesh.name;
-  out.positions = positions(mesh);
+  out.positions.reserve(mesh.positions.size());
+  for (const glm::vec3& p : mesh.positions) out.positions.push_back(fromWorld(p));
   out.indices = mesh.indices;
   out.isGround = mesh.isGround;
   return out;

@@ -12,7 +12,6 @@
 // (Camera::viewMatrix(origin)): the frame depends on the scene's size, not on where it stands
 // (docs/engine.md "Render space"). Directions (normals, lights, the environment) do not change.
 #include <glm/glm.hpp>
-#include <vector>
 
 #include "core/mesh.h"
 #include "core/scene.h"
@@ -27,10 +26,8 @@ struct RenderSpace {
   static RenderSpace of(const Scene& scene);
 
   glm::vec3 fromWorld(const glm::vec3& world) const { return glm::vec3(glm::dvec3(world) - origin); }
-  // The mesh's positions in render space.
-  std::vector<glm::vec3> positions(const Mesh& mesh) const;
-  // What the shadow maps fit their frames to: the mesh's positions in render space, its
-  // triangles and whether it is the ground (no other attribute).
+  // The mesh's positions in render space, its triangles and whether it is the ground (no other
+  // attribute): what the renderer uploads as positions and fits the shadow maps to.
   Mesh shape(const Mesh& mesh) const;
 };
 

@@ -15,6 +15,7 @@
 #include "engine/gl/drawn_lights.h"
 #include "engine/gl/light_constants.h"
 #include "engine/gl/residual_truncation.h"
+#include "engine/gl/render_space.h"
 #include "engine/gl/shadow_maps.h"
 #include "engine/gl/shadow_mask.h"
 #include "engine/gl/gpu_mesh.h"
@@ -86,7 +87,8 @@ struct Renderer::Impl {
   // Where the GPU's positions are relative to (render_space.h): the meshes are uploaded, the
   // shadow maps fitted and the camera placed in it.
   RenderSpace space;
-  std::vector<Mesh> shapes;  // per mesh, RenderSpace::shape: what the shadow maps are fitted to
+  // Per mesh, RenderSpace::shape: the positions uploaded, and what the shadow maps are fitted to.
+  std::vector<Mesh> shapes;
   std::vector<GpuMesh> meshes;
   std::vector<bool> constantNormal;  // hasConstantNormal per mesh
   // mesh.frag specialised per (mode, layer, texture slots read, alpha mode, lights drawn, shadows
@@ -176,7 +178,7 @@ Renderer::Renderer(const BakedScene& bake, float textureAnisotropy) : impl_(std:
   impl_->space = RenderSpace::of(bake.scene);
   for (const Mesh& mesh : bake.scene.meshes) {
     impl_->shapes.push_back(impl_->space.shape(mesh));
-    impl_->meshes.emplace_back(mesh, impl_->space);
+    impl_->meshes.emplace_back(mesh, impl_->shapes.back().positions);
     impl_->constantNormal.push_back(hasConstantNormal(mesh));
   }
   impl_->materialTextures = MaterialTextures(bake.scene, textureAnisotropy);
