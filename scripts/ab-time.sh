@@ -12,10 +12,11 @@ set -euo pipefail
 
 pairs=7
 if [[ "${1:-}" == "-n" ]]; then
-  pairs="$2"
-  shift 2
+  pairs="${2:-}"
+  shift $(($# < 2 ? $# : 2))
 fi
-if [[ $# -ne 2 || ! "$pairs" =~ ^[1-9][0-9]*$ ]]; then
+# 1 to 999 pairs (a larger count is a typo, and bash's arithmetic would wrap it).
+if [[ $# -ne 2 || ! "$pairs" =~ ^[1-9][0-9]{0,2}$ ]]; then
   echo "usage: scripts/ab-time.sh [-n N] 'B command' 'A command'" >&2
   exit 2
 fi
@@ -40,10 +41,18 @@ ratios=()
 for ((i = 1; i <= pairs; ++i)); do
   read -r cpuB wallB < <(run "$baseline")
   read -r cpuA wallA < <(run "$candidate")
-  ratio=$(awk -v a="$cpuA" -v b="$cpuB" 'BEGIN { printf "%.3f", (b > 0 ? a / b : 0) }')
-  ratios+=("$ratio")
+  if awk -v b="$cpuB" 'BEGIN { exit !(b > 0) }'; then
+    ratio=$(awk -v a="$cpuA" -v b="$cpuB" 'BEGIN { printf "%.3f", a / b }')
+    ratios+=("$ratio")
+  else
+    ratio="none (B used no measurable CPU time)"
+  fi
   echo "pair $i: A cpu ${cpuA} s (wall ${wallA}), B cpu ${cpuB} s (wall ${wallB}), A/B ${ratio}"
 done
+if [[ ${#ratios[@]} -eq 0 ]]; then
+  echo "ab-time: no pair had a measurable CPU time for B (GNU time counts 10 ms steps)" >&2
+  exit 1
+fi
 printf '%s\n' "${ratios[@]}" | sort -g | awk '
   { r[NR] = $1 }
   END {
