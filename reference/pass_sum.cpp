@@ -14,6 +14,10 @@
 #include "core/input_file.h"
 #include "core/usage_error.h"
 
+#if defined(__x86_64__)
+#include <emmintrin.h>
+#endif
+
 namespace iblkit {
 
 namespace {
@@ -123,25 +127,33 @@ std::uint64_t PassSum::sampleCount() const {
 }
 
 namespace {
-// An integral double as a 128-bit integer. Below 2^62 through a 64-bit conversion, one instruction
-// (the 128-bit one is a library call that was 2% of a render); the same value either way.
-FixedPointSum integralToFixed(double integral) {
+// round(x) (to nearest, ties to even: nearbyint in the default rounding mode) as a 128-bit integer.
+// Below 2^62 through one instruction: SSE2's cvtsd2si rounds by the current mode, which is
+// nearbyint's. Both nearbyint and the 128-bit conversion are library calls (the latter was 2% of a
+// render, nearbyint another 1-2%, six of each per sample). The same value either way.
+FixedPointSum roundToFixed(double x) {
   constexpr double kSixtyTwo = 4611686018427387904.0;  // 2^62
-  if (std::abs(integral) < kSixtyTwo) return static_cast<FixedPointSum>(static_cast<std::int64_t>(integral));
-  return static_cast<FixedPointSum>(integral);
+  if (std::abs(x) < kSixtyTwo) {
+#if defined(__x86_64__)
+    return static_cast<FixedPointSum>(_mm_cvtsd_si64(_mm_set_sd(x)));
+#else
+    return static_cast<FixedPointSum>(static_cast<std::int64_t>(std::nearbyint(x)));
+#endif
+  }
+  return static_cast<FixedPointSum>(std::nearbyint(x));
 }
 }  // namespace
 
 FixedPointSum PassSum::toFixedPoint(float value) {
   if (std::isnan(value)) return 0;
   const double v = std::clamp(double(value), -kMaxSampleValue, kMaxSampleValue);
-  return integralToFixed(std::nearbyint(v * kScale));
+  return roundToFixed(v * kScale);
 }
 
 FixedPointSum PassSum::toFixedPointSquare(float value) {
   if (std::isnan(value)) return 0;
   const double v = std::min(std::abs(double(value)), kMaxSampleValue);
-  return integralToFixed(std::nearbyint(v * v * kScale));  // v * v is exact in double
+  return roundToFixed(v * v * kScale);  // v * v is exact in double
 }
 
 std::string sampleRangesText(const std::vector<SampleRange>& samples) {

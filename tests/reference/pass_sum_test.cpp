@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <numeric>
+#include <vector>
 
 #include "core/error.h"
 #include "core/usage_error.h"
@@ -208,6 +211,34 @@ TEST(PassSum, FixedPointKeepsTheSumsExactAndBounded) {
   EXPECT_EQ(PassSum::toFixedPoint(std::numeric_limits<float>::quiet_NaN()), 0);
   EXPECT_EQ(PassSum::toFixedPoint(std::numeric_limits<float>::infinity()), FixedPointSum(1) << 67);
   EXPECT_EQ(PassSum::toFixedPointSquare(1e30f), FixedPointSum(1) << 102);
+}
+
+// The conversion rounds to nearest with ties to even, as nearbyint does, on both sides of its
+// 2^62 fast path: ties (k + 1/2) 2^-32, their negatives, the floats beside 2^30
+// (where v 2^32 crosses 2^62), subnormals, and a sweep of floats over 75 octaves.
+TEST(PassSum, FixedPointRoundsToNearestTiesToEven) {
+  const auto expected = [](double scaled) { return static_cast<FixedPointSum>(std::nearbyint(scaled)); };
+  std::vector<float> values = {0.0f, -0.0f, std::numeric_limits<float>::denorm_min(),
+                               std::numeric_limits<float>::min(), 1.0f, 1073741824.0f,  // 2^30
+                               std::nextafter(1073741824.0f, 0.0f), std::nextafter(1073741824.0f, 2e9f),
+                               std::nextafter(2147483648.0f, 0.0f)};
+  for (int k = 0; k < 8; ++k) values.push_back(std::ldexp(float(k) + 0.5f, -32));  // ties: 0.5, 1.5, ...
+  for (float v = 1e-12f; v < 3e10f; v *= 1.37f) values.push_back(v);  // below the clamp, 2^35
+  int ties = 0;
+  for (const float value : values) {
+    for (const float v : {value, -value}) {
+      const double scaled = double(v) * 4294967296.0;
+      ties += std::abs(scaled - std::trunc(scaled)) == 0.5;
+      EXPECT_EQ(PassSum::toFixedPoint(v), expected(scaled)) << v;
+      EXPECT_EQ(PassSum::toFixedPointSquare(v), expected(double(v) * double(v) * 4294967296.0)) << v;
+    }
+  }
+  EXPECT_GE(ties, 16);  // the eight ties above with their negatives (the sweep meets a few more)
+  // Ties go to the even neighbour: 0.5 and 2.5 down, 1.5 up.
+  EXPECT_EQ(PassSum::toFixedPoint(std::ldexp(0.5f, -32)), 0);
+  EXPECT_EQ(PassSum::toFixedPoint(std::ldexp(1.5f, -32)), 2);
+  EXPECT_EQ(PassSum::toFixedPoint(std::ldexp(2.5f, -32)), 2);
+  EXPECT_EQ(PassSum::toFixedPoint(-std::ldexp(2.5f, -32)), -2);
 }
 
 }  // namespace
