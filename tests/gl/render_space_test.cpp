@@ -9,13 +9,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <glm/gtc/constants.hpp>
 #include <iostream>
 
 #include "engine/gl/render_target.h"
 #include "engine/gl/renderer.h"
 #include "gl/test_context.h"
 #include "support/bake_fixture.h"
+#include "support/sun_map.h"
 
 namespace iblkit {
 namespace {
@@ -36,13 +36,8 @@ BakedScene moved(const BakedScene& bake, const glm::vec3& by) {
 // A sphere on a ground under the test sky with one disk sun (drawn as a shadowed light), baked.
 BakedScene sunBake() {
   BakedScene bake = test::makeTestBake({.ground = true});
-  EnvironmentLight sun;
-  sun.direction = glm::normalize(glm::vec3(-0.6f, 0.8f, 0.3f));
-  sun.angularRadius = glm::radians(3.0f);
-  sun.solidAngle = 2.0f * glm::pi<float>() * (1.0f - std::cos(sun.angularRadius));
-  sun.radiance = glm::vec3(500.0f);
-  sun.irradiance = sun.radiance * sun.solidAngle;
-  bake.env.lights.suns = {sun};
+  bake.env.lights.suns = {
+      test::diskLight({glm::normalize(glm::vec3(-0.6f, 0.8f, 0.3f)), glm::radians(3.0f), glm::vec3(500.0f)})};
   bake.env.residualSh9 = bake.env.sh9;
   bake.env.residualSpecular = bake.env.specular;
   return bake;

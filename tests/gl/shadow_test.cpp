@@ -32,6 +32,7 @@
 #include "engine/gl/shadow_maps.h"
 #include "gl/test_context.h"
 #include "support/gltf_builder.h"
+#include "support/sun_map.h"
 #include "support/test_paths.h"
 
 namespace iblkit {
@@ -89,12 +90,7 @@ BakedScene bakeWithSun(const SunScene& s) {
   const EnvironmentStages sky = computeEnvironmentStages(
       EnvironmentMap::fromImage(latLongFromRadiance(64, 32, 1, [](const glm::vec3&) { return glm::vec3(kSky); }), "sky"),
       kViewerEnvironmentStages);
-  EnvironmentLight light;
-  light.direction = s.sun;
-  light.angularRadius = glm::radians(s.sunRadiusDegrees);
-  light.solidAngle = 2.0f * glm::pi<float>() * (1.0f - std::cos(light.angularRadius));
-  light.radiance = glm::vec3(kSunRadiance);
-  light.irradiance = light.radiance * light.solidAngle;
+  EnvironmentLight light = test::diskLight({s.sun, glm::radians(s.sunRadiusDegrees), glm::vec3(kSunRadiance)});
   for (int k = 0; k < kShCoefficients; ++k)
     light.sh9.coefficients[std::size_t(k)] = bake.env.sh9.coefficients[std::size_t(k)] - sky.sh9.coefficients[std::size_t(k)];
   bake.env.lights.suns = {light};

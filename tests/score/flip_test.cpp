@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
 #include "core/image_io.h"
 #include "support/test_paths.h"
 
@@ -160,6 +162,32 @@ TEST(Flip, AutomaticExposureRangeMatchesTheReferenceImplementation) {
     EXPECT_NEAR(range.stop, c.stop, 1e-3) << c.name;
     EXPECT_EQ(range.count, c.count) << c.name;
   }
+}
+
+// HDR-FLIP scores its exposures in parallel: the same map bit for bit on one thread and on four,
+// and the maximum over the exposures scored one at a time (each exposure's LDR-FLIP, as the
+// chapter defines it), on HDR images with a few pixels far above the rest.
+TEST(Flip, HdrFlipIsTheSameOnAnyNumberOfThreads) {
+  Image reference = pattern(64, 48), test = withNoise(pattern(64, 48), 0.1f);
+  for (Image* image : {&reference, &test})
+    for (int k = 0; k < 40; ++k) image->at((k * 37) % 64, (k * 11) % 48) *= glm::vec4(glm::vec3(200.0f), 1.0f);
+  const ExposureRange range = automaticExposureRange(reference);
+  ASSERT_GE(range.count, 4);
+  const auto onThreads = [&](int threads) {
+    tbb::task_arena arena(threads);
+    return arena.execute([&] { return hdrFlip(reference, test, range, 67.0f); });
+  };
+  const FlipErrorMap one = onThreads(1), four = onThreads(4);
+  EXPECT_TRUE(one.error == four.error);
+
+  std::vector<float> maximum(reference.pixelCount(), 0.0f);
+  for (int e = 0; e < range.count; ++e) {
+    const float exposure = range.start + (range.stop - range.start) * e / float(range.count - 1);
+    const FlipErrorMap ldr = hdrFlip(reference, test, {exposure, exposure, 1}, 67.0f);
+    for (std::size_t i = 0; i < maximum.size(); ++i) maximum[i] = std::max(maximum[i], ldr.error[i]);
+  }
+  EXPECT_TRUE(four.error == maximum);
+  EXPECT_GT(meanError(four), 0.0);
 }
 
 }  // namespace

@@ -4,9 +4,11 @@
 // disk's edge texels hold their covered fraction.
 #include <cmath>
 #include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
 #include <initializer_list>
 #include <vector>
 
+#include "core/environment_lights.h"
 #include "core/environment_map.h"
 #include "core/latlong.h"
 
@@ -22,6 +24,18 @@ struct SunDisk {
   float angularRadius = 0.03f;            // radians
   glm::vec3 radiance{2e4f, 1.8e4f, 1.5e4f};
 };
+
+// The disk as the engine draws a sun (core/environment_lights.h): its solid angle 2 pi (1 - cos r)
+// and the irradiance radiance x solid angle; the SH9 and texel rectangle left empty.
+inline EnvironmentLight diskLight(const SunDisk& disk) {
+  EnvironmentLight light;
+  light.direction = disk.direction;
+  light.angularRadius = disk.angularRadius;
+  light.solidAngle = 2.0f * glm::pi<float>() * (1.0f - std::cos(disk.angularRadius));
+  light.radiance = disk.radiance;
+  light.irradiance = light.radiance * light.solidAngle;
+  return light;
+}
 
 // softSkyRadiance plus the disks, as a width x width/2 map (8 x 8 samples per texel).
 inline EnvironmentMap sunnySky(int width, std::initializer_list<SunDisk> suns) {
