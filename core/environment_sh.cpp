@@ -26,15 +26,18 @@ SphericalHarmonics9 projectEnvironmentSh9(const EnvironmentMap& environment) {
   const int width = environment.width(), height = environment.height();
   std::vector<glm::vec2> longitudes(static_cast<std::size_t>(width));
   for (int x = 0; x < width; ++x)
-    longitudes[static_cast<std::size_t>(x)] = latLongLongitude((static_cast<float>(x) + 0.5f) / static_cast<float>(width));
+    longitudes[static_cast<std::size_t>(x)] =
+        latLongLongitude((static_cast<float>(x) + 0.5f) / static_cast<float>(width));
   return tbb::parallel_deterministic_reduce(
       tbb::blocked_range<int>(0, height, kRowsPerTask), SphericalHarmonics9{},
       [&](const tbb::blocked_range<int>& rows, SphericalHarmonics9 sum) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
           const float solidAngle = environment.texelSolidAngle(y);
-          const glm::vec2 latitude = latLongLatitude((static_cast<float>(y) + 0.5f) / static_cast<float>(height));
+          const glm::vec2 latitude =
+              latLongLatitude((static_cast<float>(y) + 0.5f) / static_cast<float>(height));
           for (int x = 0; x < width; ++x)
-            sum.accumulate(environment.toWorldDirection(latLongDirection(longitudes[static_cast<std::size_t>(x)], latitude)),
+            sum.accumulate(environment.toWorldDirection(
+                               latLongDirection(longitudes[static_cast<std::size_t>(x)], latitude)),
                            environment.texelRadiance(x, y), solidAngle);
         }
         return sum;
@@ -100,11 +103,32 @@ std::vector<TexelLight> texelLights(const EnvironmentMap& environment) {
   return lights;
 }
 
-glm::vec3 irradianceFrom(std::span<const TexelLight> lights, const glm::vec3& n) {
-  glm::dvec3 sum(0.0);
-  for (const TexelLight& light : lights)
-    sum += glm::dvec3(light.power * std::max(0.0f, glm::dot(n, light.direction)));
-  return glm::vec3(sum);
+// The irradiance at up to kNormalBlock normals at once: each light's term for every normal of the
+// block, then the next light. Per normal the operations are those of the plain sum, in the same
+// order (the float cosine as glm::dot forms it, (x + y) + z; its clamp; the float product; the
+// double sums light by light), so the result is the same bit for bit; across the block they are
+// independent, so the compiler vectorises them.
+constexpr std::size_t kNormalBlock = 8;
+
+void irradianceBlock(std::span<const TexelLight> lights, std::span<const glm::vec3> normals,
+                     std::span<glm::vec3> out) {
+  float nx[kNormalBlock] = {}, ny[kNormalBlock] = {}, nz[kNormalBlock] = {};
+  for (std::size_t k = 0; k < normals.size(); ++k) {
+    nx[k] = normals[k].x;
+    ny[k] = normals[k].y;
+    nz[k] = normals[k].z;
+  }
+  double r[kNormalBlock] = {}, g[kNormalBlock] = {}, b[kNormalBlock] = {};
+  for (const TexelLight& light : lights) {
+    const glm::vec3 d = light.direction, p = light.power;
+    for (std::size_t k = 0; k < kNormalBlock; ++k) {
+      const float cosine = std::max(0.0f, nx[k] * d.x + ny[k] * d.y + nz[k] * d.z);
+      r[k] += double(p.x * cosine);
+      g[k] += double(p.y * cosine);
+      b[k] += double(p.z * cosine);
+    }
+  }
+  for (std::size_t k = 0; k < normals.size(); ++k) out[k] = glm::vec3(glm::dvec3(r[k], g[k], b[k]));
 }
 
 }  // namespace
@@ -113,8 +137,11 @@ std::vector<glm::vec3> bruteForceIrradiance(const EnvironmentMap& environment,
                                             std::span<const glm::vec3> normals) {
   const std::vector<TexelLight> lights = texelLights(environment);
   std::vector<glm::vec3> irradiance(normals.size());
-  tbb::parallel_for(std::size_t{0}, normals.size(),
-                    [&](std::size_t i) { irradiance[i] = irradianceFrom(lights, normals[i]); });
+  const std::size_t blocks = (normals.size() + kNormalBlock - 1) / kNormalBlock;
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t block) {
+    const std::size_t first = block * kNormalBlock, count = std::min(kNormalBlock, normals.size() - first);
+    irradianceBlock(lights, normals.subspan(first, count), std::span(irradiance).subspan(first, count));
+  });
   return irradiance;
 }
 

@@ -1,3 +1,5 @@
+#include "core/environment_sh.h"
+
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
@@ -7,7 +9,6 @@
 #include <vector>
 
 #include "bakefile/sh9_json.h"
-#include "core/environment_sh.h"
 #include "core/environment_map_file.h"
 #include "core/latlong.h"
 #include "support/error_capture.h"
@@ -52,8 +53,8 @@ TEST(EnvironmentSh, ProjectionIsTheSameToTheLastBitOnAnyNumberOfThreads) {
   const EnvironmentMap environment = EnvironmentMap::fromImage(
       latLongFromRadiance(512, 256, 1,
                           [](const glm::vec3& d) {
-                            return glm::vec3(1.0f + 1000.0f * std::pow(std::max(0.0f, d.y), 200.0f), 0.3f + d.x * d.x,
-                                             0.1f + std::abs(d.z));
+                            return glm::vec3(1.0f + 1000.0f * std::pow(std::max(0.0f, d.y), 200.0f),
+                                             0.3f + d.x * d.x, 0.1f + std::abs(d.z));
                           }),
       "peaked");
   auto projectOn = [&](int threads) {
@@ -86,6 +87,34 @@ TEST(EnvironmentSh, ConstantEnvironmentGivesIrradiancePi) {
     EXPECT_NEAR(sh.irradiance(normals[i]).g, kPi, 5e-4f);
     // The texel sum of max(0, n.w) is a quadrature with an edge at the horizon.
     EXPECT_NEAR(bruteForce[i].g, kPi, 2e-3f);
+  }
+}
+
+// The blocked sum (eight normals at a time) is the plain per-normal sum over the texels, bit for
+// bit: a map of varied texels with a bright spot and 13 normals (one full block and a partial one),
+// among them the poles and a normal along an axis, where cosines clamp to 0.
+TEST(EnvironmentSh, BruteForceIrradianceIsThePlainTexelSum) {
+  Image image(32, 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 32; ++x)
+      image.at(x, y) = glm::vec4(0.1f + 0.03f * float((x * 7 + y * 3) % 11), 0.2f + 0.01f * float(x),
+                                 0.05f * float(y), 1.0f);
+  image.at(9, 4) = glm::vec4(4000.0f, 3000.0f, 2000.0f, 1.0f);
+  EnvironmentMap environment = EnvironmentMap::fromImage(image, "varied");
+  environment.setRotationDegrees(30.0f);
+  std::vector<glm::vec3> normals = fibonacciSphere(10);
+  normals.insert(normals.end(),
+                 {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f)});
+  const std::vector<glm::vec3> blocked = bruteForceIrradiance(environment, normals);
+  ASSERT_EQ(blocked.size(), normals.size());
+  for (std::size_t i = 0; i < normals.size(); ++i) {
+    glm::dvec3 sum(0.0);
+    for (int y = 0; y < environment.height(); ++y)
+      for (int x = 0; x < environment.width(); ++x) {
+        const glm::vec3 power = environment.texelRadiance(x, y) * environment.texelSolidAngle(y);
+        sum += glm::dvec3(power * std::max(0.0f, glm::dot(normals[i], environment.texelDirection(x, y))));
+      }
+    EXPECT_EQ(blocked[i], glm::vec3(sum)) << i;
   }
 }
 
