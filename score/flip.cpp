@@ -4,6 +4,7 @@
 
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -338,19 +339,28 @@ FlipErrorMap hdrFlip(const Image& reference, const Image& test, const ExposureRa
     }
     return out;
   };
-  // The exposures in parallel (a report scores a few hundred frames of 10-14 exposures each), each
+  // The exposures in parallel (a report scores a few hundred frames of 2-14 exposures each), each
   // thread keeping the maximum over its own; the maximum is exact in any order, so the map is the
-  // same bit for bit on any number of threads.
+  // same bit for bit on any number of threads. An exposure in flight holds about 120 bytes per
+  // pixel (the exposed pair, the opponent, filtered and feature planes: 430 MB more peak memory for
+  // a second one at 2560 x 1440), so no more run at once than fit in kFlipParallelBytes, and at
+  // least one: a pair of 5K images or larger is scored one exposure at a time, as before.
+  constexpr double kBytesPerPixel = 128.0, kFlipParallelBytes = 2.0 * 1024 * 1024 * 1024;
+  const double perExposure = kBytesPerPixel * double(std::max<std::size_t>(reference.pixelCount(), 1));
+  const int concurrency = std::clamp(int(std::min(kFlipParallelBytes / perExposure, 1024.0)), 1,
+                                     tbb::this_task_arena::max_concurrency());
   tbb::combinable<std::vector<float>> maxima(
       [&] { return std::vector<float>(reference.pixelCount(), 0.0f); });
-  tbb::parallel_for(0, exposures.count, [&](int e) {
-    const float exposure = exposures.count == 1 ? exposures.start
-                                                : exposures.start + (exposures.stop - exposures.start) * e /
-                                                                        float(exposures.count - 1);
-    const float scale = std::exp2(exposure);
-    const FlipErrorMap ldr = ldrFlip(exposed(reference, scale), exposed(test, scale), pixelsPerDegree);
-    std::vector<float>& maximum = maxima.local();
-    for (std::size_t i = 0; i < ldr.error.size(); ++i) maximum[i] = std::max(maximum[i], ldr.error[i]);
+  tbb::task_arena(concurrency).execute([&] {
+    tbb::parallel_for(0, exposures.count, [&](int e) {
+      const float exposure = exposures.count == 1 ? exposures.start
+                                                  : exposures.start + (exposures.stop - exposures.start) * e /
+                                                                          float(exposures.count - 1);
+      const float scale = std::exp2(exposure);
+      const FlipErrorMap ldr = ldrFlip(exposed(reference, scale), exposed(test, scale), pixelsPerDegree);
+      std::vector<float>& maximum = maxima.local();
+      for (std::size_t i = 0; i < ldr.error.size(); ++i) maximum[i] = std::max(maximum[i], ldr.error[i]);
+    });
   });
   maxima.combine_each([&](const std::vector<float>& maximum) {
     for (std::size_t i = 0; i < maximum.size(); ++i) result.error[i] = std::max(result.error[i], maximum[i]);
