@@ -119,6 +119,10 @@ int report(Options& options) {
   ReportSettings& settings = options.settings;
   if (settings.minPasses % 2 != 0 || settings.maxPasses % 2 != 0 || settings.maxPasses < settings.minPasses)
     throw UsageError("--min-passes and --max-passes must be even, min <= max");
+  for (std::size_t m = 0; m < settings.modes.size(); ++m)
+    if (std::find(settings.modes.begin(), settings.modes.begin() + std::ptrdiff_t(m), settings.modes[m]) !=
+        settings.modes.begin() + std::ptrdiff_t(m))
+      throw UsageError("--modes: '" + settings.modes[m] + "' is listed twice");
   const auto start = std::chrono::steady_clock::now();
   settings.outDir = options.output;
   settings.binDir = options.binFolder.empty() ? programFolder() : fs::path(options.binFolder);

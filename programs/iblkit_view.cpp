@@ -1,6 +1,6 @@
 // iblkit-view: the real-time engine's program (docs/engine.md).
 //
-//   iblkit-view OUTDIR|SCENE|MODEL --headless -o IMAGE [--env MAP] [--env-intensity X] [--width W] [--height H] [--mode M]
+//   iblkit-view OUTDIR|SCENE|MODEL --headless -o IMAGE [--env MAP] [--env-intensity X] [--width W] [--height H] [--mode M[,M...]]
 //               [--exposure E] [--env-rotation D] [--samples MSAA] [--normal FILE] [--depth FILE]
 //               [--bench N] [--no-sky] [--ao-rays N] [--texture-slots LIST | --no-textures]
 //               [--anisotropy A] [--lights K] [--no-shadows] [--no-shadow-mask]
@@ -8,7 +8,10 @@
 //
 // OUTDIR is an iblkit-bake folder; a .json scene or a .gltf/.glb model is baked in memory first,
 // under --env MAP when given (cli/scene_arguments.h: the same MODEL --env MAP as iblkit-trace). -o .exr
-// writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB.
+// writes linear float RGBA (alpha = coverage of non-ground objects), .png tone-mapped sRGB. Several
+// modes (--mode sh,full) render in one process, each to the output names with {mode} replaced by its
+// name (-o frame-{mode}.exr), and --bench times them in turn, round by round: what the report runs
+// for each case, without a process (EGL, the bake's loading, the shared shaders' compiles) per mode.
 // Without --headless the window viewer runs (engine/view/viewer.h, docs/viewer.md):
 //
 //   iblkit-view OUTDIR|SCENE [--env ENV] [--env-dir DIR] [--reference REF.exr | --reference REPORT [--case CASE]]
@@ -62,7 +65,7 @@ struct Options {
   fs::path output, normalOutput, depthOutput;
   bool headless = false;
   int width = 0, height = 0;  // 0: the scene's size
-  std::string mode = "full";  // or "all" with --bench
+  std::vector<std::string> modes = {"full"};  // several (headless), or "all" with --bench
   float exposure = 0.0f;
   bool exposureGiven = false;  // --exposure given: the window's exposure starts locked there
   int samples = 1;
@@ -208,13 +211,64 @@ Image readFrame(RenderTarget& target, int supersample) {
   return image;
 }
 
-void writeLayer(Renderer& renderer, RenderTarget& target, const Camera& camera, FrameSettings settings,
-                FrameLayer layer, const fs::path& file, int supersample) {
+Image renderLayer(Renderer& renderer, RenderTarget& target, const Camera& camera, FrameSettings settings,
+                  FrameLayer layer, int supersample) {
   settings.layer = layer;
   renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
-  const Image image = readFrame(target, supersample);
+  Image image = readFrame(target, supersample);
   checkGlErrors("render");
-  writeExr(file, image, {.pixelType = PixelType::Float, .writeAlpha = true});
+  return image;
+}
+
+constexpr std::string_view kModePlaceholder = "{mode}";
+
+// `file` with each {mode} replaced by `mode`'s name.
+fs::path forMode(const fs::path& file, ShadingMode mode) {
+  std::string name = file.string();
+  const std::string_view modeName = shadingModeName(mode);
+  for (std::size_t at = 0; (at = name.find(kModePlaceholder, at)) != std::string::npos; at += modeName.size())
+    name.replace(at, kModePlaceholder.size(), modeName);
+  return name;
+}
+
+// An image to write and where.
+struct PendingImage {
+  fs::path file;
+  Image image;
+  bool png = false;  // tone-mapped (the frame's exposure and curve), else float EXR with alpha
+};
+
+// Writes every image, or (when one fails) none: those already written are removed again.
+void writeAll(const std::vector<PendingImage>& images, const FrameSettings& settings) {
+  std::size_t written = 0;
+  try {
+    for (; written < images.size(); ++written) {
+      const PendingImage& pending = images[written];
+      if (pending.png)
+        writePng(pending.file, pending.image, {.exposure = settings.exposure, .curve = settings.curve});
+      else
+        writeExr(pending.file, pending.image, {.pixelType = PixelType::Float, .writeAlpha = true});
+    }
+  } catch (...) {
+    std::error_code ignored;
+    for (std::size_t i = 0; i < written; ++i) fs::remove(images[i].file, ignored);
+    throw;
+  }
+}
+
+// --mode: one mode, "all" (every mode, --bench only), or several (a list).
+std::vector<ShadingMode> parseModes(const std::vector<std::string>& names, bool* all) {
+  *all = names.size() == 1 && names[0] == "all";
+  if (*all) return std::vector<ShadingMode>(std::begin(kShadingModes), std::end(kShadingModes));
+  std::vector<ShadingMode> modes;
+  for (const std::string& name : names) {
+    if (name == "all") failUsage("--mode", "'all' is not one of a list of modes");
+    const ShadingMode mode = parseShadingMode(name);
+    if (std::find(modes.begin(), modes.end(), mode) != modes.end())
+      failUsage("--mode", "'" + name + "' is listed twice");
+    modes.push_back(mode);
+  }
+  return modes;
 }
 
 int runHeadless(const Options& options) {
@@ -223,10 +277,17 @@ int runHeadless(const Options& options) {
   if (!options.output.empty()) requireExtension(options.output, {".exr", ".png"});
   for (const fs::path& layer : {options.normalOutput, options.depthOutput})
     if (!layer.empty()) requireExtension(layer, {".exr"});
-  const bool allModes = options.mode == "all";
+  bool allModes = false;
+  const std::vector<ShadingMode> modes = parseModes(options.modes, &allModes);
   if (allModes && options.bench == 0) failUsage("--mode", "'all' is only for --bench");
+  if (allModes && !options.output.empty()) failUsage("-o", "not with --mode all (list the modes to write)");
+  const std::pair<const char*, const fs::path*> outputOptions[] = {
+      {"-o", &options.output}, {"--normal", &options.normalOutput}, {"--depth", &options.depthOutput}};
+  for (const auto& [flag, file] : outputOptions)
+    if (modes.size() > 1 && !file->empty() && file->string().find(kModePlaceholder) == std::string::npos)
+      failUsage(flag, "with several modes the name needs {mode}, which each mode's name replaces");
   FrameSettings settings;
-  if (!allModes) settings.mode = parseShadingMode(options.mode);
+  settings.mode = modes.front();
   settings.exposure = options.exposure;
   settings.drawSky = !options.noSky;
   settings.sampleShading = options.sampleShading;
@@ -241,7 +302,12 @@ int runHeadless(const Options& options) {
   // No image may replace the bake folder's files, the scene, a model or the map.
   std::vector<fs::path> inputs = sceneInputs(bake.scene, options.scene.environment);
   inputs.push_back(options.scene.input);
-  checkOutputs(inputs, {options.output, options.normalOutput, options.depthOutput});
+  std::vector<fs::path> outputs;
+  if (!allModes)
+    for (ShadingMode mode : modes)
+      for (const auto& [flag, file] : outputOptions)
+        if (!file->empty()) outputs.push_back(forMode(*file, mode));
+  checkOutputs(inputs, outputs);
   settings.envRotationDegrees = envRotationFromBake(bake.env, options.scene.environment.rotationDegrees);
   const int width = options.width > 0 ? options.width : bake.scene.width;
   const int height = options.height > 0 ? options.height : bake.scene.height;
@@ -253,28 +319,32 @@ int runHeadless(const Options& options) {
   const Camera camera = sceneCamera(bake.scene, float(width) / float(height));
   checkGlErrors("setup");
 
-  // The output frame first: it also warms up its shader variants and renders its shadow maps
-  // for the frames timed after it (one warm-up frame less).
+  // The output frames first: they also warm up their shader variants and render the shadow maps
+  // for the frames timed after them (one warm-up frame less). All are rendered before any is
+  // written, and written all or none.
   if (!options.output.empty()) {
-    renderer.render(camera, settings, target.framebuffer(), target.width(), target.height());
-    const Image image = readFrame(target, options.supersample);
-    checkGlErrors("render");
-    if (!options.normalOutput.empty())
-      writeLayer(renderer, target, camera, settings, FrameLayer::Normal, options.normalOutput, options.supersample);
-    if (!options.depthOutput.empty())
-      writeLayer(renderer, target, camera, settings, FrameLayer::Depth, options.depthOutput, options.supersample);
-    if (lowerExtension(options.output) == ".exr")
-      writeExr(options.output, image, {.pixelType = PixelType::Float, .writeAlpha = true});
-    else
-      writePng(options.output, image, {.exposure = settings.exposure, .curve = settings.curve});
+    std::vector<PendingImage> images;
+    for (ShadingMode mode : modes) {
+      FrameSettings modeSettings = settings;
+      modeSettings.mode = mode;
+      renderer.render(camera, modeSettings, target.framebuffer(), target.width(), target.height());
+      Image image = readFrame(target, options.supersample);
+      checkGlErrors("render");
+      if (!options.normalOutput.empty())
+        images.push_back({forMode(options.normalOutput, mode),
+                          renderLayer(renderer, target, camera, modeSettings, FrameLayer::Normal, options.supersample)});
+      if (!options.depthOutput.empty())
+        images.push_back({forMode(options.depthOutput, mode),
+                          renderLayer(renderer, target, camera, modeSettings, FrameLayer::Depth, options.supersample)});
+      images.push_back({forMode(options.output, mode), std::move(image), lowerExtension(options.output) == ".png"});
+    }
+    writeAll(images, settings);
   }
   if (options.bench > 0) {
     std::cout << kProgram << ": " << context.description() << ", " << width << "x" << height << ", "
               << target.samples() << " sample(s), texture slots " << textureSlotsName(settings.textureSlots)
               << " (" << bake.scene.textures.size() << " textures, anisotropy " << renderer.textureAnisotropy()
               << "), median of " << options.bench << " frames\n";
-    std::vector<ShadingMode> modes(std::begin(kShadingModes), std::end(kShadingModes));
-    if (!allModes) modes = {settings.mode};
     // Warm-up: shader variants, caches (the output frame, when there is one, was the first).
     benchmark(renderer, target, camera, inModes(settings, modes), options.output.empty() || allModes ? 2 : 1);
     const std::vector<FrameTimes> times = benchmark(renderer, target, camera, inModes(settings, modes), options.bench);
@@ -399,7 +469,8 @@ int runWindow(Options options) {
   viewer.input = options.scene.input;
   viewer.width = options.width;
   viewer.height = options.height;
-  viewer.mode = options.mode;
+  if (options.modes.size() != 1) failUsage("--mode", "one mode in the window (several are for --headless)");
+  viewer.mode = options.modes.front();
   viewer.exposure = options.exposure;
   viewer.autoExposure = !options.exposureGiven;
   viewer.open = options.open;
@@ -476,7 +547,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 16384));
   std::vector<std::string> modeChoices = enumNames(kShadingModeNames);
   modeChoices.push_back("all");
-  app.add_option("--mode", options.mode, "shading mode (all: every mode, --bench)")
+  app.add_option("--mode", options.modes,
+                 "shading mode; headless, several (comma-separated: each to its own -o with {mode} in the "
+                 "name, timed in turn by --bench) or all (every mode, --bench)")
+      ->delimiter(',')
       ->check(nameChoice(modeChoices, "shading mode"))
       ->capture_default_str();
   app.add_option("--exposure", options.exposure,

@@ -1,5 +1,6 @@
 #pragma once
-// The report's engine stage: one iblkit-view frame per mode, with its frame time.
+// The report's engine stages: the frames of a case's modes with their frame times, from one
+// iblkit-view per group of modes that share its options (stage_commands.h, viewGroups).
 
 #include <filesystem>
 #include <string>
@@ -11,15 +12,16 @@
 
 namespace iblkit {
 
-// Renders every mode of `settings` from the bake in `bake` (stage "view-CASE-MODE"). Appends each
-// mode's ModeResult (frame time, or its failure) to result.modes and each stage's command line to
-// result.commands; returns the frames in mode order, an empty image where a mode failed.
+// Renders every mode of `settings` from the bake in `bake` (a stage "view-CASE-MODE+MODE..." per
+// group of modes). Appends each mode's ModeResult (frame time, or its failure) to result.modes, in
+// the order of settings.modes, and each stage's command line to result.commands; returns the frames
+// in mode order, an empty image where a mode failed.
 std::vector<Image> renderEngineFrames(const ReportSettings& settings, const StageCache& cache,
                                       const std::string& caseName, const std::filesystem::path& bake,
                                       CaseResult& result);
 
-// The median frame time iblkit-view --bench prints for the one mode ("  sh   cpu 12.34 ms  gpu 0.00 ms"):
+// The median frame time iblkit-view --bench prints for `mode` ("  sh   cpu 12.34 ms  gpu 0.00 ms"):
 // the CPU time, synchronised with glFinish, since GPU timer queries are not everywhere. NaN when absent.
-double parseMedianMilliseconds(const std::string& output);
+double parseMedianMilliseconds(const std::string& output, const std::string& mode);
 
 }  // namespace iblkit

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/scene.h"
 #include "report/case_modes.h"
@@ -51,12 +52,11 @@ StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& input
   return command;
 }
 
-StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, const std::string& mode) {
-  StageCommand command{settings.binDir / "iblkit-view",
-                       {std::string(kCacheFolder) + "/" + bake.filename().string() + "/bake", "--headless",
-                        "-o", stageFile("frame.exr"), "--mode", mode},
-                       {}};
-  std::vector<std::string>& arguments = command.arguments;
+namespace {
+
+// A view's arguments after --mode MODE: size, samples, supersampling, anisotropy, bench frames.
+std::vector<std::string> viewOptions(const ReportSettings& settings, const std::string& mode) {
+  std::vector<std::string> arguments;
   appendSize(settings, arguments);
   // Shadow-mapped frames without sample shading: llvmpipe's sample-rate invocations misplace the
   // shadow lookups along silhouettes (a lone diffuse sphere under sky: lights-shadowed against
@@ -74,6 +74,40 @@ StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, c
   arguments.insert(arguments.end(), {"--anisotropy", std::to_string(settings.engineAnisotropy)});
   if (settings.benchFrames > 0)
     arguments.insert(arguments.end(), {"--bench", std::to_string(settings.benchFrames)});
+  return arguments;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::string>> viewGroups(const ReportSettings& settings, const std::vector<std::string>& modes) {
+  std::vector<std::vector<std::string>> groups;
+  std::vector<std::vector<std::string>> options;  // each group's viewOptions
+  for (const std::string& mode : modes) {
+    std::vector<std::string> own = viewOptions(settings, mode);
+    const auto same = std::find(options.begin(), options.end(), own);
+    if (same != options.end()) {
+      groups[std::size_t(same - options.begin())].push_back(mode);
+    } else {
+      groups.push_back({mode});
+      options.push_back(std::move(own));
+    }
+  }
+  return groups;
+}
+
+std::string viewFrameFile(const std::string& mode) { return "frame-" + mode + ".exr"; }
+
+StageCommand viewCommand(const ReportSettings& settings, const fs::path& bake, const std::vector<std::string>& modes) {
+  if (modes.empty() || viewGroups(settings, modes).size() != 1)
+    throw std::logic_error("viewCommand: modes that need different iblkit-view options");
+  std::string list;
+  for (const std::string& mode : modes) list += (list.empty() ? "" : ",") + mode;
+  StageCommand command{settings.binDir / "iblkit-view",
+                       {std::string(kCacheFolder) + "/" + bake.filename().string() + "/bake", "--headless",
+                        "-o", stageFile(viewFrameFile("{mode}")), "--mode", list},
+                       {}};
+  const std::vector<std::string> options = viewOptions(settings, modes.front());
+  command.arguments.insert(command.arguments.end(), options.begin(), options.end());
   return command;
 }
 

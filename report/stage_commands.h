@@ -1,10 +1,11 @@
 #pragma once
-// The commands of the report's stages, as a user would type them (docs/report.md): the bake, one
-// engine frame per mode and one reference pass per seed. Each names its outputs under
+// The commands of the report's stages, as a user would type them (docs/report.md): the bake, the
+// engine frames of a group of modes and one reference pass per seed. Each names its outputs under
 // kStageFolder, so its cache key (stageKey) is hashed from exactly what runs.
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "report/case_modes.h"
 #include "report/report_settings.h"
@@ -29,11 +30,21 @@ CaseInputs caseInputs(const std::filesystem::path& sceneFile, const std::filesys
 // iblkit-bake SCENE --env ENV -o {stage}/bake: per-vertex visibility and the prefiltered map.
 StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs);
 
-// iblkit-view BAKE --headless -o {stage}/frame.exr --mode MODE at the report's size, samples,
-// supersampling and bench frames. `bake` is the bake stage's folder in the cache, named by its key:
-// the command names it under kCacheFolder.
+// iblkit-view BAKE --headless -o {stage}/frame-{mode}.exr --mode MODE,MODE... at the report's size,
+// samples, supersampling and bench frames: the frames of several modes from one process (each to
+// viewFrameFile(mode)), their bench frames timed in turn. `modes` must share every other option
+// (one of viewGroups). `bake` is the bake stage's folder in the cache, named by its key: the command
+// names it under kCacheFolder.
 StageCommand viewCommand(const ReportSettings& settings, const std::filesystem::path& bake,
-                         const std::string& mode);
+                         const std::vector<std::string>& modes);
+
+// `modes` split into the groups that one iblkit-view can render together: those whose commands
+// differ only in --mode (lights-shadowed supersamples without sample shading), each group in the
+// order of `modes`, the groups in the order of their first mode.
+std::vector<std::vector<std::string>> viewGroups(const ReportSettings& settings, const std::vector<std::string>& modes);
+
+// The file a view stage writes mode's frame to, in its folder.
+std::string viewFrameFile(const std::string& mode);
 
 // iblkit-trace SCENE --env ENV: the reference pass with `seed` ({stage}/beauty.exr and depth.exr;
 // pass 0 also writes {stage}/normal.exr, for the mask's normals), with --camera-light-samples K

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include "bakefile/scene_glb.h"
@@ -67,19 +68,24 @@ Fixture makeFixture(const fs::path& folder) {
 
 constexpr const char* kSize = " --width 128 --height 96";
 
+constexpr const char* kEveryMode[] = {"unlit", "mirror",     "sh",   "irradiance", "irradiance-ao-bent", "sh-ao",
+                                      "sh-ao-bent", "prt", "full", "lights", "lights-shadowed"};
+
+// Every mode, from one run (--mode with a list, -o with {mode}).
 TEST(IblkitView, RendersEveryModeToExrWithCoverageAlpha) {
   const fs::path dir = test::scratchDir();
   const Fixture fixture = makeFixture(dir);
+  std::string list;
+  for (const char* mode : kEveryMode) {
+    if (!list.empty()) list += ',';
+    list += mode;
+  }
   // The irradiance modes read the bake's env/irradiance.exr.
-  for (const char* mode :
-       {"unlit", "mirror", "sh", "irradiance", "irradiance-ao-bent", "sh-ao", "sh-ao-bent", "prt", "full", "lights",
-         "lights-shadowed"}) {
-    const fs::path out = dir / (std::string("view_") + mode + ".exr");
-    fs::remove(out);
-    const ProgramRun r = run("iblkit-view", quoted(fixture.bake) + " --headless -o " + quoted(out) + kSize +
-                                                " --mode " + mode + " --samples 4");
-    ASSERT_EQ(r.status, 0) << r.output;
-    const Image image = readExr(out);
+  const ProgramRun r = run("iblkit-view", quoted(fixture.bake) + " --headless -o " + quoted(dir / "view_{mode}.exr") +
+                                              kSize + " --mode " + list + " --samples 4");
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* mode : kEveryMode) {
+    const Image image = readExr(dir / (std::string("view_") + mode + ".exr"));
     ASSERT_EQ(image.width(), 128);
     int covered = 0;
     for (const glm::vec4& p : image.pixels()) {
@@ -91,6 +97,40 @@ TEST(IblkitView, RendersEveryModeToExrWithCoverageAlpha) {
     }
     EXPECT_GT(covered, 1000) << mode;
   }
+}
+
+std::string fileBytes(const fs::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>{});
+}
+
+// Several modes in one run (what the report runs per case) write, byte for byte, the files that a
+// run per mode writes, layers included, and --bench times each of them.
+TEST(IblkitView, SeveralModesInOneRunAreTheRunsOfOneModeEach) {
+  const fs::path dir = test::scratchDir();
+  const Fixture fixture = makeFixture(dir);
+  const std::string options = std::string(kSize) + " --samples 4 --sample-shading --supersample 2";
+  const ProgramRun together =
+      run("iblkit-view", quoted(fixture.bake) + " --headless -o " + quoted(dir / "together_{mode}.exr") + " --normal " +
+                             quoted(dir / "together_{mode}_normal.exr") + " --depth " +
+                             quoted(dir / "together_{mode}_depth.exr") + options +
+                             " --mode sh,lights-shadowed,full --bench 2");
+  ASSERT_EQ(together.status, 0) << together.output;
+  for (const std::string mode : {"sh", "lights-shadowed", "full"}) {
+    const ProgramRun alone = run("iblkit-view", quoted(fixture.bake) + " --headless -o " +
+                                                    quoted(dir / ("alone_" + mode + ".exr")) + " --normal " +
+                                                    quoted(dir / ("alone_" + mode + "_normal.exr")) + " --depth " +
+                                                    quoted(dir / ("alone_" + mode + "_depth.exr")) + options +
+                                                    " --mode " + mode);
+    ASSERT_EQ(alone.status, 0) << alone.output;
+    for (const std::string suffix : {".exr", "_normal.exr", "_depth.exr"}) {
+      const std::string a = fileBytes(dir / ("together_" + mode + suffix)), b = fileBytes(dir / ("alone_" + mode + suffix));
+      EXPECT_FALSE(a.empty()) << mode << suffix;
+      EXPECT_TRUE(a == b) << mode << suffix;
+    }
+    EXPECT_NE(together.output.find("\n  " + mode + " "), std::string::npos) << together.output;
+  }
+  EXPECT_NE(fileBytes(dir / "together_sh.exr"), fileBytes(dir / "together_full.exr"));
 }
 
 // --supersample K renders K x K pixels per output pixel and box-filters them down; with
@@ -334,6 +374,33 @@ TEST(IblkitView, BadInputIsOneLineAndNoOutput) {
                 "irradiance, irradiance-ao-bent, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed, full-gltf-ao, "
                 "full-both-ao, all)",
                 out, 2);
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --mode sh,shiny",
+                "iblkit-view: --mode: unknown shading mode 'shiny' (expected one of unlit, mirror, sh, "
+                "irradiance, irradiance-ao-bent, sh-ao, sh-ao-bent, prt, full, lights, lights-shadowed, full-gltf-ao, "
+                "full-both-ao, all)",
+                out, 2);
+  // Several modes: each output name needs {mode}; 'all' is alone; no mode twice; the window takes one.
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --mode sh,full",
+                "iblkit-view: -o: with several modes the name needs {mode}, which each mode's name replaces", out, 2);
+  const fs::path perMode = dir / "bad_{mode}.exr", sh = dir / "bad_sh.exr";
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(perMode) + " --depth " + quoted(out) + " --mode sh,full",
+                "iblkit-view: --depth: with several modes the name needs {mode}, which each mode's name replaces", sh, 2);
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(perMode) + " --mode sh,sh",
+                "iblkit-view: --mode: 'sh' is listed twice", sh, 2);
+  expectFailure(quoted(fixture.bake) + " --headless --bench 1 --mode sh,all",
+                "iblkit-view: --mode: 'all' is not one of a list of modes", out, 2);
+  expectFailure(quoted(fixture.bake) + " --mode sh,full",
+                "iblkit-view: --mode: one mode in the window (several are for --headless)", out, 2);
+  // All frames or none: sh's is written first, then full's cannot be (its folder is missing), and
+  // sh's goes again.
+  fs::remove_all(dir / "sh");
+  fs::create_directories(dir / "sh");
+  const fs::path inFolder = dir / "{mode}" / "frame.exr";
+  expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(inFolder) + " --mode sh,full" + kSize,
+                "iblkit-view: " + (dir / "full" / "frame.exr").string() +
+                    ": cannot create a temporary file beside it: No such file or directory",
+                dir / "sh" / "frame.exr");
+  EXPECT_TRUE(fs::is_empty(dir / "sh"));
   expectFailure(quoted(fixture.bake) + " --headless -o " + quoted(out) + " --texture-slots normal,albedo",
                 "iblkit-view: --texture-slots: unknown texture slot 'albedo' (expected one of base-color, "
                 "metallic-roughness, normal, occlusion, emissive, all, none)",

@@ -301,6 +301,35 @@ TEST(IblkitReport, ReferencePassesRunInStagesOfSeveralPasses) {
   }
 }
 
+// The modes that share iblkit-view's options render in one run (report/stage_commands.h, viewGroups);
+// when that run fails, each mode runs alone, so a mode iblkit-view refuses fails by itself, with
+// iblkit-view's own error, and the others are scored with their frame times.
+TEST(IblkitReport, AModeTheEngineRefusesFailsAlone) {
+  const fs::path out = test::scratchDir() / "report";
+  const fs::path scene = test::assetsDir() / "scenes" / "diffuse_sphere.json";
+  std::string output;
+  report(quoted(scene) + " --env-dir " + quoted(test::assetsDir() / "hdri") +
+             " --envs sky --width 64 --height 36 --pass-spp 8 --min-passes 2 --max-passes 2 --bench 1"
+             " --max-reference-relmse 1 --reference-light-samples 1 --modes sh,shiny,full -o " + quoted(out),
+         &output);
+  ASSERT_TRUE(fs::is_regular_file(out / "report.json")) << output;
+  const json document = readJson(out / "report.json");
+  ASSERT_EQ(document["cases"].size(), 1u);
+  const json& modes = document["cases"][0]["modes"];
+  ASSERT_EQ(modes.size(), 3u);
+  for (const json& mode : modes) {
+    if (mode["mode"] == "shiny") {
+      ASSERT_TRUE(mode.contains("failure")) << mode.dump();
+      EXPECT_NE(mode["failure"].get<std::string>().find("unknown shading mode 'shiny'"), std::string::npos)
+          << mode.dump();
+    } else {
+      EXPECT_FALSE(mode.contains("failure")) << mode.dump();
+      EXPECT_TRUE(mode["frameMilliseconds"].is_number()) << mode.dump();
+      EXPECT_TRUE(mode["meanFlip"].is_number()) << mode.dump();
+    }
+  }
+}
+
 TEST(IblkitReport, AMissingEnvironmentIsOneLineAndNoReport) {
   const fs::path out = test::scratchDir() / "report";
   const fs::path scene = test::assetsDir() / "scenes" / "mirror_sphere.json";
@@ -332,6 +361,7 @@ TEST(IblkitReport, ABadOptionIsOneLineAndStatusTwo) {
       "iblkit-report: --integrator: unknown integrator 'ao' (expected one of path, direct)");
   test::expectUsageError(program + " --min-passes 3 --max-passes 8",
                          "iblkit-report: --min-passes and --max-passes must be even, min <= max");
+  test::expectUsageError(program + " --modes sh,full,sh", "iblkit-report: --modes: 'sh' is listed twice");
   EXPECT_FALSE(fs::exists(out / "report.json"));
 }
 

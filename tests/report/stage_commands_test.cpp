@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <fstream>
 #include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "core/image.h"
 #include "core/image_io.h"
@@ -49,11 +52,37 @@ TEST(StageCommands, OutputsAreUnderThePlaceholder) {
   EXPECT_EQ(fixture.inputs.files.size(), 2u);  // the scene and the map: a shape names no file
 }
 
+// The modes that one iblkit-view renders together: all but lights-shadowed, which supersamples
+// without sample shading, when the report sample-shades; every one when it does not.
+TEST(StageCommands, ModesShareAViewWhereTheirOptionsAgree) {
+  Fixture fixture;
+  const std::vector<std::string> modes = {"mirror", "sh", "lights-shadowed", "full", "lights"};
+  const std::vector<std::vector<std::string>> groups = viewGroups(fixture.settings, modes);
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0], (std::vector<std::string>{"mirror", "sh", "full", "lights"}));
+  EXPECT_EQ(groups[1], (std::vector<std::string>{"lights-shadowed"}));
+  ReportSettings plain = fixture.settings;
+  plain.engineSampleShading = false;
+  EXPECT_EQ(viewGroups(plain, modes), (std::vector<std::vector<std::string>>{modes}));
+  // One run of a group: its modes as one --mode list, each frame to its own file in the stage.
+  const std::vector<std::string> argv = stageArgv(viewCommand(fixture.settings, "/c/bake-1", groups[0]), "/c", "/c/v");
+  const auto mode = std::find(argv.begin(), argv.end(), "--mode");
+  ASSERT_NE(mode, argv.end());
+  EXPECT_EQ(*(mode + 1), "mirror,sh,full,lights");
+  EXPECT_NE(std::find(argv.begin(), argv.end(), "/c/v/frame-{mode}.exr"), argv.end());
+  EXPECT_EQ(viewFrameFile("sh"), "frame-sh.exr");
+  // Modes that need different options cannot share a command.
+  EXPECT_THROW(viewCommand(fixture.settings, "/c/bake-1", {"sh", "lights-shadowed"}), std::logic_error);
+  // A group's key is not any one mode's.
+  EXPECT_NE(stageKey(viewCommand(fixture.settings, "/c/bake-1", {"sh", "full"})),
+            stageKey(viewCommand(fixture.settings, "/c/bake-1", {"sh"})));
+}
+
 TEST(StageCommands, EachSettingChangesItsStagesKey) {
   Fixture fixture;
   const fs::path bake = "/cache/bake-0123";
   const auto viewKey = [&](const ReportSettings& settings) {
-    return stageKey(viewCommand(settings, bake, "sh"));
+    return stageKey(viewCommand(settings, bake, {"sh"}));
   };
   const auto traceKey = [&](const ReportSettings& settings) {
     return stageKey(traceCommand(settings, fixture.inputs, 3));
@@ -68,14 +97,14 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
     viewChanges[i](changed);
     EXPECT_NE(viewKey(changed), viewKey(fixture.settings)) << "view change " << i;
   }
-  EXPECT_NE(stageKey(viewCommand(fixture.settings, bake, "prt")), viewKey(fixture.settings));
-  EXPECT_NE(stageKey(viewCommand(fixture.settings, "/cache/bake-4567", "sh")), viewKey(fixture.settings));
+  EXPECT_NE(stageKey(viewCommand(fixture.settings, bake, {"prt"})), viewKey(fixture.settings));
+  EXPECT_NE(stageKey(viewCommand(fixture.settings, "/cache/bake-4567", {"sh"})), viewKey(fixture.settings));
   // The same bake in a cache elsewhere (--cache, another output folder) keeps the frame's key.
-  EXPECT_EQ(stageKey(viewCommand(fixture.settings, "/elsewhere/bake-0123", "sh")), viewKey(fixture.settings));
-  EXPECT_EQ(stageArgv(viewCommand(fixture.settings, bake, "sh"), "/cache", "/cache/view")[1],
+  EXPECT_EQ(stageKey(viewCommand(fixture.settings, "/elsewhere/bake-0123", {"sh"})), viewKey(fixture.settings));
+  EXPECT_EQ(stageArgv(viewCommand(fixture.settings, bake, {"sh"}), "/cache", "/cache/view")[1],
             "/cache/bake-0123/bake");
   // Isotropic texture filtering, as the reference's ray cones model it.
-  const std::vector<std::string> view = viewCommand(fixture.settings, bake, "sh").arguments;
+  const std::vector<std::string> view = viewCommand(fixture.settings, bake, {"sh"}).arguments;
   const auto anisotropy = std::find(view.begin(), view.end(), "--anisotropy");
   ASSERT_NE(anisotropy, view.end());
   ASSERT_NE(anisotropy + 1, view.end());
@@ -83,7 +112,7 @@ TEST(StageCommands, EachSettingChangesItsStagesKey) {
   EXPECT_NE(std::find(view.begin(), view.end(), "--sample-shading"), view.end());
   ReportSettings textured = fixture.settings;
   textured.engineSampleShading = false;
-  const std::vector<std::string> texturedView = viewCommand(textured, bake, "sh").arguments;
+  const std::vector<std::string> texturedView = viewCommand(textured, bake, {"sh"}).arguments;
   EXPECT_EQ(std::find(texturedView.begin(), texturedView.end(), "--sample-shading"), texturedView.end());
   EXPECT_NE(std::find(texturedView.begin(), texturedView.end(), "--samples"), texturedView.end());
   const std::vector<std::function<void(ReportSettings&)>> traceChanges = {
