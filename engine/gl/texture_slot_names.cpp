@@ -36,7 +36,11 @@ std::string textureSlotsName(unsigned slots) {
   if (slots == 0) return "none";
   std::string names;
   for (const EnumName<TextureSlot>& entry : kTextureSlotNames)
-    if (slots & entry.value) names += (names.empty() ? "" : ",") + std::string(entry.name);
+    if (slots & entry.value) {
+      // Appended piece by piece: GCC 12 gives a false -Wrestrict on "," + std::string (its bug 105329).
+      if (!names.empty()) names += ',';
+      names += entry.name;
+    }
   return names;
 }
 
