@@ -5,6 +5,7 @@
 //               [--ao-distance D] [--ao-falloff P] [--ao-area] [--bounces N] [--seed S] [--threads T]
 //               [--sh-window auto|none|BANDS] [--specular-samples N] [--lut-size N]
 //               [--sun-threshold auto|L] [--max-suns N] [--median-cut-levels N]
+//               [--visibility-only | --visibility-from BAKE]
 //
 // OUTDIR/scene.glb  the whole flattened scene (world-space meshes, ground included, materials with
 //                   the scene's overrides applied, camera) with per-vertex visibility attributes
@@ -13,6 +14,9 @@
 //                   dominant lights (env/lights.json) and the residual's SH9 and specular chain;
 // OUTDIR/bake.json  inputs, parameters, per-stage timings, ray and light counts.
 // OUTDIR appears only when everything is written (output_directory.h).
+// --visibility-only bakes the visibility alone (no environment stages, no suns' bounce);
+// --visibility-from BAKE takes it from BAKE, a bake of the same scene with the same visibility
+// options, instead of tracing it again (baker/reused_visibility.h): a scene under several maps.
 
 #include <unistd.h>
 
@@ -36,6 +40,7 @@
 #include "bakefile/scene_glb.h"
 #include "baker/environment_stages.h"
 #include "baker/irradiance_cube.h"
+#include "baker/reused_visibility.h"
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
 #include "cli/program.h"
@@ -75,7 +80,25 @@ struct Options {
   int maxSuns = SunExtractionOptions{}.maxLights;
   int medianCutLevels = kDefaultMedianCutLevels;
   bool force = false;
+  bool visibilityOnly = false;
+  fs::path visibilityFrom;
 };
+
+// bake.json's parameters (bake_record.h), the visibility's under kVisibilityParameters' names.
+json bakeParameters(const Options& options) {
+  return {{"ao_rays", options.aoRays},
+          {"ao_distance", options.aoDistance},
+          {"ao_falloff", options.aoFalloff},
+          {"ao_area", options.aoArea},
+          {"bounces", options.bounces},
+          {"seed", options.seed},
+          {"sh_window", options.shWindow},
+          {"specular_samples", options.specularSamples},
+          {"specular_size", options.specularSize},
+          {"sun_threshold", options.sunThreshold},
+          {"max_suns", options.maxSuns},
+          {"median_cut_levels", options.medianCutLevels}};
+}
 
 // A one-line progress bar on stderr, redrawn when the whole percentage changes; only when stderr
 // is a terminal, so logs and tests see no carriage returns. Called from the worker threads.
@@ -205,7 +228,7 @@ int bake(const Options& options) {
                {OutputFolder(options.output, {"iblkit bake folder", {kBakeRecordFile}})}, options.force);
   // Loaded before the long visibility stage, so a bad map fails fast.
   std::optional<EnvironmentMap> environmentMap;
-  if (!environment.file.empty()) {
+  if (!environment.file.empty() && !options.visibilityOnly) {
     environmentMap = loadEnvironment(environment, parseProbeFormat(options.envFormat));
     checkEnvironmentIntensity(*environmentMap, environment, scene, options.environment);
     requireEnvironmentForStages(*environmentMap, environment.file);
@@ -225,18 +248,23 @@ int bake(const Options& options) {
   useSceneMaterials(settings, scene);  // AO rays pass through masked texels
   settings.progress = progressBar("visibility");
   VisibilityStatistics statistics;
-  const std::vector<MeshVisibility> visibility = bakeVertexVisibility(scene.meshes, settings, &statistics);
+  const json parameters = bakeParameters(options);
+  if (!options.visibilityFrom.empty()) {
+    reuseVisibility(options.visibilityFrom, parameters, scene.meshes);
+    for (const Mesh& mesh : scene.meshes) statistics.vertices += mesh.vertexCount();
+  } else {
+    attachVisibilityAttributes(scene.meshes, bakeVertexVisibility(scene.meshes, settings, &statistics));
+  }
   const double visibilitySeconds = stopwatch.lap();
   timings["visibility_s"] = visibilitySeconds;
   timings["visibility_build_s"] = statistics.buildSeconds;
   timings["visibility_rays_s"] = statistics.raySeconds;
   timings["bounces_s"] = statistics.bounceSeconds;
-  attachVisibilityAttributes(scene.meshes, visibility);
 
   std::size_t triangles = 0;
   for (const Mesh& mesh : scene.meshes) triangles += mesh.triangleCount();
   const BakeInputs inputs{.scene = fs::absolute(options.scene).lexically_normal(),
-                          .environment = environment.file.empty()
+                          .environment = environment.file.empty() || options.visibilityOnly
                                              ? fs::path()
                                              : fs::absolute(environment.file).lexically_normal(),
                           .environmentFormat = options.envFormat,
@@ -270,18 +298,10 @@ int bake(const Options& options) {
                                kBakeResidualIrradianceFile})
         outputs.push_back(file);
     }
-    json record = makeBakeRecord(inputs, {{"ao_rays", options.aoRays},
-                                          {"ao_distance", options.aoDistance},
-                                          {"ao_falloff", options.aoFalloff},
-                                          {"ao_area", options.aoArea},
-                                          {"bounces", options.bounces},
-                                          {"seed", options.seed},
-                                          {"sh_window", options.shWindow},
-                                          {"specular_samples", options.specularSamples},
-                                          {"specular_size", options.specularSize},
-                                          {"sun_threshold", options.sunThreshold},
-                                          {"max_suns", options.maxSuns},
-                                          {"median_cut_levels", options.medianCutLevels}});
+    json record = makeBakeRecord(inputs, parameters);
+    // Where the visibility came from (its rays, counted below, are that bake's).
+    if (!options.visibilityFrom.empty())
+      record["visibility_from"] = fs::absolute(options.visibilityFrom).lexically_normal().string();
     record["environment"] = environmentReport;
     record["outputs"] = outputs;
     record["timings"] = timings;
@@ -362,6 +382,13 @@ int main(int argc, char** argv) {
                  "median-cut lights: 2^N regions of equal energy")
       ->check(CLI::Range(0, 12))
       ->capture_default_str();
+  app.add_flag("--visibility-only", options.visibilityOnly,
+               "bake the per-vertex visibility alone: no environment stages, no suns' bounce (a bake for "
+               "--visibility-from)");
+  app.add_option("--visibility-from", options.visibilityFrom,
+                 "take the per-vertex visibility from this bake folder, a bake of the same scene with the same "
+                 "--ao-*, --bounces and --seed, instead of tracing it again")
+      ->excludes("--visibility-only");
   app.add_option("--threads", options.threads, "worker threads; 0 = every core")
       ->check(CLI::Range(0, iblkit::kMaxThreads))
       ->capture_default_str();

@@ -43,12 +43,16 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
   // Textured frames without sample shading (ReportSettings::engineSampleShading says why).
   if (inputs.textured) caseSettings.engineSampleShading = false;
 
-  const StageRun baked = runStage(cache, "bake-" + caseName, bakeCommand(caseSettings, inputs));
+  // The scene's visibility, shared by its bakes under every map (stage_commands.h).
+  const StageRun visibility = runStage(cache, "visibility-" + result.scene, visibilityCommand(caseSettings, inputs));
+  result.visibilitySeconds = visibility.seconds;
+  result.commands.push_back(visibility.command);
+  const StageRun baked = runStage(cache, "bake-" + caseName, bakeCommand(caseSettings, inputs, visibility.folder));
   result.bakeSeconds = baked.seconds;
   result.commands.push_back(baked.command);
   const std::vector<Image> frames = renderEngineFrames(caseSettings, cache, caseName, baked.folder, result);
   const Reference reference = traceReference(caseSettings, cache, caseName, inputs, frames, result);
-  result.pending = result.pending || baked.pending;
+  result.pending = result.pending || visibility.pending || baked.pending;
   if (result.pending) return result;  // a scheduler runs the missing stages first
   const std::vector<FlipErrorMap> flipMaps = scoreModes(reference, frames, result);
   writeCasePictures(caseSettings.outDir, caseName, reference, frames, flipMaps, result);

@@ -206,6 +206,7 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                   {"mapSunShare", number(result.concentration.sunShare)},
                   {"mapSourceShare", number(result.concentration.sourceShare)},
                   {"bakeSeconds", result.bakeSeconds},
+                  {"visibilitySeconds", result.visibilitySeconds},
                   {"traceSeconds", result.traceSeconds},
                   {"reference", {{"spp", result.referenceSpp},
                                  {"relMseEstimate", number(result.referenceRelMse)},

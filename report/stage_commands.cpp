@@ -42,12 +42,34 @@ CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile
   return inputs;
 }
 
-StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs) {
+namespace {
+
+// iblkit-bake's visibility options (what reused_visibility.h compares).
+void appendVisibilityOptions(const ReportSettings& settings, std::vector<std::string>& arguments) {
+  arguments.insert(arguments.end(), {"--bounces", std::to_string(settings.bakeBounces)});
+  if (settings.bakeAreaSampling) arguments.push_back("--ao-area");
+}
+
+}  // namespace
+
+StageCommand visibilityCommand(const ReportSettings& settings, const CaseInputs& inputs) {
+  StageCommand command{settings.binDir / "iblkit-bake", {inputs.sceneFile.string()}, {}};
+  // The scene and what it reads, not the map.
+  for (const fs::path& file : inputs.files)
+    if (file != inputs.environmentFile) command.inputFiles.push_back(file);
+  appendVisibilityOptions(settings, command.arguments);
+  command.arguments.insert(command.arguments.end(), {"--visibility-only", "-o", stageFile("bake")});
+  return command;
+}
+
+StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs, const fs::path& visibility) {
   StageCommand command{settings.binDir / "iblkit-bake",
-                       {inputs.sceneFile.string(), "--env", inputs.environmentFile.string(), "--bounces",
-                        std::to_string(settings.bakeBounces)},
+                       {inputs.sceneFile.string(), "--env", inputs.environmentFile.string()},
                        inputs.files};
-  if (settings.bakeAreaSampling) command.arguments.push_back("--ao-area");
+  appendVisibilityOptions(settings, command.arguments);
+  if (!visibility.empty())
+    command.arguments.insert(command.arguments.end(),
+                             {"--visibility-from", std::string(kCacheFolder) + "/" + visibility.filename().string() + "/bake"});
   command.arguments.insert(command.arguments.end(), {"-o", stageFile("bake")});
   return command;
 }

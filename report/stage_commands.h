@@ -1,6 +1,6 @@
 #pragma once
-// The commands of the report's stages, as a user would type them (docs/report.md): the bake, the
-// engine frames of a group of modes and one reference pass per seed. Each names its outputs under
+// The commands of the report's stages, as a user would type them (docs/report.md): a scene's
+// visibility, the bake, the engine frames of a group of modes and one reference pass per seed. Each names its outputs under
 // kStageFolder, so its cache key (stageKey) is hashed from exactly what runs.
 
 #include <filesystem>
@@ -27,8 +27,16 @@ struct CaseInputs {
 };
 CaseInputs caseInputs(const std::filesystem::path& sceneFile, const std::filesystem::path& environmentFile);
 
-// iblkit-bake SCENE --env ENV -o {stage}/bake: per-vertex visibility and the prefiltered map.
-StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs);
+// iblkit-bake SCENE --bounces N [--ao-area] --visibility-only -o {stage}/bake: the scene's per-vertex
+// visibility, which does not depend on the map (baker/reused_visibility.h): one stage per scene,
+// its key from the scene's files alone, read by the bakes of every map.
+StageCommand visibilityCommand(const ReportSettings& settings, const CaseInputs& inputs);
+
+// iblkit-bake SCENE --env ENV --bounces N [--ao-area] [--visibility-from VISIBILITY] -o {stage}/bake:
+// the prefiltered map and the suns' bounce, with the per-vertex visibility of the visibility stage
+// whose folder in the cache is `visibility` (named under kCacheFolder; empty: traced here).
+StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs,
+                         const std::filesystem::path& visibility = {});
 
 // iblkit-view BAKE --headless -o {stage}/frame-{mode}.exr --mode MODE,MODE... at the report's size,
 // samples, supersampling and bench frames: the frames of several modes from one process (each to

@@ -5,15 +5,19 @@
 #include <bit>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <glm/gtc/constants.hpp>
 #include <nlohmann/json.hpp>
 
 #include "baker/visibility_attributes.h"
+#include "bakefile/vertex_attributes.h"
+#include "core/scene.h"
 #include "core/gltf_load.h"
 #include "core/image_io.h"
 #include "core/latlong.h"
 #include "core/procedural_mesh.h"
 #include "support/gltf_builder.h"
+#include "support/sun_map.h"
 #include "support/test_paths.h"
 #include "support/usage_error_check.h"
 
@@ -367,6 +371,95 @@ TEST(IblkitBake, VisibilityOptionsAreRecorded) {
   EXPECT_EQ(report["counts"]["bounce_rays"], 2 * report["counts"]["rays"].get<std::size_t>());
   for (const char* stage : {"visibility_build_s", "visibility_rays_s", "bounces_s"})
     EXPECT_GT(report["timings"][stage], 0.0) << stage;
+}
+
+std::string fileBytes(const fs::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>{});
+}
+
+// A small sky with a sun (test::sunnySky), 64 x 32.
+fs::path writeSunnySky(const fs::path& file) {
+  const EnvironmentMap sky = test::sunnySky(
+      64, {test::SunDisk{.direction = glm::normalize(glm::vec3(0.5f, 0.7f, 0.3f)), .angularRadius = 0.05f}});
+  writeExr(file, sky.image(), {.pixelType = PixelType::Float});
+  return file;
+}
+
+// --visibility-from takes the per-vertex visibility of another bake of the scene (here one with
+// --visibility-only, under no map) instead of tracing it: the bake is the same, byte for byte, as
+// one that traces it, the suns' bounce (which reads the map) included.
+TEST(IblkitBake, VisibilityFromAnotherBakeIsTheSameBakeByteForByte) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), env = writeSunnySky(root / "sky.exr");
+  const std::string options = " --ao-rays 16 --bounces 1 --ao-area --specular-samples 64 --lut-size 16";
+  int status = 0;
+  std::string log = bake(scene.string() + " --env " + env.string() + options + " -o " + (root / "full").string(), &status);
+  ASSERT_EQ(status, 0) << log;
+  log = bake(scene.string() + options + " --visibility-only -o " + (root / "visibility").string(), &status);
+  ASSERT_EQ(status, 0) << log;
+  const nlohmann::json visibility = nlohmann::json::parse(std::ifstream(root / "visibility" / "bake.json"));
+  EXPECT_EQ(visibility["outputs"], nlohmann::json({"scene.glb", "bake.json"}));
+  EXPECT_FALSE(fs::exists(root / "visibility" / "env"));
+  log = bake(scene.string() + " --env " + env.string() + options + " --visibility-from " +
+                 (root / "visibility").string() + " -o " + (root / "reused").string(),
+             &status);
+  ASSERT_EQ(status, 0) << log;
+  const nlohmann::json full = nlohmann::json::parse(std::ifstream(root / "full" / "bake.json"));
+  const nlohmann::json reused = nlohmann::json::parse(std::ifstream(root / "reused" / "bake.json"));
+  ASSERT_EQ(full["outputs"].size(), 10u);
+  EXPECT_EQ(reused["outputs"], full["outputs"]);
+  for (const nlohmann::json& file : full["outputs"]) {
+    const std::string name = file.get<std::string>();
+    if (name == "bake.json") continue;  // timings
+    const std::string a = fileBytes(root / "full" / name), b = fileBytes(root / "reused" / name);
+    EXPECT_FALSE(a.empty()) << name;
+    EXPECT_TRUE(a == b) << name;
+  }
+  EXPECT_EQ(reused["visibility_from"], (root / "visibility").string());
+  EXPECT_EQ(reused["counts"]["rays"], 0);
+  EXPECT_EQ(reused["counts"]["vertices"], full["counts"]["vertices"]);
+  // The map has a sun, so the byte comparison covers its bounce, traced on the reused visibility.
+  const Scene baked = loadScene(root / "reused" / "scene.glb");
+  EXPECT_TRUE(baked.meshes.front().attributes.contains(kSunBounceAttribute));
+  EXPECT_GT(full["counts"]["sun_bounce_rays"].get<std::size_t>(), 0u);
+}
+
+// A visibility baked with other options, or of another scene, is refused with one line naming the
+// file, and nothing is written.
+TEST(IblkitBake, VisibilityFromRefusesOtherOptionsAndOtherScenes) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), out = root / "out", visibility = root / "visibility";
+  int status = 0;
+  std::string log = bake(scene.string() + " --ao-rays 16 --visibility-only -o " + visibility.string(), &status);
+  ASSERT_EQ(status, 0) << log;
+  const auto refused = [&](const std::string& arguments, const std::string& message) {
+    const std::string output = bake(arguments + " -o " + out.string(), &status);
+    EXPECT_EQ(status, 1) << output;
+    EXPECT_EQ(output, "iblkit-bake: " + message + "\n");
+    EXPECT_FALSE(fs::exists(out));
+  };
+  refused(scene.string() + " --ao-rays 8 --visibility-from " + visibility.string(),
+          (visibility / "bake.json").string() +
+              ": visibility baked with ao_rays 16, not 8 (--visibility-from needs the same visibility options)");
+  refused(scene.string() + " --ao-rays 16 --bounces 1 --visibility-from " + visibility.string(),
+          (visibility / "bake.json").string() +
+              ": visibility baked with bounces 0, not 1 (--visibility-from needs the same visibility options)");
+  // The same ball a little higher: another scene.
+  const fs::path moved = root / "moved.json";
+  std::ofstream(moved) << R"({"models": [{"file": "models/ball.glb", "translation": [0, 0.6, 0]}], "ground": {}})";
+  const std::string output =
+      bake(moved.string() + " --ao-rays 16 --visibility-from " + visibility.string() + " -o " + out.string(), &status);
+  EXPECT_EQ(status, 1) << output;
+  EXPECT_EQ(output.rfind("iblkit-bake: " + (visibility / "scene.glb").string() + ": mesh ", 0), 0u) << output;
+  EXPECT_NE(output.find("is not the scene's (not a bake of this scene)\n"), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(out));
+  refused(scene.string() + " --ao-rays 16 --visibility-from " + (root / "absent").string(),
+          (root / "absent").string() + ": no such bake folder");
+  test::expectUsageError((test::binDir() / "iblkit-bake").string() + " " + scene.string() +
+                             " --visibility-only --visibility-from " + visibility.string() + " -o " + out.string(),
+                         "iblkit-bake: --visibility-only excludes --visibility-from");
+  EXPECT_EQ(leftovers(root), 0);
 }
 
 TEST(IblkitBake, FalloffWithoutADistanceIsRefusedWithoutOutput) {

@@ -11,6 +11,7 @@
 
 #include "core/image.h"
 #include "core/image_io.h"
+#include "report/pending_stages.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
 
@@ -50,6 +51,38 @@ TEST(StageCommands, OutputsAreUnderThePlaceholder) {
   for (const char* file : {"/c/t/beauty.exr", "/c/t/depth.exr", "/c/t/normal.exr"})
     EXPECT_NE(std::find(argv.begin(), argv.end(), file), argv.end()) << file;
   EXPECT_EQ(fixture.inputs.files.size(), 2u);  // the scene and the map: a shape names no file
+}
+
+// A scene's visibility is one stage for every map: its command and key name the scene's files and
+// the visibility options, not the map; the bakes read it from the cache.
+TEST(StageCommands, TheVisibilityStageIsTheScenesUnderEveryMap) {
+  Fixture fixture;
+  const fs::path dir = fixture.inputs.sceneFile.parent_path();
+  std::ofstream(dir / "other.exr") << "other pixels";
+  const CaseInputs other = caseInputs(dir / "scene.json", dir / "other.exr");
+  const StageCommand visibility = visibilityCommand(fixture.settings, fixture.inputs);
+  EXPECT_EQ(stageKey(visibility), stageKey(visibilityCommand(fixture.settings, other)));
+  EXPECT_EQ(std::find(visibility.inputFiles.begin(), visibility.inputFiles.end(), fixture.inputs.environmentFile),
+            visibility.inputFiles.end());
+  const std::vector<std::string> argv = stageArgv(visibility, "/c", "/c/v");
+  EXPECT_NE(std::find(argv.begin(), argv.end(), "--visibility-only"), argv.end());
+  EXPECT_EQ(std::find(argv.begin(), argv.end(), "--env"), argv.end());
+  EXPECT_EQ(argv.back(), "/c/v/bake");
+  // The visibility options change it, as they change the bakes that read it.
+  ReportSettings bounced = fixture.settings;
+  bounced.bakeBounces = 0;
+  EXPECT_NE(stageKey(visibilityCommand(bounced, fixture.inputs)), stageKey(visibility));
+  ReportSettings pointSampled = fixture.settings;
+  pointSampled.bakeAreaSampling = !pointSampled.bakeAreaSampling;
+  EXPECT_NE(stageKey(visibilityCommand(pointSampled, fixture.inputs)), stageKey(visibility));
+  // A bake names the stage's folder under the cache placeholder, so the stage's key is in its key.
+  const StageCommand bake = bakeCommand(fixture.settings, fixture.inputs, "/cache/visibility-scene-0123");
+  const std::vector<std::string> bakeArgv = stageArgv(bake, "/c", "/c/b");
+  const auto from = std::find(bakeArgv.begin(), bakeArgv.end(), "--visibility-from");
+  ASSERT_NE(from, bakeArgv.end());
+  EXPECT_EQ(*(from + 1), "/c/visibility-scene-0123/bake");
+  EXPECT_EQ(stageFoldersRead(bake), std::vector<std::string>{"visibility-scene-0123"});
+  EXPECT_NE(stageKey(bake), stageKey(bakeCommand(fixture.settings, fixture.inputs, "/cache/visibility-scene-4567")));
 }
 
 // The modes that one iblkit-view renders together: all but lights-shadowed, which supersamples
