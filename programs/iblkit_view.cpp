@@ -39,6 +39,7 @@
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/scene_environment.h"
+#include "core/temporary_files.h"
 #include "core/usage_error.h"
 #include "bakefile/bake_folder.h"
 #include "engine/gl/drawn_lights.h"
@@ -231,30 +232,42 @@ fs::path forMode(const fs::path& file, ShadingMode mode) {
   return name;
 }
 
-// An image to write and where.
-struct PendingImage {
-  fs::path file;
-  Image image;
-  bool png = false;  // tone-mapped (the frame's exposure and curve), else float EXR with alpha
-};
-
-// Writes every image, or (when one fails) none: those already written are removed again.
-void writeAll(const std::vector<PendingImage>& images, const FrameSettings& settings) {
-  std::size_t written = 0;
-  try {
-    for (; written < images.size(); ++written) {
-      const PendingImage& pending = images[written];
-      if (pending.png)
-        writePng(pending.file, pending.image, {.exposure = settings.exposure, .curve = settings.curve});
-      else
-        writeExr(pending.file, pending.image, {.pixelType = PixelType::Float, .writeAlpha = true});
-    }
-  } catch (...) {
-    std::error_code ignored;
-    for (std::size_t i = 0; i < written; ++i) fs::remove(images[i].file, ignored);
-    throw;
+// Output images written beside their targets under temporary names as they are rendered, then
+// renamed into place together (commit) or removed (the destructor, when commit was not reached):
+// several modes' frames are all written or none, holding one frame at a time in memory, and an
+// interrupt removes the temporaries (core/temporary_files.h).
+class StagedOutputs {
+ public:
+  StagedOutputs() = default;
+  StagedOutputs(const StagedOutputs&) = delete;
+  StagedOutputs& operator=(const StagedOutputs&) = delete;
+  ~StagedOutputs() {
+    for (const auto& [temporary, target] : staged_) discardTemporary(temporary);
   }
-}
+
+  // `image` for `target`: tone-mapped PNG (the frame's exposure and curve) or float EXR with alpha.
+  void add(const fs::path& target, const Image& image, bool png, const FrameSettings& settings) {
+    const fs::path temporary = createTemporaryFile(target);
+    staged_.emplace_back(temporary, target);
+    if (png)
+      writePng(temporary, image, {.exposure = settings.exposure, .curve = settings.curve});
+    else
+      writeExr(temporary, image, {.pixelType = PixelType::Float, .writeAlpha = true});
+  }
+
+  void commit() {
+    withTemporariesLocked([&] {
+      for (const auto& [temporary, target] : staged_) {
+        fs::rename(temporary, target);
+        unregisterTemporary(temporary);
+      }
+    });
+    staged_.clear();
+  }
+
+ private:
+  std::vector<std::pair<fs::path, fs::path>> staged_;  // (temporary, target)
+};
 
 // --mode: one mode, "all" (every mode, --bench only), or several (a list).
 std::vector<ShadingMode> parseModes(const std::vector<std::string>& names, bool* all) {
@@ -320,25 +333,26 @@ int runHeadless(const Options& options) {
   checkGlErrors("setup");
 
   // The output frames first: they also warm up their shader variants and render the shadow maps
-  // for the frames timed after them (one warm-up frame less). All are rendered before any is
-  // written, and written all or none.
+  // for the frames timed after them (one warm-up frame less). Written all or none.
   if (!options.output.empty()) {
-    std::vector<PendingImage> images;
+    StagedOutputs staged;
     for (ShadingMode mode : modes) {
       FrameSettings modeSettings = settings;
       modeSettings.mode = mode;
       renderer.render(camera, modeSettings, target.framebuffer(), target.width(), target.height());
-      Image image = readFrame(target, options.supersample);
+      const Image image = readFrame(target, options.supersample);
       checkGlErrors("render");
       if (!options.normalOutput.empty())
-        images.push_back({forMode(options.normalOutput, mode),
-                          renderLayer(renderer, target, camera, modeSettings, FrameLayer::Normal, options.supersample)});
+        staged.add(forMode(options.normalOutput, mode),
+                   renderLayer(renderer, target, camera, modeSettings, FrameLayer::Normal, options.supersample), false,
+                   settings);
       if (!options.depthOutput.empty())
-        images.push_back({forMode(options.depthOutput, mode),
-                          renderLayer(renderer, target, camera, modeSettings, FrameLayer::Depth, options.supersample)});
-      images.push_back({forMode(options.output, mode), std::move(image), lowerExtension(options.output) == ".png"});
+        staged.add(forMode(options.depthOutput, mode),
+                   renderLayer(renderer, target, camera, modeSettings, FrameLayer::Depth, options.supersample), false,
+                   settings);
+      staged.add(forMode(options.output, mode), image, lowerExtension(options.output) == ".png", settings);
     }
-    writeAll(images, settings);
+    staged.commit();
   }
   if (options.bench > 0) {
     std::cout << kProgram << ": " << context.description() << ", " << width << "x" << height << ", "
