@@ -1,20 +1,44 @@
 #include "baker/reused_visibility.h"
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 
 #include "bakefile/bake_layout.h"
 #include "bakefile/bake_record.h"
 #include "bakefile/vertex_attributes.h"
+#include "core/content_hash.h"
 #include "core/error.h"
 #include "core/scene.h"
+#include "core/texture.h"
 
 namespace iblkit {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-void reuseVisibility(const fs::path& bake, const json& parameters, std::vector<Mesh>& meshes) {
+std::string sceneContentHash(const Scene& scene) {
+  ContentHash hash;
+  std::vector<fs::path> files = {scene.file};
+  const auto add = [&](const fs::path& file) {
+    if (!file.empty() && std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+  };
+  for (const fs::path& model : scene.modelFiles) add(model);
+  // An image embedded in a glTF names no file of its own: the model's bytes hold it.
+  for (const TextureImage& image : scene.images) add(image.file);
+  for (const fs::path& file : files) {
+    // A procedural shape's model entry ("shape:sphere") names no file; the scene file holds it.
+    std::error_code error;
+    if (fs::is_regular_file(file, error))
+      hash.add(file.filename().string()).addFile(file);
+    else
+      hash.add(file.string());
+  }
+  return hash.hex();
+}
+
+void reuseVisibility(const fs::path& bake, const json& parameters, Scene& scene) {
+  std::vector<Mesh>& meshes = scene.meshes;
   std::error_code error;
   if (!fs::is_directory(bake, error)) fail(bake, "no such bake folder");
   const fs::path recordFile = requireBakeFile(bake / kBakeRecordFile);
@@ -30,6 +54,9 @@ void reuseVisibility(const fs::path& bake, const json& parameters, std::vector<M
       fail(recordFile, std::string("visibility baked with ") + name + " " + theirs.dump() + ", not " + ours.dump() +
                            " (--visibility-from needs the same visibility options)");
   }
+  if (!record.contains("scene_hash") || record["scene_hash"] != sceneContentHash(scene))
+    fail(recordFile, "baked from other scene files than " + scene.file.string() +
+                         " (its scene_hash differs: the scene, a model or a texture is not the same)");
   const fs::path sceneFile = requireBakeFile(bake / kBakeSceneFile);
   const Scene baked = loadScene(sceneFile);
   if (baked.meshes.size() != meshes.size())

@@ -249,8 +249,9 @@ int bake(const Options& options) {
   settings.progress = progressBar("visibility");
   VisibilityStatistics statistics;
   const json parameters = bakeParameters(options);
+  const std::string sceneHash = sceneContentHash(scene);
   if (!options.visibilityFrom.empty()) {
-    reuseVisibility(options.visibilityFrom, parameters, scene.meshes);
+    reuseVisibility(options.visibilityFrom, parameters, scene);
     for (const Mesh& mesh : scene.meshes) statistics.vertices += mesh.vertexCount();
   } else {
     attachVisibilityAttributes(scene.meshes, bakeVertexVisibility(scene.meshes, settings, &statistics));
@@ -303,6 +304,8 @@ int bake(const Options& options) {
     if (!options.visibilityFrom.empty())
       record["visibility_from"] = fs::absolute(options.visibilityFrom).lexically_normal().string();
     record["environment"] = environmentReport;
+    // What --visibility-from checks (baker/reused_visibility.h).
+    record["scene_hash"] = sceneHash;
     record["outputs"] = outputs;
     record["timings"] = timings;
     record["counts"] = {{"meshes", scene.meshes.size()},

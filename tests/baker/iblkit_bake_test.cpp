@@ -445,9 +445,24 @@ TEST(IblkitBake, VisibilityFromRefusesOtherOptionsAndOtherScenes) {
   refused(scene.string() + " --ao-rays 16 --bounces 1 --visibility-from " + visibility.string(),
           (visibility / "bake.json").string() +
               ": visibility baked with bounces 0, not 1 (--visibility-from needs the same visibility options)");
-  // The same ball a little higher: another scene.
-  const fs::path moved = root / "moved.json";
+  // The same ball in another colour: the same meshes, but the bounces reflect another albedo. The
+  // scene files' hash (scene_hash) tells them apart.
+  const fs::path recoloured = root / "recoloured.json";
+  std::ofstream(recoloured) << R"({"models": [{"file": "models/ball.glb", "translation": [0, 0.5, 0],
+    "material": {"baseColor": [0.2, 0.7, 0.6], "metallic": 0}}], "ground": {},
+    "camera": {"position": [0, 1, 4], "target": [0, 0.5, 0]}})";
+  refused(recoloured.string() + " --ao-rays 16 --visibility-from " + visibility.string(),
+          (visibility / "bake.json").string() + ": baked from other scene files than " + recoloured.string() +
+              " (its scene_hash differs: the scene, a model or a texture is not the same)");
+  // Meshes that differ under a matching hash (a bake.json edited by hand) are refused too: the same
+  // ball a little higher, its hash written into the first bake's record.
+  const fs::path moved = root / "moved.json", movedBake = root / "moved_visibility";
   std::ofstream(moved) << R"({"models": [{"file": "models/ball.glb", "translation": [0, 0.6, 0]}], "ground": {}})";
+  log = bake(moved.string() + " --ao-rays 16 --visibility-only -o " + movedBake.string(), &status);
+  ASSERT_EQ(status, 0) << log;
+  nlohmann::json record = nlohmann::json::parse(std::ifstream(visibility / "bake.json"));
+  record["scene_hash"] = nlohmann::json::parse(std::ifstream(movedBake / "bake.json"))["scene_hash"];
+  std::ofstream(visibility / "bake.json") << record.dump(2);
   const std::string output =
       bake(moved.string() + " --ao-rays 16 --visibility-from " + visibility.string() + " -o " + out.string(), &status);
   EXPECT_EQ(status, 1) << output;
