@@ -99,7 +99,9 @@ TEST(WriteAtomically, AFolderUnderTheFinalNameIsAnError) {
 // make one, else a FIFO): a regression must not replace the machine's /dev/full.
 TEST(WriteAtomically, NeverReplacesADeviceNode) {
   const std::filesystem::path device = test::scratchDir() / "full";
-  if (::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) ASSERT_EQ(::mkfifo(device.c_str(), 0666), 0);
+  if (::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) {
+    ASSERT_EQ(::mkfifo(device.c_str(), 0666), 0);
+  }
   EXPECT_EQ(test::errorMessage([&] {
               writeAtomically(device, [](const std::filesystem::path& temporary) { writeText(temporary, "x"); });
             }),

@@ -3,8 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#define GLM_ENABLE_EXPERIMENTAL
-#include <glm/gtx/component_wise.hpp>
+#include <glm/gtx/component_wise.hpp>  // GLM_ENABLE_EXPERIMENTAL: iblkit_core defines it
 
 #include <algorithm>
 #include <cmath>
