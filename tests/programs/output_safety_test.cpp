@@ -42,7 +42,9 @@ void expectOneLine(const Outcome& run, const std::string& program, const fs::pat
 // replace the machine's device node (as the old programs did here, run as root).
 fs::path specialFile(const fs::path& root) {
   const fs::path node = root / "full";
-  if (::mknod(node.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) EXPECT_EQ(::mkfifo(node.c_str(), 0666), 0);
+  if (::mknod(node.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) {
+    EXPECT_EQ(::mkfifo(node.c_str(), 0666), 0);
+  }
   return node;
 }
 
