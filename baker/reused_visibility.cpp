@@ -37,7 +37,7 @@ std::string sceneContentHash(const Scene& scene) {
   return hash.hex();
 }
 
-void reuseVisibility(const fs::path& bake, const json& parameters, Scene& scene) {
+void reuseVisibility(const fs::path& bake, const json& parameters, const std::string& sceneHash, Scene& scene) {
   std::vector<Mesh>& meshes = scene.meshes;
   std::error_code error;
   if (!fs::is_directory(bake, error)) fail(bake, "no such bake folder");
@@ -54,7 +54,7 @@ void reuseVisibility(const fs::path& bake, const json& parameters, Scene& scene)
       fail(recordFile, std::string("visibility baked with ") + name + " " + theirs.dump() + ", not " + ours.dump() +
                            " (--visibility-from needs the same visibility options)");
   }
-  if (!record.contains("scene_hash") || record["scene_hash"] != sceneContentHash(scene))
+  if (!record.contains("scene_hash") || record["scene_hash"] != sceneHash)
     fail(recordFile, "baked from other scene files than " + scene.file.string() +
                          " (its scene_hash differs: the scene, a model or a texture is not the same)");
   const fs::path sceneFile = requireBakeFile(bake / kBakeSceneFile);

@@ -34,9 +34,12 @@ std::string sceneContentHash(const Scene& scene);
 // Throws Error naming the file when `bake` is no bake folder (bake.json and scene.glb, of
 // kBakeVersion), when a parameter above differs ("bake.json: visibility baked with ao_rays 64, not
 // 256 (--visibility-from needs the same visibility options)"), when its scene_hash is not
-// sceneContentHash(scene) (other scene files, or a file changed since), when its meshes are not
+// sceneHash (other scene files, or a file changed since), when its meshes are not
 // these (their number, a mesh's positions, triangles or ground flag differ: "scene.glb: mesh 2
 // 'bunny' is not the scene's"), or when an attribute is missing or of the wrong size.
-void reuseVisibility(const std::filesystem::path& bake, const nlohmann::json& parameters, Scene& scene);
+// `sceneHash` is sceneContentHash(scene), which the caller records too (computed once: it reads
+// every scene file).
+void reuseVisibility(const std::filesystem::path& bake, const nlohmann::json& parameters, const std::string& sceneHash,
+                     Scene& scene);
 
 }  // namespace iblkit

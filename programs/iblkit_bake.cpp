@@ -251,7 +251,7 @@ int bake(const Options& options) {
   const json parameters = bakeParameters(options);
   const std::string sceneHash = sceneContentHash(scene);
   if (!options.visibilityFrom.empty()) {
-    reuseVisibility(options.visibilityFrom, parameters, scene);
+    reuseVisibility(options.visibilityFrom, parameters, sceneHash, scene);
     for (const Mesh& mesh : scene.meshes) statistics.vertices += mesh.vertexCount();
   } else {
     attachVisibilityAttributes(scene.meshes, bakeVertexVisibility(scene.meshes, settings, &statistics));
