@@ -1,12 +1,12 @@
 #include "baker/reused_visibility.h"
 
 #include <algorithm>
-#include <fstream>
 #include <string>
 
 #include "bakefile/bake_layout.h"
 #include "bakefile/bake_record.h"
 #include "bakefile/vertex_attributes.h"
+#include "baker/reused_bake.h"
 #include "core/content_hash.h"
 #include "core/error.h"
 #include "core/scene.h"
@@ -39,21 +39,11 @@ std::string sceneContentHash(const Scene& scene) {
 
 void reuseVisibility(const fs::path& bake, const json& parameters, const std::string& sceneHash, Scene& scene) {
   std::vector<Mesh>& meshes = scene.meshes;
-  std::error_code error;
-  if (!fs::is_directory(bake, error)) fail(bake, "no such bake folder");
-  const fs::path recordFile = requireBakeFile(bake / kBakeRecordFile);
-  readBakeRecord(recordFile);  // the version and the inputs
-  std::ifstream stream(recordFile);
-  const json record = json::parse(stream, nullptr, false);
-  if (record.is_discarded() || !record.contains("parameters") || !record["parameters"].is_object())
-    fail(recordFile, "no parameters");
-  for (const char* name : kVisibilityParameters) {
-    const json& theirs = record["parameters"].contains(name) ? record["parameters"][name] : json();
-    const json& ours = parameters.at(name);
-    if (theirs != ours)
-      fail(recordFile, std::string("visibility baked with ") + name + " " + theirs.dump() + ", not " + ours.dump() +
-                           " (--visibility-from needs the same visibility options)");
-  }
+  BakeInputs inputs;
+  const json record = readBakeToReuse(bake, inputs);
+  const fs::path recordFile = bake / kBakeRecordFile;
+  requireSameParameters(bake, record, parameters, kVisibilityParameters, "visibility", "--visibility-from",
+                        "the same visibility options");
   if (!record.contains("scene_hash") || record["scene_hash"] != sceneHash)
     fail(recordFile, "baked from other scene files than " + scene.file.string() +
                          " (its scene_hash differs: the scene, a model or a texture is not the same)");

@@ -5,7 +5,8 @@
 //               [--ao-distance D] [--ao-falloff P] [--ao-area] [--bounces N] [--seed S] [--threads T]
 //               [--sh-window auto|none|BANDS] [--specular-samples N] [--lut-size N]
 //               [--sun-threshold auto|L] [--max-suns N] [--median-cut-levels N]
-//               [--visibility-only | --visibility-from BAKE]
+//               [--visibility-only | --visibility-from BAKE] [--environment-from BAKE]
+//   iblkit-bake [SCENE] --environment-only [--env ENV ...] -o OUTDIR
 //
 // OUTDIR/scene.glb  the whole flattened scene (world-space meshes, ground included, materials with
 //                   the scene's overrides applied, camera) with per-vertex visibility attributes
@@ -17,6 +18,10 @@
 // --visibility-only bakes the visibility alone (no environment stages, no suns' bounce);
 // --visibility-from BAKE takes it from BAKE, a bake of the same scene with the same visibility
 // options, instead of tracing it again (baker/reused_visibility.h): a scene under several maps.
+// --environment-only bakes the environment stages alone (env/ and bake.json, no scene.glb; the
+// scene, when given, only names the map, rotation and intensity); --environment-from BAKE copies
+// them from BAKE, a bake of the same map bytes with the same environment options, instead of
+// computing them again (baker/reused_environment.h): one map under several scenes.
 
 #include <unistd.h>
 
@@ -40,6 +45,7 @@
 #include "bakefile/scene_glb.h"
 #include "baker/environment_stages.h"
 #include "baker/irradiance_cube.h"
+#include "baker/reused_environment.h"
 #include "baker/reused_visibility.h"
 #include "baker/vertex_visibility.h"
 #include "baker/visibility_attributes.h"
@@ -82,6 +88,8 @@ struct Options {
   bool force = false;
   bool visibilityOnly = false;
   fs::path visibilityFrom;
+  bool environmentOnly = false;
+  fs::path environmentFrom;
 };
 
 // bake.json's parameters (bake_record.h), the visibility's under kVisibilityParameters' names.
@@ -95,6 +103,7 @@ json bakeParameters(const Options& options) {
           {"sh_window", options.shWindow},
           {"specular_samples", options.specularSamples},
           {"specular_size", options.specularSize},
+          {"lut_size", options.lutSize},
           {"sun_threshold", options.sunThreshold},
           {"max_suns", options.maxSuns},
           {"median_cut_levels", options.medianCutLevels}};
@@ -216,22 +225,54 @@ int bake(const Options& options) {
   sunThreshold(options.sunThreshold);
   specularBaseSize(options.specularSize);
   checkEnvironmentOverride(options.environment);
+  const bool sceneGiven = !options.scene.empty();
+  if (!sceneGiven && !options.environmentOnly)
+    failUsage("scene", "required (only --environment-only bakes without a scene, the map from --env)");
+  if (!sceneGiven && options.environment.file.empty())
+    failUsage("--env", "required by --environment-only without a scene");
   Stopwatch stopwatch;
   json timings;
-  Scene scene = loadScene(options.scene);
-  timings["load_s"] = stopwatch.lap();
+  Scene scene;
+  if (sceneGiven) {
+    scene = loadScene(options.scene);
+    timings["load_s"] = stopwatch.lap();
+  } else {
+    scene.file = options.environment.file;  // what a message about the map's settings names
+  }
 
   const EnvironmentSettings environment = overriddenEnvironment(scene.environment, options.environment);
   // -o replaces the folder: it must not be or hold an input, and an existing folder must be a
   // bake (or empty) unless --force.
-  checkOutputs(sceneInputs(scene, options.environment), {},
+  checkOutputs(sceneGiven ? sceneInputs(scene, options.environment) : std::vector<fs::path>{environment.file}, {},
                {OutputFolder(options.output, {"iblkit bake folder", {kBakeRecordFile}})}, options.force);
-  // Loaded before the long visibility stage, so a bad map fails fast.
+  if ((options.environmentOnly || !options.environmentFrom.empty()) && environment.file.empty())
+    fail(scene.file, std::string("the scene names no environment map (") +
+                         (options.environmentOnly ? "--environment-only" : "--environment-from") +
+                         " needs one; give --env FILE)");
+  const bool withEnvironment = !environment.file.empty() && !options.visibilityOnly;
+  const BakeInputs inputs{.scene = sceneGiven ? fs::absolute(options.scene).lexically_normal() : fs::path(),
+                          .environment = withEnvironment ? fs::absolute(environment.file).lexically_normal() : fs::path(),
+                          .environmentFormat = options.envFormat,
+                          .environmentRotationDegrees = environment.rotationDegrees,
+                          .environmentIntensity = environment.intensity};
+  // bake.json's parameters, the environment's (env_format, rotation, intensity) included: what
+  // --visibility-from and --environment-from compare.
+  const json parameters = makeBakeRecord(inputs, bakeParameters(options))["parameters"];
+  // Loaded before the long visibility stage, so a bad map fails fast; or, with --environment-from,
+  // the stages of another bake of the same map bytes (checked before any work too).
   std::optional<EnvironmentMap> environmentMap;
-  if (!environment.file.empty() && !options.visibilityOnly) {
-    environmentMap = loadEnvironment(environment, parseProbeFormat(options.envFormat));
-    checkEnvironmentIntensity(*environmentMap, environment, scene, options.environment);
-    requireEnvironmentForStages(*environmentMap, environment.file);
+  std::optional<ReusedEnvironment> reusedEnvironment;
+  std::string environmentHash;
+  if (withEnvironment) {
+    if (options.environmentFrom.empty()) {
+      environmentMap = loadEnvironment(environment, parseProbeFormat(options.envFormat));
+      checkEnvironmentIntensity(*environmentMap, environment, scene, options.environment);
+      requireEnvironmentForStages(*environmentMap, environment.file);
+      environmentHash = environmentContentHash(environment.file);
+    } else {
+      environmentHash = environmentContentHash(environment.file);
+      reusedEnvironment = reuseEnvironment(options.environmentFrom, parameters, environmentHash);
+    }
     timings["load_environment_s"] = stopwatch.lap();
   }
 
@@ -248,47 +289,50 @@ int bake(const Options& options) {
   useSceneMaterials(settings, scene);  // AO rays pass through masked texels
   settings.progress = progressBar("visibility");
   VisibilityStatistics statistics;
-  const json parameters = bakeParameters(options);
-  const std::string sceneHash = sceneContentHash(scene);
-  if (!options.visibilityFrom.empty()) {
-    reuseVisibility(options.visibilityFrom, parameters, sceneHash, scene);
-    for (const Mesh& mesh : scene.meshes) statistics.vertices += mesh.vertexCount();
-  } else {
-    attachVisibilityAttributes(scene.meshes, bakeVertexVisibility(scene.meshes, settings, &statistics));
+  std::string sceneHash;
+  double visibilitySeconds = 0.0;
+  if (!options.environmentOnly) {
+    sceneHash = sceneContentHash(scene);
+    if (!options.visibilityFrom.empty()) {
+      reuseVisibility(options.visibilityFrom, parameters, sceneHash, scene);
+      for (const Mesh& mesh : scene.meshes) statistics.vertices += mesh.vertexCount();
+    } else {
+      attachVisibilityAttributes(scene.meshes, bakeVertexVisibility(scene.meshes, settings, &statistics));
+    }
+    visibilitySeconds = stopwatch.lap();
+    timings["visibility_s"] = visibilitySeconds;
+    timings["visibility_build_s"] = statistics.buildSeconds;
+    timings["visibility_rays_s"] = statistics.raySeconds;
+    timings["bounces_s"] = statistics.bounceSeconds;
   }
-  const double visibilitySeconds = stopwatch.lap();
-  timings["visibility_s"] = visibilitySeconds;
-  timings["visibility_build_s"] = statistics.buildSeconds;
-  timings["visibility_rays_s"] = statistics.raySeconds;
-  timings["bounces_s"] = statistics.bounceSeconds;
 
   std::size_t triangles = 0;
   for (const Mesh& mesh : scene.meshes) triangles += mesh.triangleCount();
-  const BakeInputs inputs{.scene = fs::absolute(options.scene).lexically_normal(),
-                          .environment = environment.file.empty() || options.visibilityOnly
-                                             ? fs::path()
-                                             : fs::absolute(environment.file).lexically_normal(),
-                          .environmentFormat = options.envFormat,
-                          .environmentRotationDegrees = environment.rotationDegrees,
-                          .environmentIntensity = environment.intensity};
   std::optional<EnvironmentStages> stages;
   if (environmentMap) {
     // The stages make the residual out of the map itself: nothing reads it after them.
     stages = bakeEnvironment(std::move(*environmentMap), options, windowCutoff, timings);
     stopwatch.lap();  // the stages timed themselves
   }
-  // The suns' bounced light for the engine's lights modes, with the visibility's rays.
+  // The suns' bounce for the engine's lights modes, with the visibility's rays, from the lights
+  // computed here or read back from --environment-from's bake.
+  const EnvironmentLights* lights =
+      stages ? &stages->lights : (reusedEnvironment ? &reusedEnvironment->lights : nullptr);
   VisibilityStatistics sunBounceStatistics;
-  if (stages && !stages->lights.suns.empty()) {
+  if (!options.environmentOnly && lights && !lights->suns.empty()) {
     VisibilitySettings sunBounce = settings;
     sunBounce.albedo = albedos;
-    attachSunBounce(scene.meshes, stages->lights, std::move(sunBounce), &sunBounceStatistics);
+    attachSunBounce(scene.meshes, *lights, std::move(sunBounce), &sunBounceStatistics);
     timings["sun_bounce_s"] = stopwatch.lap();
   }
   writeDirectoryAtomically(options.output, [&](const fs::path& folder) {
-    writeSceneGlb(scene, folder / kBakeSceneFile);
-    timings["write_scene_s"] = stopwatch.lap();
-    json outputs = {kBakeSceneFile, kBakeRecordFile};
+    json outputs = json::array();
+    if (!options.environmentOnly) {
+      writeSceneGlb(scene, folder / kBakeSceneFile);
+      timings["write_scene_s"] = stopwatch.lap();
+      outputs.push_back(kBakeSceneFile);
+    }
+    outputs.push_back(kBakeRecordFile);
     json environmentReport = nullptr;
     if (stages) {
       writeEnvironmentStages(folder, *stages);
@@ -298,14 +342,24 @@ int bake(const Options& options) {
                                kBakeLightsFile, kBakeResidualSh9File, kBakeResidualSpecularFile,
                                kBakeResidualIrradianceFile})
         outputs.push_back(file);
+    } else if (reusedEnvironment) {
+      copyReusedEnvironment(*reusedEnvironment, folder);
+      timings["write_environment_s"] = stopwatch.lap();
+      environmentReport = reusedEnvironment->record;
+      for (const char* file : reusedEnvironment->files) outputs.push_back(file);
     }
-    json record = makeBakeRecord(inputs, parameters);
-    // Where the visibility came from (its rays, counted below, are that bake's).
+    json record = makeBakeRecord(inputs, bakeParameters(options));
+    // Where the visibility and the environment stages came from (the visibility's rays, counted
+    // below, are that bake's).
     if (!options.visibilityFrom.empty())
       record["visibility_from"] = fs::absolute(options.visibilityFrom).lexically_normal().string();
+    if (!options.environmentFrom.empty())
+      record["environment_from"] = fs::absolute(options.environmentFrom).lexically_normal().string();
     record["environment"] = environmentReport;
-    // What --visibility-from checks (baker/reused_visibility.h).
-    record["scene_hash"] = sceneHash;
+    // What --visibility-from and --environment-from check (baker/reused_visibility.h,
+    // baker/reused_environment.h).
+    if (!sceneHash.empty()) record["scene_hash"] = sceneHash;
+    if (!environmentHash.empty()) record["environment_hash"] = environmentHash;
     record["outputs"] = outputs;
     record["timings"] = timings;
     record["counts"] = {{"meshes", scene.meshes.size()},
@@ -322,8 +376,12 @@ int bake(const Options& options) {
         statistics.raySeconds > 0.0 ? double(statistics.rays) / statistics.raySeconds : 0.0;
     writeBakeRecord(folder / kBakeRecordFile, record);
   });
-  std::cout << kProgram << ": wrote " << options.output.string() << " (" << statistics.vertices
-            << " vertices, " << statistics.rays << " rays in " << visibilitySeconds << " s)\n";
+  if (options.environmentOnly)
+    std::cout << kProgram << ": wrote " << options.output.string() << " (the environment stages of "
+              << environment.file.string() << ")\n";
+  else
+    std::cout << kProgram << ": wrote " << options.output.string() << " (" << statistics.vertices << " vertices, "
+              << statistics.rays << " rays in " << visibilitySeconds << " s)\n";
   return 0;
 }
 
@@ -334,7 +392,8 @@ int main(int argc, char** argv) {
   iblkit::Options options;
   CLI::App app{"Bakes per-vertex ambient occlusion, bent normals and SH transfer for a scene.",
                iblkit::kProgram};
-  app.add_option("scene", options.scene, "scene: .json description, .gltf or .glb")->required();
+  app.add_option("scene", options.scene,
+                 "scene: .json description, .gltf or .glb (required unless --environment-only)");
   iblkit::addEnvironmentOptions(app, options.environment);
   app.add_option("-o,--output", options.output,
                  "output folder, replaced only after success (an existing one must be a bake, or --force)")
@@ -391,6 +450,16 @@ int main(int argc, char** argv) {
   app.add_option("--visibility-from", options.visibilityFrom,
                  "take the per-vertex visibility from this bake folder, a bake of the same scene with the same "
                  "--ao-*, --bounces and --seed, instead of tracing it again")
+      ->excludes("--visibility-only");
+  auto* environmentOnly = app.add_flag(
+      "--environment-only", options.environmentOnly,
+      "bake the environment stages alone: env/ and bake.json, no scene.glb (a bake for --environment-from); "
+      "the scene is optional, --env names the map without one");
+  environmentOnly->excludes("--visibility-only")->excludes("--visibility-from");
+  app.add_option("--environment-from", options.environmentFrom,
+                 "copy the environment stages from this bake folder, a bake of the same map file with the same "
+                 "--env-*, --sh-window, --specular-*, --lut-size and light options, instead of computing them again")
+      ->excludes(environmentOnly)
       ->excludes("--visibility-only");
   app.add_option("--threads", options.threads, "worker threads; 0 = every core")
       ->check(CLI::Range(0, iblkit::kMaxThreads))

@@ -47,12 +47,18 @@ CaseResult runCase(const ReportSettings& settings, const StageCache& cache, cons
   const StageRun visibility = runStage(cache, "visibility-" + result.scene, visibilityCommand(caseSettings, inputs));
   result.visibilitySeconds = visibility.seconds;
   result.commands.push_back(visibility.command);
-  const StageRun baked = runStage(cache, "bake-" + caseName, bakeCommand(caseSettings, inputs, visibility.folder));
+  // The map's environment stages, shared by the bakes of every scene under it (stage_commands.h).
+  const StageRun environment =
+      runStage(cache, "environment-" + result.environment, environmentCommand(caseSettings, inputs));
+  result.environmentSeconds = environment.seconds;
+  result.commands.push_back(environment.command);
+  const StageRun baked =
+      runStage(cache, "bake-" + caseName, bakeCommand(caseSettings, inputs, visibility.folder, environment.folder));
   result.bakeSeconds = baked.seconds;
   result.commands.push_back(baked.command);
   const std::vector<Image> frames = renderEngineFrames(caseSettings, cache, caseName, baked.folder, result);
   const Reference reference = traceReference(caseSettings, cache, caseName, inputs, frames, result);
-  result.pending = result.pending || visibility.pending || baked.pending;
+  result.pending = result.pending || visibility.pending || environment.pending || baked.pending;
   if (result.pending) return result;  // a scheduler runs the missing stages first
   const std::vector<FlipErrorMap> flipMaps = scoreModes(reference, frames, result);
   writeCasePictures(caseSettings.outDir, caseName, reference, frames, flipMaps, result);

@@ -38,6 +38,8 @@ struct CaseResult {
   double bakeSeconds = 0.0, traceSeconds = 0.0;
   // The scene's visibility stage (shared by its cases under every map: not in bakeSeconds).
   double visibilitySeconds = 0.0;
+  // The map's environment stage (shared by the cases of every scene under it: not in bakeSeconds).
+  double environmentSeconds = 0.0;
   int referenceSpp = 0;
   double referenceRelMse = 0.0;  // estimated from the two halves
   // Mean HDR-FLIP between the two halves over the scored pixels (score/halves_flip.h); NaN until traced.

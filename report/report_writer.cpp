@@ -207,6 +207,7 @@ void writeReportJson(const fs::path& file, const ReportSummary& summary) {
                   {"mapSourceShare", number(result.concentration.sourceShare)},
                   {"bakeSeconds", result.bakeSeconds},
                   {"visibilitySeconds", result.visibilitySeconds},
+                  {"environmentSeconds", result.environmentSeconds},
                   {"traceSeconds", result.traceSeconds},
                   {"reference", {{"spp", result.referenceSpp},
                                  {"relMseEstimate", number(result.referenceRelMse)},

@@ -1,6 +1,7 @@
 #include "report/stage_commands.h"
 
 #include <algorithm>
+#include <charconv>
 #include <sstream>
 #include <stdexcept>
 
@@ -36,6 +37,8 @@ CaseInputs caseInputs(const fs::path& sceneFile, const fs::path& environmentFile
   // An image embedded in a glTF names that glTF, already in the list.
   for (const TextureImage& image : scene.images) add(image.file);
   inputs.files.push_back(environmentFile);
+  inputs.environmentRotationDegrees = scene.environment.rotationDegrees;
+  inputs.environmentIntensity = scene.environment.intensity;
   inputs.textured = !scene.textures.empty();
   inputs.lobes = sceneLobes(scene);
   inputs.occlusionTexture = inputs.lobes.occlusionTexture;
@@ -62,14 +65,39 @@ StageCommand visibilityCommand(const ReportSettings& settings, const CaseInputs&
   return command;
 }
 
-StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs, const fs::path& visibility) {
+namespace {
+
+// A float argument that reads back as the same float (the shortest such text).
+std::string floatArgument(float value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
+
+// A stage folder in the cache as the stage's command names it (under kCacheFolder).
+std::string cachedStage(const fs::path& folder) { return std::string(kCacheFolder) + "/" + folder.filename().string() + "/bake"; }
+
+}  // namespace
+
+StageCommand environmentCommand(const ReportSettings& settings, const CaseInputs& inputs) {
+  // The map alone: no scene, so every scene under it (at its rotation and intensity) shares it.
+  return {settings.binDir / "iblkit-bake",
+          {"--env", inputs.environmentFile.string(), "--env-rotation", floatArgument(inputs.environmentRotationDegrees),
+           "--env-intensity", floatArgument(inputs.environmentIntensity), "--environment-only", "-o",
+           stageFile("bake")},
+          {inputs.environmentFile}};
+}
+
+StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs, const fs::path& visibility,
+                         const fs::path& environment) {
   StageCommand command{settings.binDir / "iblkit-bake",
                        {inputs.sceneFile.string(), "--env", inputs.environmentFile.string()},
                        inputs.files};
   appendVisibilityOptions(settings, command.arguments);
   if (!visibility.empty())
-    command.arguments.insert(command.arguments.end(),
-                             {"--visibility-from", std::string(kCacheFolder) + "/" + visibility.filename().string() + "/bake"});
+    command.arguments.insert(command.arguments.end(), {"--visibility-from", cachedStage(visibility)});
+  if (!environment.empty())
+    command.arguments.insert(command.arguments.end(), {"--environment-from", cachedStage(environment)});
   command.arguments.insert(command.arguments.end(), {"-o", stageFile("bake")});
   return command;
 }

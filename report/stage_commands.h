@@ -17,13 +17,15 @@ namespace iblkit {
 // names, every texture image file its materials read (files beside a glTF, a scene file's
 // texture overrides) and the environment map, whose bytes go into the key of each stage that
 // reads them; whether the scene has textures (the reference then traces with the engine frame's
-// texture footprint) and whether some material has a glTF occlusion texture (case_modes.h).
+// texture footprint) and whether some material has a glTF occlusion texture (case_modes.h); the
+// scene's environment rotation and intensity, which the bake applies to the map.
 struct CaseInputs {
   std::filesystem::path sceneFile, environmentFile;
   std::vector<std::filesystem::path> files;  // the scene, its model and image files, the environment map
   bool textured = false;
   bool occlusionTexture = false;
   SceneLobes lobes;  // which modes apply (case_modes.h)
+  float environmentRotationDegrees = 0.0f, environmentIntensity = 1.0f;
 };
 CaseInputs caseInputs(const std::filesystem::path& sceneFile, const std::filesystem::path& environmentFile);
 
@@ -32,11 +34,19 @@ CaseInputs caseInputs(const std::filesystem::path& sceneFile, const std::filesys
 // its key from the scene's files alone, read by the bakes of every map.
 StageCommand visibilityCommand(const ReportSettings& settings, const CaseInputs& inputs);
 
-// iblkit-bake SCENE --env ENV --bounces N [--ao-area] [--visibility-from VISIBILITY] -o {stage}/bake:
-// the prefiltered map and the suns' bounce, with the per-vertex visibility of the visibility stage
-// whose folder in the cache is `visibility` (named under kCacheFolder; empty: traced here).
+// iblkit-bake --env ENV --env-rotation R --env-intensity I --environment-only -o {stage}/bake: the
+// map's environment stages under the scene's rotation and intensity, which do not depend on the
+// scene (baker/reused_environment.h): one stage per map (and rotation and intensity), its key from
+// the map's bytes alone, read by the bakes of every scene.
+StageCommand environmentCommand(const ReportSettings& settings, const CaseInputs& inputs);
+
+// iblkit-bake SCENE --env ENV --bounces N [--ao-area] [--visibility-from VISIBILITY]
+// [--environment-from ENVIRONMENT] -o {stage}/bake: the suns' bounce, with the per-vertex visibility
+// of the visibility stage whose folder in the cache is `visibility` and the environment stages of
+// the environment stage whose folder is `environment` (named under kCacheFolder; empty: computed
+// here).
 StageCommand bakeCommand(const ReportSettings& settings, const CaseInputs& inputs,
-                         const std::filesystem::path& visibility = {});
+                         const std::filesystem::path& visibility = {}, const std::filesystem::path& environment = {});
 
 // iblkit-view BAKE --headless -o {stage}/frame-{mode}.exr --mode MODE,MODE... at the report's size,
 // samples, supersampling and bench frames: the frames of several modes from one process (each to

@@ -386,6 +386,22 @@ fs::path writeSunnySky(const fs::path& file) {
   return file;
 }
 
+// The bake folders `a` and `b` list the same ten outputs, and every one but bake.json (timings) has
+// the same bytes.
+void expectSameBake(const fs::path& a, const fs::path& b) {
+  const nlohmann::json first = nlohmann::json::parse(std::ifstream(a / "bake.json"));
+  const nlohmann::json second = nlohmann::json::parse(std::ifstream(b / "bake.json"));
+  ASSERT_EQ(first["outputs"].size(), 10u);
+  EXPECT_EQ(second["outputs"], first["outputs"]);
+  for (const nlohmann::json& file : first["outputs"]) {
+    const std::string name = file.get<std::string>();
+    if (name == "bake.json") continue;
+    const std::string bytes = fileBytes(a / name);
+    EXPECT_FALSE(bytes.empty()) << name;
+    EXPECT_TRUE(bytes == fileBytes(b / name)) << name;
+  }
+}
+
 // --visibility-from takes the per-vertex visibility of another bake of the scene (here one with
 // --visibility-only, under no map) instead of tracing it: the bake is the same, byte for byte, as
 // one that traces it, the suns' bounce (which reads the map) included.
@@ -407,15 +423,7 @@ TEST(IblkitBake, VisibilityFromAnotherBakeIsTheSameBakeByteForByte) {
   ASSERT_EQ(status, 0) << log;
   const nlohmann::json full = nlohmann::json::parse(std::ifstream(root / "full" / "bake.json"));
   const nlohmann::json reused = nlohmann::json::parse(std::ifstream(root / "reused" / "bake.json"));
-  ASSERT_EQ(full["outputs"].size(), 10u);
-  EXPECT_EQ(reused["outputs"], full["outputs"]);
-  for (const nlohmann::json& file : full["outputs"]) {
-    const std::string name = file.get<std::string>();
-    if (name == "bake.json") continue;  // timings
-    const std::string a = fileBytes(root / "full" / name), b = fileBytes(root / "reused" / name);
-    EXPECT_FALSE(a.empty()) << name;
-    EXPECT_TRUE(a == b) << name;
-  }
+  expectSameBake(root / "full", root / "reused");
   EXPECT_EQ(reused["visibility_from"], (root / "visibility").string());
   EXPECT_EQ(reused["counts"]["rays"], 0);
   EXPECT_EQ(reused["counts"]["vertices"], full["counts"]["vertices"]);
@@ -474,6 +482,118 @@ TEST(IblkitBake, VisibilityFromRefusesOtherOptionsAndOtherScenes) {
   test::expectUsageError((test::binDir() / "iblkit-bake").string() + " " + scene.string() +
                              " --visibility-only --visibility-from " + visibility.string() + " -o " + out.string(),
                          "iblkit-bake: --visibility-only excludes --visibility-from");
+  EXPECT_EQ(leftovers(root), 0);
+}
+
+// A map's environment stages baked once (--environment-only, no scene) and copied into a scene's
+// bake (--environment-from) make the same bake as one that computes them: every file but bake.json's
+// timings, byte for byte, the suns' bounce from the lights read back included.
+TEST(IblkitBake, EnvironmentFromAnotherBakeIsTheSameBakeByteForByte) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), env = writeSunnySky(root / "sky.exr");
+  const std::string options = " --ao-rays 16 --specular-samples 64 --lut-size 16 --env-rotation 30 --env-intensity 2";
+  int status = 0;
+  std::string log = bake(scene.string() + " --env " + env.string() + options + " -o " + (root / "full").string(), &status);
+  ASSERT_EQ(status, 0) << log;
+  log = bake("--env " + env.string() + options + " --environment-only -o " + (root / "environment").string(), &status);
+  ASSERT_EQ(status, 0) << log;
+  const nlohmann::json environment = nlohmann::json::parse(std::ifstream(root / "environment" / "bake.json"));
+  EXPECT_FALSE(fs::exists(root / "environment" / "scene.glb"));
+  EXPECT_EQ(environment["outputs"].size(), 9u);  // the full bake's but scene.glb
+  EXPECT_EQ(environment["inputs"]["scene"], "");
+  log = bake(scene.string() + " --env " + env.string() + options + " --environment-from " +
+                 (root / "environment").string() + " -o " + (root / "reused").string(),
+             &status);
+  ASSERT_EQ(status, 0) << log;
+  const nlohmann::json full = nlohmann::json::parse(std::ifstream(root / "full" / "bake.json"));
+  const nlohmann::json reused = nlohmann::json::parse(std::ifstream(root / "reused" / "bake.json"));
+  expectSameBake(root / "full", root / "reused");
+  EXPECT_EQ(reused["environment"], full["environment"]);
+  EXPECT_EQ(reused["parameters"], full["parameters"]);
+  EXPECT_EQ(reused["environment_hash"], full["environment_hash"]);
+  EXPECT_EQ(reused["environment_from"], (root / "environment").string());
+  EXPECT_FALSE(full.contains("environment_from"));
+  EXPECT_FALSE(reused["timings"].contains("specular_s"));
+  // The map has a sun, so the byte comparison covers its bounce, traced from the lights read back.
+  EXPECT_GT(reused["counts"]["sun_bounce_rays"].get<std::size_t>(), 0u);
+  // A full bake serves as the source too, and so does an environment-only bake named by a scene.
+  log = bake(scene.string() + " --env " + env.string() + options + " --environment-only -o " +
+                 (root / "scene_environment").string(),
+             &status);
+  ASSERT_EQ(status, 0) << log;
+  for (const char* from : {"full", "scene_environment"}) {
+    const fs::path out = root / (std::string("from_") + from);
+    log = bake(scene.string() + " --env " + env.string() + options + " --environment-from " + (root / from).string() +
+                   " -o " + out.string(),
+               &status);
+    ASSERT_EQ(status, 0) << log;
+    EXPECT_TRUE(fileBytes(out / "scene.glb") == fileBytes(root / "full" / "scene.glb")) << from;
+    EXPECT_TRUE(fileBytes(out / "env/specular.exr") == fileBytes(root / "full" / "env/specular.exr")) << from;
+  }
+}
+
+// Environment stages of another map, of the same map under other options, or no environment at all
+// are refused with one line naming the file, and nothing is written.
+TEST(IblkitBake, EnvironmentFromRefusesOtherMapsAndOtherOptions) {
+  const fs::path root = test::scratchDir();
+  const fs::path scene = writeBallScene(root), env = writeSunnySky(root / "sky.exr"), out = root / "out",
+                 environment = root / "environment";
+  const std::string options = " --specular-samples 16 --lut-size 8";
+  int status = 0;
+  std::string log = bake("--env " + env.string() + options + " --environment-only -o " + environment.string(), &status);
+  ASSERT_EQ(status, 0) << log;
+  const auto refused = [&](const std::string& arguments, const std::string& message) {
+    const std::string output = bake(arguments + " -o " + out.string(), &status);
+    EXPECT_EQ(status, 1) << output;
+    EXPECT_EQ(output, "iblkit-bake: " + message + "\n");
+    EXPECT_FALSE(fs::exists(out));
+  };
+  const std::string record = (environment / "bake.json").string();
+  const std::string bakeOf = scene.string() + " --ao-rays 4 --env " + env.string();
+  const std::string from = " --environment-from " + environment.string();
+  const std::string needs = " (--environment-from needs the same map and environment options)";
+  refused(bakeOf + " --specular-samples 32 --lut-size 8" + from,
+          record + ": environment baked with specular_samples 16, not 32" + needs);
+  refused(bakeOf + " --specular-samples 16 --lut-size 16" + from,
+          record + ": environment baked with lut_size 8, not 16" + needs);
+  refused(bakeOf + options + " --max-suns 1" + from, record + ": environment baked with max_suns 4, not 1" + needs);
+  refused(bakeOf + options + " --env-rotation 90" + from,
+          record + ": environment baked with environment_rotation_degrees 0.0, not 90.0" + needs);
+  refused(bakeOf + options + " --env-intensity 0.5" + from,
+          record + ": environment baked with environment_intensity 1.0, not 0.5" + needs);
+  // The same map's bytes under another name are the same map; one texel changed is another.
+  const fs::path copy = root / "copy.exr", changed = root / "changed.exr";
+  fs::copy_file(env, copy);
+  log = bake(scene.string() + " --ao-rays 4 --env " + copy.string() + options + from + " -o " + (root / "copied").string(),
+             &status);
+  EXPECT_EQ(status, 0) << log;
+  Image sky = readExr(env);
+  sky.at(3, 3).r += 1.0f;
+  writeExr(changed, sky);
+  refused(scene.string() + " --ao-rays 4 --env " + changed.string() + options + from,
+          record + ": baked from another map than this bake's (its environment_hash differs: another file, or the "
+                   "map changed since)");
+  // A bake without an environment, a folder that is none, a scene without a map.
+  const fs::path visibility = root / "visibility";
+  log = bake(scene.string() + " --ao-rays 4 --visibility-only -o " + visibility.string(), &status);
+  ASSERT_EQ(status, 0) << log;
+  refused(bakeOf + options + " --environment-from " + visibility.string(),
+          (visibility / "bake.json").string() +
+              ": the bake has no environment stages (--environment-from needs a bake with a map)");
+  refused(bakeOf + options + " --environment-from " + (root / "absent").string(),
+          (root / "absent").string() + ": no such bake folder");
+  refused(scene.string() + " --ao-rays 4" + options + from,
+          scene.string() + ": the scene names no environment map (--environment-from needs one; give --env FILE)");
+  const std::string program = (test::binDir() / "iblkit-bake").string() + " ";
+  test::expectUsageError(program + "--environment-only -o " + out.string(),
+                         "iblkit-bake: --env: required by --environment-only without a scene");
+  test::expectUsageError(program + "--env " + env.string() + " -o " + out.string(),
+                         "iblkit-bake: scene: required (only --environment-only bakes without a scene, the map from --env)");
+  test::expectUsageError(program + scene.string() + " --environment-only --visibility-only -o " + out.string(),
+                         "iblkit-bake: --visibility-only excludes --environment-only");
+  test::expectUsageError(program + scene.string() + " --environment-only" + from + " -o " + out.string(),
+                         "iblkit-bake: --environment-only excludes --environment-from");
+  EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(leftovers(root), 0);
 }
 

@@ -37,7 +37,7 @@ report() {  # OUT CACHE BIN [options]
 numbers() {
   python3 - "$@" <<'PY'
 import json, sys
-left_out = {"seconds", "bakeSeconds", "visibilitySeconds", "traceSeconds", "frameMilliseconds", "commands"} | ({"stages"} if len(sys.argv) > 2 else set())
+left_out = {"seconds", "bakeSeconds", "visibilitySeconds", "environmentSeconds", "traceSeconds", "frameMilliseconds", "commands"} | ({"stages"} if len(sys.argv) > 2 else set())
 def strip(x):
     if isinstance(x, dict):
         return {k: strip(v) for k, v in x.items() if k not in left_out}

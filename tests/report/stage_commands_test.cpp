@@ -85,6 +85,50 @@ TEST(StageCommands, TheVisibilityStageIsTheScenesUnderEveryMap) {
   EXPECT_NE(stageKey(bake), stageKey(bakeCommand(fixture.settings, fixture.inputs, "/cache/visibility-scene-4567")));
 }
 
+// A map's environment stages are one stage for every scene under it at the same rotation and
+// intensity: its command and key name the map, not the scene; the bakes read it from the cache.
+TEST(StageCommands, TheEnvironmentStageIsTheMapsUnderEveryScene) {
+  Fixture fixture;
+  const fs::path dir = fixture.inputs.sceneFile.parent_path();
+  std::ofstream(dir / "other.json") << R"({"models": [{"shape": "sphere", "translation": [1, 0, 0]}], "environment": {"file": "map.exr"}})";
+  const CaseInputs other = caseInputs(dir / "other.json", dir / "map.exr");
+  const StageCommand environment = environmentCommand(fixture.settings, fixture.inputs);
+  EXPECT_EQ(stageKey(environment), stageKey(environmentCommand(fixture.settings, other)));
+  EXPECT_EQ(environment.inputFiles, std::vector<fs::path>{fixture.inputs.environmentFile});
+  const std::vector<std::string> argv = stageArgv(environment, "/c", "/c/e");
+  EXPECT_NE(std::find(argv.begin(), argv.end(), "--environment-only"), argv.end());
+  EXPECT_EQ(std::find(argv.begin(), argv.end(), fixture.inputs.sceneFile.string()), argv.end());
+  EXPECT_EQ(argv.back(), "/c/e/bake");
+  // The scene's rotation and intensity go into it as arguments that read back as the same floats,
+  // so a scene that turns the map has a stage of its own.
+  std::ofstream(dir / "turned.json")
+      << R"({"models": [{"shape": "sphere"}], "environment": {"file": "map.exr", "rotation": 33.3, "intensity": 0.1}})";
+  const CaseInputs turned = caseInputs(dir / "turned.json", dir / "map.exr");
+  const StageCommand turnedEnvironment = environmentCommand(fixture.settings, turned);
+  EXPECT_NE(stageKey(turnedEnvironment), stageKey(environment));
+  const std::vector<std::string> turnedArgv = stageArgv(turnedEnvironment, "/c", "/c/e");
+  const auto rotation = std::find(turnedArgv.begin(), turnedArgv.end(), "--env-rotation");
+  ASSERT_NE(rotation, turnedArgv.end());
+  EXPECT_EQ(std::stof(*(rotation + 1)), 33.3f);
+  const auto intensity = std::find(turnedArgv.begin(), turnedArgv.end(), "--env-intensity");
+  ASSERT_NE(intensity, turnedArgv.end());
+  EXPECT_EQ(std::stof(*(intensity + 1)), 0.1f);
+  // The map's bytes change it.
+  const std::string key = stageKey(environment);
+  std::ofstream(dir / "map.exr") << "other pixels";
+  EXPECT_NE(stageKey(environmentCommand(fixture.settings, fixture.inputs)), key);
+  // A bake names the stage's folder under the cache placeholder, so the stage's key is in its key.
+  const StageCommand bake = bakeCommand(fixture.settings, fixture.inputs, "/cache/visibility-scene-0123",
+                                        "/cache/environment-map-89ab");
+  const std::vector<std::string> bakeArgv = stageArgv(bake, "/c", "/c/b");
+  const auto from = std::find(bakeArgv.begin(), bakeArgv.end(), "--environment-from");
+  ASSERT_NE(from, bakeArgv.end());
+  EXPECT_EQ(*(from + 1), "/c/environment-map-89ab/bake");
+  EXPECT_EQ(stageFoldersRead(bake), (std::vector<std::string>{"visibility-scene-0123", "environment-map-89ab"}));
+  EXPECT_NE(stageKey(bake), stageKey(bakeCommand(fixture.settings, fixture.inputs, "/cache/visibility-scene-0123",
+                                                 "/cache/environment-map-cdef")));
+}
+
 // The modes that one iblkit-view renders together: all but lights-shadowed, which supersamples
 // without sample shading, when the report sample-shades; every one when it does not.
 TEST(StageCommands, ModesShareAViewWhereTheirOptionsAgree) {
