@@ -255,9 +255,10 @@ int bake(const Options& options) {
                           .environmentFormat = options.envFormat,
                           .environmentRotationDegrees = environment.rotationDegrees,
                           .environmentIntensity = environment.intensity};
-  // bake.json's parameters, the environment's (env_format, rotation, intensity) included: what
-  // --visibility-from and --environment-from compare.
-  const json parameters = makeBakeRecord(inputs, bakeParameters(options))["parameters"];
+  // bake.json, its parameters (the environment's env_format, rotation and intensity included) what
+  // --visibility-from and --environment-from compare; the rest is added as the stages finish.
+  json record = makeBakeRecord(inputs, bakeParameters(options));
+  const json& parameters = record["parameters"];
   // Loaded before the long visibility stage, so a bad map fails fast; or, with --environment-from,
   // the stages of another bake of the same map bytes (checked before any work too).
   std::optional<EnvironmentMap> environmentMap;
@@ -348,7 +349,6 @@ int bake(const Options& options) {
       environmentReport = reusedEnvironment->record;
       for (const char* file : reusedEnvironment->files) outputs.push_back(file);
     }
-    json record = makeBakeRecord(inputs, bakeParameters(options));
     // Where the visibility and the environment stages came from (the visibility's rays, counted
     // below, are that bake's).
     if (!options.visibilityFrom.empty())
