@@ -141,15 +141,18 @@ BakedScene loadViewScene(const fs::path& input, const EnvironmentOverride& envir
   return bake;
 }
 
+// 0 for no values.
 double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 struct FrameTimes {
-  double cpuMs = 0.0, gpuMs = 0.0;
+  double gpuMs = 0.0;             // the median over the rounds
   std::vector<double> cpuRounds;  // each round's CPU time, in round order
+  double cpuMs() const { return median(cpuRounds); }
 };
 
 // The median over the rounds of a's time over b's in the same round: two variants' ratio with the
@@ -191,7 +194,7 @@ std::vector<FrameTimes> benchmark(Renderer& renderer, RenderTarget& target, cons
   glDeleteQueries(1, &query);
   checkGlErrors("benchmark");
   std::vector<FrameTimes> times;
-  for (std::size_t m = 0; m < variants.size(); ++m) times.push_back({median(cpu[m]), median(gpu[m]), cpu[m]});
+  for (std::size_t m = 0; m < variants.size(); ++m) times.push_back({median(gpu[m]), cpu[m]});
   return times;
 }
 
@@ -366,10 +369,10 @@ int runHeadless(const Options& options) {
     const FrameTimes* fullTimes = nullptr;
     for (std::size_t m = 0; m < modes.size(); ++m) {
       std::cout << std::fixed << std::setprecision(2) << "  " << std::left << std::setw(15)
-                << shadingModeName(modes[m]) << " cpu " << times[m].cpuMs << " ms  gpu " << times[m].gpuMs
+                << shadingModeName(modes[m]) << " cpu " << times[m].cpuMs() << " ms  gpu " << times[m].gpuMs
                 << " ms\n";
-      if (modes[m] == ShadingMode::Unlit) unlit = times[m].cpuMs;
-      if (modes[m] == ShadingMode::Full) full = times[m].cpuMs, fullTimes = &times[m];
+      if (modes[m] == ShadingMode::Unlit) unlit = times[m].cpuMs();
+      if (modes[m] == ShadingMode::Full) full = times[m].cpuMs(), fullTimes = &times[m];
     }
     if (unlit > 0.0 && full > 0.0)
       std::cout << "  full / unlit = " << std::setprecision(2) << full / unlit << '\n';
@@ -377,12 +380,12 @@ int runHeadless(const Options& options) {
     const int lights = drawnLightCount(bake.env, settings.lightCount);
     // The shadow maps' own cost with every mode (the speed command), not for one mode's time.
     if (allModes && shadowed != modes.end() && settings.shadows && lights > 0) {
-      const double cached = times[std::size_t(shadowed - modes.begin())].cpuMs;
+      const double cached = times[std::size_t(shadowed - modes.begin())].cpuMs();
       const FrameTimes fresh =
           benchmark(renderer, target, camera, inModes(settings, {ShadingMode::LightsShadowed}), options.bench, true)
               .front();
       std::cout << "  lights-shadowed with its " << lights << " shadow map(s) of " << kShadowMapSize << "^2 rendered "
-                << "again each frame: cpu " << fresh.cpuMs << " ms (the maps: " << fresh.cpuMs - cached << " ms)\n";
+                << "again each frame: cpu " << fresh.cpuMs() << " ms (the maps: " << fresh.cpuMs() - cached << " ms)\n";
       if (full > 0.0) {
         // The two frames alone, in turn (A/B pairs, as an A/B timer runs two commands): every other
         // mode's frame in between evicts the shadowed frame's maps and targets from the caches,
@@ -391,7 +394,7 @@ int runHeadless(const Options& options) {
             benchmark(renderer, target, camera, inModes(settings, {ShadingMode::Full, ShadingMode::LightsShadowed}),
                       options.bench);
         std::cout << "  lights-shadowed / full = " << medianRoundRatio(pair[1], pair[0])
-                  << " (the two in turn, the median of the pairs' ratios; " << pair[1].cpuMs << " / " << pair[0].cpuMs
+                  << " (the two in turn, the median of the pairs' ratios; " << pair[1].cpuMs() << " / " << pair[0].cpuMs()
                   << " ms); among every mode " << medianRoundRatio(times[std::size_t(shadowed - modes.begin())], *fullTimes)
                   << " (the median of the rounds' ratios; the ratio of the medians " << cached / full << ")\n";
       }
@@ -401,18 +404,18 @@ int runHeadless(const Options& options) {
         std::vector<FrameSettings> pair = inModes(settings, {ShadingMode::LightsShadowed, ShadingMode::LightsShadowed});
         pair[1].shadowMask = false;
         const std::vector<FrameTimes> both = benchmark(renderer, target, camera, pair, options.bench);
-        std::cout << "  lights-shadowed, shadows in the lit pass (--no-shadow-mask): cpu " << both[1].cpuMs
-                  << " ms; with the screen-space mask: " << both[0].cpuMs << " ms (ratio "
-                  << both[1].cpuMs / both[0].cpuMs << ")\n";
+        std::cout << "  lights-shadowed, shadows in the lit pass (--no-shadow-mask): cpu " << both[1].cpuMs()
+                  << " ms; with the screen-space mask: " << both[0].cpuMs() << " ms (ratio "
+                  << both[1].cpuMs() / both[0].cpuMs() << ")\n";
         // The mask at the frame's resolution against the half-resolution one, interleaved too.
         std::vector<FrameSettings> sizes =
             inModes(settings, {ShadingMode::LightsShadowed, ShadingMode::LightsShadowed});
         sizes[0].shadowMaskDivisor = 2;
         sizes[1].shadowMaskDivisor = 1;
         const std::vector<FrameTimes> bySize = benchmark(renderer, target, camera, sizes, options.bench);
-        std::cout << "  lights-shadowed, mask at full resolution: cpu " << bySize[1].cpuMs
-                  << " ms; at half resolution: " << bySize[0].cpuMs << " ms (ratio "
-                  << bySize[1].cpuMs / bySize[0].cpuMs << ")\n";
+        std::cout << "  lights-shadowed, mask at full resolution: cpu " << bySize[1].cpuMs()
+                  << " ms; at half resolution: " << bySize[0].cpuMs() << " ms (ratio "
+                  << bySize[1].cpuMs() / bySize[0].cpuMs() << ")\n";
       }
     }
   }
