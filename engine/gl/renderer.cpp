@@ -256,13 +256,14 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
   const ShadingMode mode =
       settings.mode == ShadingMode::LightsShadowed && !settings.shadows ? ShadingMode::Lights : settings.mode;
   DrawnLights drawn;
+  // The drawn lights' directions and disks, as the shadow maps and light_directions.glsl take them.
+  std::vector<ShadowLight> shadowLights;
   if (lightsMode && settings.layer == FrameLayer::Radiance) {
     drawn = drawnLights(r.lightStages, settings.lightCount, settings.envRotationDegrees);
+    for (const EnvironmentLight& light : drawn.lights)
+      shadowLights.push_back({light.direction, light.angularRadius});
     if (mode == ShadingMode::LightsShadowed) {
       if (!r.shadowMaps) r.shadowMaps = std::make_unique<ShadowMaps>(kShadowMapSize);
-      std::vector<ShadowLight> shadowLights;
-      for (const EnvironmentLight& light : drawn.lights)
-        shadowLights.push_back({light.direction, std::tan(light.angularRadius)});
       r.shadowMaps->update(r.shapes, r.meshes, shadowLights);
       r.shadowMaps->bind();
       if (r.coverageRenders != r.shadowMaps->renderCount()) {
@@ -302,12 +303,10 @@ void Renderer::render(const Camera& camera, const FrameSettings& settings, GLuin
     program.set("specularLevels", float(r.specularLevels));
     program.set("transferInterreflected", int(r.transferInterreflected));
     if (!lightsMode) return;
+    setLightDirections(program, shadowLights);
     for (std::size_t i = 0; i < drawn.lights.size(); ++i) {
       const EnvironmentLight& light = drawn.lights[i];
-      program.set(uniformElement("lightDirection", i).c_str(), light.direction);
       program.set(uniformElement("lightRadiance", i).c_str(), light.radiance);
-      program.set(uniformElement("lightCosSin", i).c_str(),
-                  glm::vec2(std::cos(light.angularRadius), std::sin(light.angularRadius)));
       program.set(uniformElement("lightMirrorEdgeCos", i).c_str(),
                   glm::vec2(std::cos(1.1f * light.angularRadius), std::cos(0.9f * light.angularRadius)));
       // A near-mirror reflects the light's own texels of the chain's level 0 where its disk is wider

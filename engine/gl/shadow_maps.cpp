@@ -137,7 +137,7 @@ ShadowFrame fitShadowFrame(const std::vector<Mesh>& meshes, const ShadowLight& l
   glm::vec2 margin = side * (2.0f / float(size - 4));
   for (int pass = 0; pass < 3; ++pass) {
     groundDepths(glm::vec2(lo) - margin, glm::vec2(lo) + side + margin);
-    const float search = 1.02f * (hi.z - lo.z) * light.tanAngularRadius;
+    const float search = 1.02f * (hi.z - lo.z) * std::tan(light.angularRadius);
     margin = glm::vec2(search) + (side + 2.0f * search) * (2.0f / float(size - 4));
   }
   groundDepths(glm::vec2(lo) - margin, glm::vec2(lo) + side + margin);  // the final rectangle's
@@ -313,6 +313,15 @@ GroundVisibilityFrame fitGroundVisibility(const std::vector<Mesh>& meshes, const
   return ground;
 }
 
+void setLightDirections(const ShaderProgram& program, const std::vector<ShadowLight>& lights) {
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    const ShadowLight& light = lights[i];
+    program.set(uniformElement("lightDirection", i).c_str(), glm::normalize(light.towardsLight));
+    program.set(uniformElement("lightCosSin", i).c_str(),
+                glm::vec2(std::cos(light.angularRadius), std::sin(light.angularRadius)));
+  }
+}
+
 void ShadowMaps::renderGroundVisibility(const std::vector<Mesh>& meshes, const std::vector<ShadowLight>& lights) {
   ground_ = fitGroundVisibility(meshes, lights, frames_, kGroundVisibilityMaxSize);
   if (!ground_.valid()) return;
@@ -330,12 +339,7 @@ void ShadowMaps::renderGroundVisibility(const std::vector<Mesh>& meshes, const s
                 .first;
   const ShaderProgram& program = found->second;
   setUniforms(program);
-  for (int i = 0; i < count; ++i) {
-    const ShadowLight& light = lights[std::size_t(i)];
-    const float radius = std::atan(light.tanAngularRadius);
-    program.set(uniformElement("lightDirection", std::size_t(i)).c_str(), glm::normalize(light.towardsLight));
-    program.set(uniformElement("lightCosSin", std::size_t(i)).c_str(), glm::vec2(std::cos(radius), std::sin(radius)));
-  }
+  setLightDirections(program, lights);
   program.set("groundOrigin", ground_.origin);
   program.set("groundStepU", ground_.stepU);
   program.set("groundStepV", ground_.stepV);

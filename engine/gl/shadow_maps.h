@@ -33,12 +33,18 @@ struct ShadowFrame {
   glm::mat3 slopeFromNormal{1.0f};
 };
 
-// What a shadow map depends on: the unit direction towards the light and tan of its angular radius.
+// What a shadow map depends on: the unit direction towards the light and its angular radius.
 struct ShadowLight {
   glm::vec3 towardsLight{0.0f, 1.0f, 0.0f};
-  float tanAngularRadius = 0.0f;
+  float angularRadius = 0.0f;
   bool operator==(const ShadowLight&) const = default;
 };
+
+// Sets light_directions.glsl's uniforms of `program` for `lights`: lightDirection[i], the unit
+// direction towards light i, and lightCosSin[i], the cos and sin of its angular radius. The lit
+// pass (renderer.cpp) and the ground's visibility pass (ShadowMaps) set them through this one
+// function, so both see each light alike.
+void setLightDirections(const ShaderProgram& program, const std::vector<ShadowLight>& lights);
 
 // The tight orthographic frame along `light.towardsLight` for a `size`-texel map:
 // - across the light (u, v): the objects' vertices (the meshes not marked isGround; all meshes when
