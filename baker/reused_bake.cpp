@@ -26,7 +26,10 @@ void requireSameParameters(const fs::path& bake, const json& record, const json&
                            std::span<const char* const> names, const std::string& part, const std::string& option,
                            const std::string& what) {
   for (const char* name : names) {
-    const json& theirs = record["parameters"].contains(name) ? record["parameters"][name] : json();
+    if (!record["parameters"].contains(name))
+      fail(bake / kBakeRecordFile, "no parameter " + std::string(name) + " (a bake from before it was recorded?); " +
+                                       option + " needs " + what);
+    const json& theirs = record["parameters"][name];
     const json& ours = parameters.at(name);
     if (theirs != ours)
       fail(bake / kBakeRecordFile, part + " baked with " + name + " " + theirs.dump() + ", not " + ours.dump() + " (" +

@@ -19,7 +19,9 @@ nlohmann::json readBakeToReuse(const std::filesystem::path& bake, BakeInputs& in
 
 // Throws Error("<bake>/bake.json: <part> baked with <name> <theirs>, not <ours> (<option> needs
 // <what>)") for the first of `names` whose value in `record`'s parameters differs from the one in
-// `parameters` (the bake being made: makeBakeRecord's parameters, holding every name).
+// `parameters` (the bake being made: makeBakeRecord's parameters, holding every name), and
+// Error("<bake>/bake.json: no parameter <name> (a bake from before it was recorded?); <option>
+// needs <what>") for one that `record` lacks.
 void requireSameParameters(const std::filesystem::path& bake, const nlohmann::json& record,
                            const nlohmann::json& parameters, std::span<const char* const> names, const std::string& part,
                            const std::string& option, const std::string& what);

@@ -561,6 +561,16 @@ TEST(IblkitBake, EnvironmentFromRefusesOtherMapsAndOtherOptions) {
           record + ": environment baked with environment_rotation_degrees 0.0, not 90.0" + needs);
   refused(bakeOf + options + " --env-intensity 0.5" + from,
           record + ": environment baked with environment_intensity 1.0, not 0.5" + needs);
+  // A bake from before lut_size was recorded.
+  const fs::path older = root / "older";
+  fs::copy(environment, older, fs::copy_options::recursive);
+  nlohmann::json olderRecord = nlohmann::json::parse(std::ifstream(older / "bake.json"));
+  olderRecord["parameters"].erase("lut_size");
+  std::ofstream(older / "bake.json") << olderRecord.dump(2);
+  refused(bakeOf + options + " --environment-from " + older.string(),
+          (older / "bake.json").string() +
+              ": no parameter lut_size (a bake from before it was recorded?); --environment-from needs the same map "
+              "and environment options");
   // The same map's bytes under another name are the same map; one texel changed is another.
   const fs::path copy = root / "copy.exr", changed = root / "changed.exr";
   fs::copy_file(env, copy);
