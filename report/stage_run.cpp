@@ -32,7 +32,21 @@ StageRun runStage(const StageCache& cache, const std::string& name, const StageC
   run.folder = cache.stage(name, key, [&](const fs::path& folder) {
     const std::vector<std::string> argv = stageArgv(command, cache.root(), folder);
     const auto start = std::chrono::steady_clock::now();
-    runProgram(argv, folder / "log.txt");
+    // A failed stage's temporary folder is removed: its log is kept beside the cache's stage folders
+    // (NAME-KEY.failed.log), where the error points; a later run that succeeds removes it.
+    const fs::path log = folder / "log.txt", kept = cache.folder(name, key).string() + ".failed.log";
+    std::error_code error;
+    try {
+      runProgram(argv, log);
+    } catch (const Error& e) {
+      fs::copy_file(log, kept, fs::copy_options::overwrite_existing, error);
+      if (error) throw;
+      std::string message = e.what();
+      if (const std::size_t at = message.rfind(log.string()); at != std::string::npos)
+        message.replace(at, log.string().size(), kept.string());
+      throw Error(message);
+    }
+    fs::remove(kept, error);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // Checked: a stage folder is renamed into the cache only with its whole record.
     std::ofstream record(folder / "stage.json");
