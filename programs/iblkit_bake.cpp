@@ -269,11 +269,10 @@ int bake(const Options& options) {
       environmentMap = loadEnvironment(environment, parseProbeFormat(options.envFormat));
       checkEnvironmentIntensity(*environmentMap, environment, scene, options.environment);
       requireEnvironmentForStages(*environmentMap, environment.file);
-      environmentHash = environmentContentHash(environment.file);
-    } else {
-      environmentHash = environmentContentHash(environment.file);
-      reusedEnvironment = reuseEnvironment(options.environmentFrom, parameters, environmentHash);
     }
+    environmentHash = environmentContentHash(environment.file);
+    if (!options.environmentFrom.empty())
+      reusedEnvironment = reuseEnvironment(options.environmentFrom, parameters, environmentHash);
     timings["load_environment_s"] = stopwatch.lap();
   }
 
