@@ -22,6 +22,10 @@
 // triangles) of the bunny's size and material where it stood: whether the overhead falls as Embree's
 // share of a ray grows with the mesh (barely: docs/benchmarks.md).
 //
+// BM_RenderBrdfOnly / BM_ReplayBrdfOnly: the same pair for the leanest estimator (BRDF sampling
+// only, no ground occlusion), with its own recorded rays: the path loop's cost per ray without any
+// light sampling, against which the default estimator's ratio is read.
+//
 // BM_RenderTextured: the bunny scene made fully textured (every mesh given planar TEXCOORD_0 and
 // a material with all five slots: 1024 x 1024 generated base colour (sRGB, alpha 1), metallic-
 // roughness, normal, occlusion and emissive textures, trilinear, repeat; tangents generated),
@@ -199,10 +203,12 @@ Scene benchScene(SceneVariant variant) {
 
 // The tracer of `variant`; `slots` the texture slots read (the textured variant only).
 // `means`: the textured variant's factors times the textures' means (meanFactors).
-const Tracer& tracer(SceneVariant variant, unsigned slots = kAllTextureSlots, bool means = false) {
-  static std::unique_ptr<Tracer> tracers[5];
+// `brdfOnly`: the leanest estimator, --env-sampling brdf --ground-occlusion off (BM_RenderBrdfOnly).
+const Tracer& tracer(SceneVariant variant, unsigned slots = kAllTextureSlots, bool means = false,
+                     bool brdfOnly = false) {
+  static std::unique_ptr<Tracer> tracers[7];
   const bool off = variant == kTexturedBunny && slots == 0;
-  std::unique_ptr<Tracer>& slot = tracers[off && means ? 4 : off ? 3 : variant];
+  std::unique_ptr<Tracer>& slot = tracers[brdfOnly ? 5 + variant : off && means ? 4 : off ? 3 : variant];
   if (slot) return *slot;
   slot = std::make_unique<Tracer>();
   Tracer& t = *slot;
@@ -213,7 +219,12 @@ const Tracer& tracer(SceneVariant variant, unsigned slots = kAllTextureSlots, bo
     t.sampler = std::make_unique<EnvironmentSampler>(*t.environment);
     t.camera = sceneCamera(scene, static_cast<float>(kWidth) / kHeight);
     t.scene = std::make_unique<RenderScene>(std::move(scene), slots);
-    t.integrator = std::make_unique<Integrator>(*t.scene, *t.environment, *t.sampler, IntegratorSettings{});
+    IntegratorSettings integratorSettings;
+    if (brdfOnly) {
+      integratorSettings.envSampling = EnvSampling::Brdf;
+      integratorSettings.groundOcclusion = false;
+    }
+    t.integrator = std::make_unique<Integrator>(*t.scene, *t.environment, *t.sampler, integratorSettings);
     RayRecorder recorder;
     t.integrator->recordRays(&recorder);
     render(*t.integrator, t.camera, t.settings(2));
@@ -250,8 +261,7 @@ bool replay(RTCScene scene, const RecordedRay& r) {
   return query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
 }
 
-void BM_Render(benchmark::State& state) {
-  const Tracer& t = tracer(static_cast<SceneVariant>(state.range(1)));
+void renderRecorded(benchmark::State& state, const Tracer& t) {
   const RenderSettings settings = t.settings(static_cast<int>(state.range(0)));
   std::uint64_t rays = 0;
   for (auto _ : state) {
@@ -263,6 +273,8 @@ void BM_Render(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(rays));
   state.counters["rays"] = static_cast<double>(t.rays.size());
 }
+
+void BM_Render(benchmark::State& state) { renderRecorded(state, tracer(static_cast<SceneVariant>(state.range(1)))); }
 
 // Replays `units` units of work (rays, or runs of rays) on state.range(0) threads, `grain` units per
 // task; hitsIn(i) traces unit i and returns its hits. Reports the recorded rays per second and the
@@ -288,11 +300,23 @@ void replayInArena(benchmark::State& state, const Tracer& t, std::size_t units, 
   state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(t.rays.size());
 }
 
-void BM_Replay(benchmark::State& state) {
-  const Tracer& t = tracer(static_cast<SceneVariant>(state.range(1)));
+void replayOneByOne(benchmark::State& state, const Tracer& t) {
   const RTCScene scene = t.scene->rays().embreeScene();
   replayInArena(state, t, t.rays.size(), 1024,
                 [&](std::size_t i) -> std::size_t { return replay(scene, t.rays[i]) ? 1 : 0; });
+}
+
+void BM_Replay(benchmark::State& state) { replayOneByOne(state, tracer(static_cast<SceneVariant>(state.range(1)))); }
+
+// The leanest estimator the tracer has: BRDF sampling only (no light samples, no environment
+// sampler, no ground occlusion; escapes read the map), its own recorded rays rendered and replayed.
+// What the path loop itself costs per ray, against which the default estimator's ratio is read
+// (docs/benchmarks.md, "The leanest estimator's ray rate").
+void BM_RenderBrdfOnly(benchmark::State& state) {
+  renderRecorded(state, tracer(static_cast<SceneVariant>(state.range(1)), kAllTextureSlots, false, true));
+}
+void BM_ReplayBrdfOnly(benchmark::State& state) {
+  replayOneByOne(state, tracer(static_cast<SceneVariant>(state.range(1)), kAllTextureSlots, false, true));
 }
 
 // The recorded rays as the render traces them: each run of camera rays (one batch's, one query)
@@ -369,6 +393,14 @@ BENCHMARK(BM_Render)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_Replay)
+    ->ArgsProduct({{1, 2}, {kBunny, kDenseSphere}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_RenderBrdfOnly)
+    ->ArgsProduct({{1, 2}, {kBunny, kDenseSphere}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_ReplayBrdfOnly)
     ->ArgsProduct({{1, 2}, {kBunny, kDenseSphere}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
