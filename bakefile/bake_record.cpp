@@ -31,14 +31,18 @@ void writeBakeRecord(const fs::path& file, const json& record) {
   });
 }
 
-BakeInputs readBakeRecord(const fs::path& file) {
+json readBakeDocument(const fs::path& file) {
   const std::string text = readJsonText(requireBakeFile(file));
-  json record;
   try {
-    record = json::parse(text);
+    return json::parse(text);
   } catch (const json::exception& e) {
     fail(file, std::string("not valid JSON: ") + e.what());
   }
+}
+
+BakeInputs readBakeRecord(const fs::path& file) { return bakeInputsOf(file, readBakeDocument(file)); }
+
+BakeInputs bakeInputsOf(const fs::path& file, const json& record) {
   // Any JSON value may stand there: a string is the version, anything else is shown as JSON (a
   // number made json::value throw a type_error that named no file; found by fuzz/fuzz_bake_record).
   std::string version;

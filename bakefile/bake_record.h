@@ -41,4 +41,10 @@ void writeBakeRecord(const std::filesystem::path& file, const nlohmann::json& re
 // parameters.bounces that is not an integer in 0..kMaxTransferBounces.
 BakeInputs readBakeRecord(const std::filesystem::path& file);
 
+// readBakeRecord in two steps, for a caller that keeps the document: `file` parsed (Error
+// "<file>: ..." when it is missing or not JSON), then the inputs of that document (the checks
+// above, errors naming `file`).
+nlohmann::json readBakeDocument(const std::filesystem::path& file);
+BakeInputs bakeInputsOf(const std::filesystem::path& file, const nlohmann::json& record);
+
 }  // namespace iblkit

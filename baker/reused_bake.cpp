@@ -4,7 +4,6 @@
 
 #include "bakefile/bake_layout.h"
 #include "core/error.h"
-#include "core/input_file.h"
 
 namespace iblkit {
 
@@ -15,9 +14,9 @@ json readBakeToReuse(const fs::path& bake, BakeInputs& inputs) {
   std::error_code error;
   if (!fs::is_directory(bake, error)) fail(bake, "no such bake folder");
   const fs::path recordFile = requireBakeFile(bake / kBakeRecordFile);
-  inputs = readBakeRecord(recordFile);  // the version and the inputs
-  json record = json::parse(readJsonText(recordFile), nullptr, false);
-  if (record.is_discarded() || !record.contains("parameters") || !record["parameters"].is_object())
+  json record = readBakeDocument(recordFile);  // read once: the inputs and parameters of one version of it
+  inputs = bakeInputsOf(recordFile, record);    // the version and the inputs
+  if (!record.contains("parameters") || !record["parameters"].is_object())
     fail(recordFile, "no parameters");
   return record;
 }
