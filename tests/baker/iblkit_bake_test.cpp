@@ -479,6 +479,27 @@ TEST(IblkitBake, VisibilityFromRefusesOtherOptionsAndOtherScenes) {
   EXPECT_FALSE(fs::exists(out));
   refused(scene.string() + " --ao-rays 16 --visibility-from " + (root / "absent").string(),
           (root / "absent").string() + ": no such bake folder");
+  // A source whose bake.json is broken: one line naming it (its inputs and parameters are read from
+  // one reading of the file).
+  const fs::path broken = root / "broken";
+  fs::copy(visibility, broken);
+  const fs::path brokenRecord = broken / "bake.json";
+  const nlohmann::json whole = nlohmann::json::parse(std::ifstream(brokenRecord));
+  std::ofstream(brokenRecord) << whole.dump(2).substr(0, 40);
+  const std::string truncated =
+      bake(scene.string() + " --ao-rays 16 --visibility-from " + broken.string() + " -o " + out.string(), &status);
+  EXPECT_EQ(status, 1) << truncated;
+  EXPECT_EQ(truncated.rfind("iblkit-bake: " + brokenRecord.string() + ": not valid JSON: ", 0), 0u) << truncated;
+  EXPECT_FALSE(fs::exists(out));
+  for (const nlohmann::json& parameters : {nlohmann::json(), nlohmann::json(3)}) {
+    nlohmann::json edited = whole;
+    if (parameters.is_null())
+      edited.erase("parameters");
+    else
+      edited["parameters"] = parameters;
+    std::ofstream(brokenRecord) << edited.dump(2);
+    refused(scene.string() + " --ao-rays 16 --visibility-from " + broken.string(), brokenRecord.string() + ": no parameters");
+  }
   test::expectUsageError((test::binDir() / "iblkit-bake").string() + " " + scene.string() +
                              " --visibility-only --visibility-from " + visibility.string() + " -o " + out.string(),
                          "iblkit-bake: --visibility-only excludes --visibility-from");
