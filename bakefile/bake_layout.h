@@ -33,6 +33,11 @@ inline constexpr const char* kBakeLightsFile = "env/lights.json";
 inline constexpr const char* kBakeResidualSh9File = "env/residual_sh9.json";
 inline constexpr const char* kBakeResidualSpecularFile = "env/residual_specular.exr";
 inline constexpr const char* kBakeResidualIrradianceFile = "env/residual_irradiance.exr";
+// Every env/ file of a bake with a map, in the order bake.json's "outputs" lists them. The two
+// irradiance cubes are missing from bakes made before them (readEnvironmentStages).
+inline constexpr const char* kBakeEnvironmentFiles[] = {
+    kBakeSh9File,    kBakeIrradianceFile,  kBakeSpecularFile,         kBakeBrdfLutFile,
+    kBakeLightsFile, kBakeResidualSh9File, kBakeResidualSpecularFile, kBakeResidualIrradianceFile};
 
 // `file`, a file of a bake folder that a reader needs. Throws Error("<file>: missing (incomplete
 // bake folder?)") unless it is a regular file.

@@ -34,8 +34,7 @@ ReusedEnvironment reuseEnvironment(const fs::path& bake, const json& parameters,
   if (!reused.record.is_object()) fail(recordFile, "no environment section");
   // The files in the order iblkit-bake lists them; the two irradiance cubes only where they exist
   // (readEnvironmentStages: bakes from before them have none), every other one required.
-  for (const char* file : {kBakeSh9File, kBakeIrradianceFile, kBakeSpecularFile, kBakeBrdfLutFile, kBakeLightsFile,
-                           kBakeResidualSh9File, kBakeResidualSpecularFile, kBakeResidualIrradianceFile}) {
+  for (const char* file : kBakeEnvironmentFiles) {
     const std::string_view name = file;
     const bool optional = name == kBakeIrradianceFile || name == kBakeResidualIrradianceFile;
     if (optional && !fs::is_regular_file(bake / file, error)) continue;

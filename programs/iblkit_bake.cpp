@@ -338,10 +338,7 @@ int bake(const Options& options) {
       writeEnvironmentStages(folder, *stages);
       timings["write_environment_s"] = stopwatch.lap();
       environmentReport = environmentRecord(*stages, options);
-      for (const char* file : {kBakeSh9File, kBakeIrradianceFile, kBakeSpecularFile, kBakeBrdfLutFile,
-                               kBakeLightsFile, kBakeResidualSh9File, kBakeResidualSpecularFile,
-                               kBakeResidualIrradianceFile})
-        outputs.push_back(file);
+      for (const char* file : kBakeEnvironmentFiles) outputs.push_back(file);
     } else if (reusedEnvironment) {
       copyReusedEnvironment(*reusedEnvironment, folder);
       timings["write_environment_s"] = stopwatch.lap();

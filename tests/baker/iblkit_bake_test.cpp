@@ -50,6 +50,16 @@ std::string bake(const std::string& arguments, int* status) {
   return output;
 }
 
+// iblkit-bake `arguments` -o `out` refused at run time: status 1, exactly the one line
+// "iblkit-bake: <message>", and no `out`.
+void expectRefused(const std::string& arguments, const fs::path& out, const std::string& message) {
+  int status = 0;
+  const std::string output = bake(arguments + " -o " + out.string(), &status);
+  EXPECT_EQ(status, 1) << output;
+  EXPECT_EQ(output, "iblkit-bake: " + message + "\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
 // Entries of `folder` whose names contain ".tmp-" or ".old-": leftovers of an unfinished bake.
 int leftovers(const fs::path& folder) {
   int count = 0;
@@ -442,10 +452,7 @@ TEST(IblkitBake, VisibilityFromRefusesOtherOptionsAndOtherScenes) {
   std::string log = bake(scene.string() + " --ao-rays 16 --visibility-only -o " + visibility.string(), &status);
   ASSERT_EQ(status, 0) << log;
   const auto refused = [&](const std::string& arguments, const std::string& message) {
-    const std::string output = bake(arguments + " -o " + out.string(), &status);
-    EXPECT_EQ(status, 1) << output;
-    EXPECT_EQ(output, "iblkit-bake: " + message + "\n");
-    EXPECT_FALSE(fs::exists(out));
+    expectRefused(arguments, out, message);
   };
   refused(scene.string() + " --ao-rays 8 --visibility-from " + visibility.string(),
           (visibility / "bake.json").string() +
@@ -564,10 +571,7 @@ TEST(IblkitBake, EnvironmentFromRefusesOtherMapsAndOtherOptions) {
   std::string log = bake("--env " + env.string() + options + " --environment-only -o " + environment.string(), &status);
   ASSERT_EQ(status, 0) << log;
   const auto refused = [&](const std::string& arguments, const std::string& message) {
-    const std::string output = bake(arguments + " -o " + out.string(), &status);
-    EXPECT_EQ(status, 1) << output;
-    EXPECT_EQ(output, "iblkit-bake: " + message + "\n");
-    EXPECT_FALSE(fs::exists(out));
+    expectRefused(arguments, out, message);
   };
   const std::string record = (environment / "bake.json").string();
   const std::string bakeOf = scene.string() + " --ao-rays 4 --env " + env.string();
